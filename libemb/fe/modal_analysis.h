@@ -1,0 +1,44 @@
+#pragma once
+/// @file
+/// Modal analysis of an assembled solid: the lowest (or nearest-a-frequency) natural
+/// frequencies and M-orthonormal mode shapes of K φ = ω² M φ, with the rigid-body modes of a
+/// free-free part counted.
+
+#include <vector>
+
+#include "libemb/common/progress.h"
+#include "libemb/fe/assembly.h"
+#include "libemb/linalg/eigen_solver.h"
+
+namespace emb {
+
+struct ModalOptions {
+  int num_modes{20};
+  /// Shift in Hz: the modes nearest it are found. The default −1 Hz (σ = −(2π·1)² rad²/s²)
+  /// lies below the spectrum, so the lowest modes come out and K − σM is positive definite
+  /// even for a free-free part (a zero shift would factor a singular K).
+  double shift_hz{-1.0};
+  EigenSolverOptions solver;  ///< num_modes and shift are filled in from the fields above
+  /// Unknowns held at zero (clamped), any order; empty = free-free.
+  std::vector<int> fixed_dofs;
+};
+
+struct ModalResult {
+  EigenResult eig;                 ///< eigenvalues λ = ω² [rad²/s²], vectors (all unknowns,
+                                   ///< zeros at fixed ones), checks
+  Eigen::VectorXd frequencies_hz;  ///< f = sign(λ)·√|λ| / 2π [Hz], ascending
+  int num_rigid_modes{0};          ///< modes with |λ| < rigid_threshold
+  double rigid_threshold{0.0};     ///< 1e-10 · ‖K‖₁/‖M‖₁ [rad²/s²]
+};
+
+/// Signed frequency in Hz of an eigenvalue λ = ω² (negative λ → negative frequency).
+double FrequencyHz(double lambda);
+/// λ = (2π f)² with the sign of f.
+double LambdaFromHz(double f_hz);
+
+/// Computes the modes of `sys`. Throws InputError for impossible requests (more modes than
+/// unknowns); numerical trouble is in result.eig.status.
+ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
+                         const ProgressFn& progress = {});
+
+}  // namespace emb

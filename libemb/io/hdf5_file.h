@@ -1,0 +1,60 @@
+#pragma once
+/// @file
+/// A small RAII layer over the HDF5 C API: files, groups (created on demand from '/'-paths),
+/// datasets of doubles/ints/strings with their shapes, and attributes.
+/// Every HDF5 return code is checked; a failure throws InputError naming the file and object.
+/// Datasets are C-ordered (row-major) as h5py/numpy see them.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace emb {
+
+class H5File {
+ public:
+  enum class Mode { kCreate, kRead };
+  /// kCreate truncates/creates `path`; kRead opens it read-only.
+  /// @throws InputError if the file cannot be created or is not an HDF5 file.
+  H5File(const std::string& path, Mode mode);
+  ~H5File();
+  H5File(const H5File&) = delete;
+  H5File& operator=(const H5File&) = delete;
+
+  /// Writes a dataset at `path` (e.g. "/modes/shapes"), creating parent groups.
+  /// `dims` is the C-order shape; data holds prod(dims) values. Large datasets are chunked
+  /// and compressed (deflate level 4).
+  void Write(const std::string& path, const double* data, const std::vector<std::uint64_t>& dims);
+  void Write(const std::string& path, const int* data, const std::vector<std::uint64_t>& dims);
+  void Write(const std::string& path, const std::uint64_t* data,
+             const std::vector<std::uint64_t>& dims);
+  void Write(const std::string& path, const std::vector<std::string>& strings);
+
+  /// Attributes on an object (group or dataset; "/" is the root), created on demand for groups.
+  void SetAttribute(const std::string& object, const std::string& name, const std::string& value);
+  void SetAttribute(const std::string& object, const std::string& name, double value);
+  void SetAttribute(const std::string& object, const std::string& name, long long value);
+
+  bool Exists(const std::string& path) const;
+  /// Shape of a dataset. @throws InputError if missing.
+  std::vector<std::uint64_t> Shape(const std::string& path) const;
+  std::vector<double> ReadDoubles(const std::string& path) const;
+  std::vector<int> ReadInts(const std::string& path) const;
+  std::vector<std::string> ReadStrings(const std::string& path) const;
+  std::string ReadStringAttribute(const std::string& object, const std::string& name) const;
+  double ReadDoubleAttribute(const std::string& object, const std::string& name) const;
+  long long ReadIntAttribute(const std::string& object, const std::string& name) const;
+  /// Names of the members of a group.
+  std::vector<std::string> List(const std::string& group) const;
+
+  /// Flushes buffers to disk (for long runs that append as they go).
+  void Flush();
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::int64_t id_{-1};
+};
+
+}  // namespace emb

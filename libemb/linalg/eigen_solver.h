@@ -1,0 +1,90 @@
+#pragma once
+/// @file
+/// Generalized symmetric eigenproblem K φ = λ M φ (K symmetric positive semi-definite,
+/// M symmetric positive definite) for the modes nearest a shift σ, by Spectra's implicitly
+/// restarted Lanczos in shift-invert mode on our own symmetric factorisation of K − σM.
+///
+/// λ = ω² [rad²/s²] when K is in N/m and M in kg. For the *lowest* modes of a free-free
+/// (singular K) problem σ must be negative: a zero shift factors a singular matrix.
+///
+/// Every eigenpair is checked, not hoped for: after a Rayleigh–Ritz clean-up on the
+/// converged subspace each pair's normwise backward error
+///     η_i = ‖K φ_i − λ_i M φ_i‖₂ / ((‖K‖₁ + |λ_i| ‖M‖₁) ‖φ_i‖₂)
+/// and the M-orthonormality ‖Φᵀ M Φ − I‖_max are measured, and optionally Sylvester's
+/// inertia of K − σ₊M (σ₊ just above the highest mode found) proves no mode below it was
+/// missed (the "Sturm check": counts eigenvalues, so degenerate pairs cannot hide).
+
+#include <string>
+
+#include "libemb/common/progress.h"
+#include "libemb/common/timer.h"
+#include "libemb/linalg/sparse_cholesky.h"
+#include "libemb/linalg/sparse_types.h"
+
+namespace emb {
+
+enum class EigenMethod {
+  kAuto,     ///< dense for n ≤ 300, Lanczos otherwise
+  kLanczos,  ///< Spectra shift-invert Lanczos (needs num_modes < n)
+  kDense,    ///< Eigen's dense generalized solver (small problems, cross-checks)
+};
+
+struct EigenSolverOptions {
+  int num_modes{10};             ///< how many eigenpairs nearest the shift
+  double shift{-1.0};            ///< σ [rad²/s²]; < 0 for the lowest modes of a PSD pencil
+  int subspace{0};               ///< Lanczos basis size ncv; 0 = max(2·num_modes + 1, num_modes + 20)
+  double tolerance{1e-10};       ///< Spectra's relative tolerance on the Ritz values
+  int max_restarts{1000};        ///< Spectra's restart limit
+  double residual_tolerance{1e-8};  ///< largest accepted backward error η_i
+  EigenMethod method{EigenMethod::kAuto};
+  /// kCholmodSupernodal requires K − σM positive definite (σ below the spectrum);
+  /// an interior shift needs an indefinite factorisation (kCholmodLDLT), chosen when σ > 0.
+  CholeskyBackend backend{CholeskyBackend::kCholmodSupernodal};
+  bool sturm_check{false};       ///< verify no mode is missed below the highest one found
+};
+
+enum class EigenStatus {
+  kSuccess,
+  kNotConverged,         ///< Lanczos stopped with fewer converged pairs than asked
+  kFactorizationFailed,  ///< K − σM could not be factorised (see factor.message)
+  kInaccurate,           ///< a pair failed the backward-error or orthonormality check
+  kMissedModes,          ///< the Sturm count found more eigenvalues than were returned
+};
+
+/// Eigenpairs and everything needed to trust (or distrust) them.
+struct EigenResult {
+  EigenStatus status{EigenStatus::kNotConverged};
+  std::string message;              ///< what went wrong, with numbers, when not kSuccess
+  Eigen::VectorXd eigenvalues;      ///< λ_i ascending [rad²/s²]
+  Eigen::MatrixXd vectors;          ///< Φ, M-orthonormal columns (n × num_converged)
+  Eigen::VectorXd backward_errors;  ///< η_i per pair
+  double max_backward_error{0.0};
+  double orthonormality_error{0.0};  ///< ‖ΦᵀMΦ − I‖_max
+  int num_requested{0};
+  int num_converged{0};
+  int iterations{0};                 ///< Lanczos restarts
+  int num_solves{0};                 ///< applications of (K − σM)⁻¹
+  int sturm_count{-1};               ///< eigenvalues below σ₊ by inertia, -1 if not checked
+  double shift{0.0};
+  std::string method;                ///< "lanczos" or "dense"
+  FactorInfo factor;                 ///< the factorisation of K − σM
+  PhaseTimes times;                  ///< "factorisation", "eigen-solve", "checks"
+  bool ok() const { return status == EigenStatus::kSuccess; }
+};
+
+/// Solves K φ = λ M φ for the options.num_modes eigenpairs nearest options.shift.
+/// @throws InputError if the matrices are not square and of the same size, or if more modes
+///         are asked than the problem has (num_modes ≥ n for Lanczos, > n for dense).
+/// Numerical failures are reported in EigenResult::status, never thrown.
+/// Cost: one factorisation of K − σM, ~2–3·ncv solves and M-products, O(n·ncv²) for the basis.
+EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
+                                  const EigenSolverOptions& options,
+                                  const ProgressFn& progress = {});
+
+/// A readable name for a status ("success", "not converged", ...).
+const char* Name(EigenStatus status);
+
+/// ‖A‖₁ = max column sum of |a_ij|.
+double NormOne(const SparseMatrix& A);
+
+}  // namespace emb

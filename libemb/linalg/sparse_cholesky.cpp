@@ -1,0 +1,229 @@
+#include "libemb/linalg/sparse_cholesky.h"
+
+#include <cholmod.h>
+
+#include <Eigen/SparseCholesky>
+#include <cstring>
+#include <sstream>
+
+#include "libemb/common/error.h"
+#include "libemb/common/timer.h"
+#include "libemb/linalg/metis_ordering.h"
+
+namespace emb {
+namespace {
+
+// A non-owning CHOLMOD view of an Eigen matrix (full storage; stype = 1 reads the upper part).
+cholmod_sparse ViewUpper(const SparseMatrix& A) {
+  EMB_CHECK(A.isCompressed());
+  cholmod_sparse s{};
+  s.nrow = A.rows();
+  s.ncol = A.cols();
+  s.nzmax = A.nonZeros();
+  s.p = const_cast<int*>(A.outerIndexPtr());
+  s.i = const_cast<int*>(A.innerIndexPtr());
+  s.x = const_cast<double*>(A.valuePtr());
+  s.stype = 1;
+  s.itype = CHOLMOD_INT;
+  s.xtype = CHOLMOD_REAL;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.sorted = 1;
+  s.packed = 1;
+  return s;
+}
+
+cholmod_dense ViewDense(const double* data, int rows, int cols) {
+  cholmod_dense d{};
+  d.nrow = rows;
+  d.ncol = cols;
+  d.nzmax = static_cast<size_t>(rows) * cols;
+  d.d = rows;
+  d.x = const_cast<double*>(data);
+  d.xtype = CHOLMOD_REAL;
+  d.dtype = CHOLMOD_DOUBLE;
+  return d;
+}
+
+using EigenLdlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>>;
+
+}  // namespace
+
+class SparseCholesky::Impl {
+ public:
+  Impl(CholeskyBackend backend, int dofs_per_node)
+      : backend_(backend), dofs_per_node_(dofs_per_node) {
+    cholmod_start(&common_);
+    common_.nmethods = 1;
+    common_.method[0].ordering = CHOLMOD_GIVEN;
+    common_.postorder = 1;
+    common_.supernodal =
+        backend == CholeskyBackend::kCholmodSupernodal ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+    common_.final_ll = backend == CholeskyBackend::kCholmodSupernodal ? 1 : 0;
+    common_.print = 0;
+    common_.error_handler = nullptr;
+  }
+  ~Impl() {
+    if (factor_) cholmod_free_factor(&factor_, &common_);
+    if (x_) cholmod_free_dense(&x_, &common_);
+    if (y_) cholmod_free_dense(&y_, &common_);
+    if (e_) cholmod_free_dense(&e_, &common_);
+    cholmod_finish(&common_);
+  }
+
+  void Analyze(const SparseMatrix& A) {
+    EMB_THROW_IF(A.rows() != A.cols(), "sparse factorisation: expected a square matrix, got "
+                                           << A.rows() << "x" << A.cols());
+    Stopwatch sw;
+    n_ = static_cast<int>(A.rows());
+    perm_ = NestedDissectionOrdering(A, dofs_per_node_);
+    factorized_ = false;
+    if (backend_ == CholeskyBackend::kEigenLDLT) {
+      Eigen::VectorXi iperm(n_);
+      for (int k = 0; k < n_; ++k) iperm[perm_[k]] = k;
+      p_.indices() = iperm;
+    } else {
+      if (factor_) cholmod_free_factor(&factor_, &common_);
+      const SparseMatrix* src = &A;
+      SparseMatrix compressed;
+      if (!A.isCompressed()) {
+        compressed = A;
+        compressed.makeCompressed();
+        src = &compressed;
+      }
+      cholmod_sparse view = ViewUpper(*src);
+      factor_ = cholmod_analyze_p(&view, perm_.data(), nullptr, 0, &common_);
+      if (!factor_ || common_.status < CHOLMOD_OK)
+        EMB_THROW(NumericalError, "CHOLMOD symbolic analysis failed (status " << common_.status
+                                                                            << ") for n = " << n_);
+    }
+    analyze_seconds_ = sw.seconds();
+  }
+
+  FactorInfo Factorize(const SparseMatrix& A) {
+    if (n_ != A.rows() || (backend_ != CholeskyBackend::kEigenLDLT && !factor_)) Analyze(A);
+    Stopwatch sw;
+    FactorInfo info;
+    info.seconds_analyze = analyze_seconds_;
+    if (backend_ == CholeskyBackend::kEigenLDLT) {
+      SparseMatrix permuted;
+      permuted = A.selfadjointView<Eigen::Upper>().twistedBy(p_);
+      eigen_.compute(permuted);
+      info.nnz_factor = eigen_.info() == Eigen::Success ? eigen_.matrixL().nestedExpression().nonZeros() : 0;
+      if (eigen_.info() != Eigen::Success) {
+        info.status = FactorStatus::kSingular;
+        info.message = "Eigen SimplicialLDLT found a zero pivot";
+      } else {
+        info.status = FactorStatus::kOk;
+        info.num_negative_pivots = static_cast<int>((eigen_.vectorD().array() < 0.0).count());
+      }
+    } else {
+      const SparseMatrix* src = &A;
+      SparseMatrix compressed;
+      if (!A.isCompressed()) {
+        compressed = A;
+        compressed.makeCompressed();
+        src = &compressed;
+      }
+      cholmod_sparse view = ViewUpper(*src);
+      const int ok = cholmod_factorize(&view, factor_, &common_);
+      info.nnz_factor = static_cast<long long>(common_.lnz);
+      info.flops = common_.fl;
+      if (!ok || common_.status == CHOLMOD_OUT_OF_MEMORY || common_.status < CHOLMOD_OK) {
+        info.status = FactorStatus::kFailed;
+        std::ostringstream m;
+        m << "CHOLMOD factorisation failed (status " << common_.status << ")";
+        info.message = m.str();
+      } else if (common_.status == CHOLMOD_NOT_POSDEF) {
+        const int minor = static_cast<int>(factor_->minor);
+        info.failed_index = minor < n_ ? perm_[minor] : -1;
+        info.status = backend_ == CholeskyBackend::kCholmodSupernodal
+                          ? FactorStatus::kNotPositiveDefinite
+                          : FactorStatus::kSingular;
+        std::ostringstream m;
+        m << (info.status == FactorStatus::kSingular ? "zero pivot" : "non-positive pivot")
+          << " at unknown " << info.failed_index << " (elimination step " << minor << " of "
+          << n_ << ")";
+        info.message = m.str();
+      } else {
+        info.status = FactorStatus::kOk;
+        if (!factor_->is_ll && !factor_->is_super) {
+          const int* lp = static_cast<const int*>(factor_->p);
+          const double* lx = static_cast<const double*>(factor_->x);
+          int neg = 0;
+          for (int j = 0; j < n_; ++j) neg += lx[lp[j]] < 0.0;
+          info.num_negative_pivots = neg;
+        }
+      }
+    }
+    info.seconds_factorize = sw.seconds();
+    factorized_ = info.ok();
+    info_ = info;
+    return info;
+  }
+
+  void Solve(const double* b, double* x, int ncols) const {
+    if (!factorized_)
+      EMB_THROW(InternalError, "SparseCholesky::Solve called without a successful factorisation");
+    if (backend_ == CholeskyBackend::kEigenLDLT) {
+      Eigen::Map<const Eigen::MatrixXd> B(b, n_, ncols);
+      Eigen::Map<Eigen::MatrixXd> X(x, n_, ncols);
+      Eigen::MatrixXd pb = p_ * B;
+      X = p_.transpose() * Eigen::MatrixXd(eigen_.solve(pb));
+      return;
+    }
+    cholmod_dense bview = ViewDense(b, n_, ncols);
+    const int ok = cholmod_solve2(CHOLMOD_A, factor_, &bview, nullptr, &x_, nullptr, &y_, &e_,
+                                  &common_);
+    if (!ok || !x_) EMB_THROW(NumericalError, "CHOLMOD solve failed (status " << common_.status << ")");
+    std::memcpy(x, x_->x, sizeof(double) * static_cast<size_t>(n_) * ncols);
+  }
+
+  CholeskyBackend backend_;
+  int dofs_per_node_;
+  int n_{-1};
+  bool factorized_{false};
+  double analyze_seconds_{0.0};
+  std::vector<int> perm_;
+  FactorInfo info_;
+  mutable cholmod_common common_{};
+  cholmod_factor* factor_{nullptr};
+  mutable cholmod_dense* x_{nullptr};
+  mutable cholmod_dense* y_{nullptr};
+  mutable cholmod_dense* e_{nullptr};
+  EigenLdlt eigen_;
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> p_;
+};
+
+SparseCholesky::SparseCholesky(CholeskyBackend backend, int dofs_per_node)
+    : impl_(std::make_unique<Impl>(backend, dofs_per_node)) {}
+SparseCholesky::~SparseCholesky() = default;
+SparseCholesky::SparseCholesky(SparseCholesky&&) noexcept = default;
+SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
+
+void SparseCholesky::Analyze(const SparseMatrix& A) { impl_->Analyze(A); }
+FactorInfo SparseCholesky::Factorize(const SparseMatrix& A) { return impl_->Factorize(A); }
+
+Eigen::MatrixXd SparseCholesky::Solve(const Eigen::Ref<const Eigen::MatrixXd>& B) const {
+  EMB_THROW_IF(B.rows() != rows(), "SparseCholesky::Solve: expected " << rows()
+                                                                      << " rows, got " << B.rows());
+  const Eigen::MatrixXd Bc = B;  // contiguous
+  Eigen::MatrixXd X(B.rows(), B.cols());
+  impl_->Solve(Bc.data(), X.data(), static_cast<int>(B.cols()));
+  return X;
+}
+
+void SparseCholesky::Solve(const double* x, double* y) const { impl_->Solve(x, y, 1); }
+int SparseCholesky::rows() const { return impl_->n_; }
+CholeskyBackend SparseCholesky::backend() const { return impl_->backend_; }
+const FactorInfo& SparseCholesky::info() const { return impl_->info_; }
+
+const char* Name(CholeskyBackend backend) {
+  switch (backend) {
+    case CholeskyBackend::kCholmodSupernodal: return "cholmod-supernodal";
+    case CholeskyBackend::kCholmodLDLT: return "cholmod-ldlt";
+    case CholeskyBackend::kEigenLDLT: return "eigen-ldlt";
+  }
+  return "?";
+}
+
+}  // namespace emb

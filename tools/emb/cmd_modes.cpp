@@ -1,0 +1,167 @@
+// emb modes PART: natural frequencies and mode shapes of a solid part, free-free by default
+// or with clamped physical groups; results to an HDF5 file (+ XDMF for ParaView).
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "libemb/common/error.h"
+#include "libemb/common/timer.h"
+#include "libemb/fe/assembly.h"
+#include "libemb/fe/modal_analysis.h"
+#include "libemb/io/modes_file.h"
+#include "libemb/mesh/gmsh_reader.h"
+#include "tools/emb/commands.h"
+#include "tools/emb/common_options.h"
+#include "tools/emb/progress_display.h"
+
+namespace emb::cli {
+namespace {
+
+struct ModesCommand {
+  PartOptions part;
+  OutputOptions out;
+  int num_modes{20};
+  double shift_hz{-1.0};
+  std::vector<std::string> fixed_groups;
+  int subspace{0};
+  double tolerance{1e-10};
+  bool sturm_check{false};
+  std::string backend{"cholmod"};
+  std::string output;
+  bool no_output{false};
+  bool no_xdmf{false};
+
+  std::string OutputPath() const {
+    if (!output.empty()) return output;
+    return std::filesystem::path(part.file).stem().string() + "_modes.h5";
+  }
+
+  void Run() const {
+    part.material.Validate();
+    EMB_THROW_IF(num_modes < 1, "--modes: expected at least 1, got " << num_modes);
+    const ProgressFn progress = MakeProgressDisplay(out.quiet);
+    PhaseTimes times;
+    Stopwatch sw;
+    const Mesh mesh = ReadMesh(part.file, part.Meshing(), progress);
+    times.Add("mesh", sw.seconds());
+
+    ModalOptions mo;
+    mo.num_modes = num_modes;
+    mo.shift_hz = shift_hz;
+    mo.solver.subspace = subspace;
+    mo.solver.tolerance = tolerance;
+    mo.solver.sturm_check = sturm_check;
+    if (backend == "eigen") mo.solver.backend = CholeskyBackend::kEigenLDLT;
+    for (const auto& g : fixed_groups) {
+      const auto dofs = GroupDofs(mesh, g);
+      mo.fixed_dofs.insert(mo.fixed_dofs.end(), dofs.begin(), dofs.end());
+    }
+    // Check the output location before the expensive part.
+    const std::string h5_path = no_output ? "" : OutputPath();
+    if (!h5_path.empty()) {
+      const auto dir = std::filesystem::path(h5_path).parent_path();
+      std::error_code ec;
+      EMB_THROW_IF(!dir.empty() && !std::filesystem::is_directory(dir, ec),
+                   "-o '" << h5_path << "': directory '" << dir.string() << "' does not exist");
+    }
+
+    sw.Restart();
+    const SystemMatrices sys = AssembleSystem(mesh, part.material, progress);
+    times.Add("assembly", sw.seconds());
+    const ModalResult modes = ComputeModes(sys, mo, progress);
+    for (const auto& p : modes.eig.times.phases) times.Add(p.first, p.second);
+    FinishProgressLine();
+
+    Table table("Natural frequencies (" + std::string(fixed_groups.empty() ? "free-free" : "clamped") +
+                    ")",
+                {"mode", "frequency_hz", "kind", "backward_error"},
+                {"mode", "frequency [Hz]", "kind", "backward error"});
+    const int m = static_cast<int>(modes.frequencies_hz.size());
+    for (int k = 0; k < m; ++k) {
+      const bool rigid = std::abs(modes.eig.eigenvalues[k]) < modes.rigid_threshold;
+      table.AddRow({static_cast<long long>(k + 1), modes.frequencies_hz[k],
+                    std::string(rigid ? "rigid" : "elastic"), modes.eig.backward_errors[k]});
+    }
+    Summary s("Modal analysis of " + mesh.source);
+    s.Add("mesh", "mesh", mesh.Summary());
+    s.Add("dofs", "degrees of freedom", sys.num_dofs());
+    s.Add("fixed_dofs", "fixed unknowns", static_cast<long long>(mo.fixed_dofs.size()));
+    s.Add("mass_kg", "mass [kg]", sys.mass);
+    s.Add("status", "status", std::string(Name(modes.eig.status)));
+    if (!modes.eig.message.empty()) s.Add("message", "message", modes.eig.message);
+    s.Add("converged", "converged pairs", static_cast<long long>(modes.eig.num_converged));
+    s.Add("rigid_modes", "rigid-body modes", static_cast<long long>(modes.num_rigid_modes));
+    s.Add("method", "eigen-solver", modes.eig.method);
+    s.Add("shift", "shift sigma [rad^2/s^2]", modes.eig.shift);
+    s.Add("iterations", "Lanczos restarts", static_cast<long long>(modes.eig.iterations));
+    s.Add("solves", "solves with K - sigma M", static_cast<long long>(modes.eig.num_solves));
+    s.Add("nnz_factor", "nonzeros in factor", static_cast<long long>(modes.eig.factor.nnz_factor));
+    s.Add("max_backward_error", "max backward error", modes.eig.max_backward_error);
+    s.Add("orthonormality_error", "M-orthonormality error", modes.eig.orthonormality_error);
+    if (modes.eig.sturm_count >= 0)
+      s.Add("sturm_count", "Sturm count below top mode",
+            static_cast<long long>(modes.eig.sturm_count));
+    for (const auto& [name, secs] : times.phases) s.Add("seconds_" + name, "time " + name + " [s]", secs);
+    s.Add("seconds_total", "time total [s]", times.Total());
+    s.Add("peak_memory_mb", "peak memory [MB]", PeakResidentBytes() / 1e6);
+
+    std::string xdmf_path;
+    if (!h5_path.empty() && modes.eig.ok()) {
+      if (!no_xdmf)
+        xdmf_path = (std::filesystem::path(h5_path).replace_extension(".xdmf")).string();
+      Provenance prov{CommandLine(), part.file, sys.mesh_hash, part.Describe()};
+      WriteModesFile(h5_path, xdmf_path, mesh, part.material, modes, prov);
+      s.Add("output", "written", h5_path + (xdmf_path.empty() ? "" : " and " + xdmf_path));
+    }
+    if (out.json) {
+      PrintJson({{"summary", s.ToJson()}, {"modes", table.ToJson()}});
+    } else {
+      table.Print(std::cout);
+      std::cout << "\n";
+      s.Print(std::cout);
+    }
+    if (!modes.eig.ok())
+      EMB_THROW(NumericalError, "modal analysis " << Name(modes.eig.status) << ": "
+                                                  << modes.eig.message
+                                                  << " (no output file written)");
+  }
+};
+
+}  // namespace
+
+void RegisterModesCommand(CLI::App& app) {
+  auto st = std::make_shared<ModesCommand>();
+  CLI::App* cmd = app.add_subcommand(
+      "modes",
+      "Natural frequencies and mass-normalised mode shapes of a solid part (free-free unless "
+      "--fixed), checked by residuals; saved to HDF5 with an XDMF file for ParaView");
+  st->part.Register(*cmd);
+  cmd->add_option("-n,--modes", st->num_modes, "Number of modes (rigid-body modes included)")
+      ->capture_default_str();
+  cmd->add_option("--shift-hz", st->shift_hz,
+                  "Find the modes nearest this frequency [Hz]; the default (negative) gives the "
+                  "lowest modes, also for free-free parts")
+      ->capture_default_str();
+  cmd->add_option("--fixed", st->fixed_groups,
+                  "Clamp all nodes of this physical group (repeatable); default free-free");
+  cmd->add_option("--ncv", st->subspace, "Lanczos subspace size (0 = automatic)")
+      ->capture_default_str();
+  cmd->add_option("--tol", st->tolerance, "Lanczos relative tolerance")->capture_default_str();
+  cmd->add_flag("--sturm-check", st->sturm_check,
+                "Prove no mode was missed below the highest one found (extra LDL^T "
+                "factorisation, slow on big models)");
+  cmd->add_option("--backend", st->backend,
+                  "Sparse factorisation: cholmod (supernodal, fast) or eigen (simplicial "
+                  "LDL^T, slow fallback)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cholmod", "eigen"}));
+  cmd->add_option("-o,--output", st->output,
+                  "HDF5 output file (default: <part name>_modes.h5 in the current directory)");
+  cmd->add_flag("--no-output", st->no_output, "Write no file, only print");
+  cmd->add_flag("--no-xdmf", st->no_xdmf, "Do not write the .xdmf file next to the .h5");
+  st->out.Register(*cmd);
+  cmd->callback([st] { st->Run(); });
+}
+
+}  // namespace emb::cli

@@ -1,0 +1,19 @@
+#pragma once
+/// @file
+/// The subcommands of `emb`. Each adds itself to the app; its callback does the work and
+/// throws emb exceptions on failure (main turns them into messages and exit codes).
+
+#include <CLI/CLI.hpp>
+
+namespace emb::cli {
+
+/// Exit codes: 0 success, 1 bad input, 2 usage error, 3 numerical failure, 4 internal error.
+inline constexpr int kExitInput = 1;
+inline constexpr int kExitUsage = 2;
+inline constexpr int kExitNumerical = 3;
+inline constexpr int kExitInternal = 4;
+
+void RegisterMeshCommand(CLI::App& app);
+void RegisterModesCommand(CLI::App& app);
+
+}  // namespace emb::cli
