@@ -262,22 +262,24 @@ EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
     r.message = m.str();
   }
   if (o.sturm_check && r.status == EigenStatus::kSuccess) {
-    // Count eigenvalues below σ₊, a little above the highest found, by Sylvester's inertia.
+    // Count eigenvalues below σ_c, a little below the highest found, by Sylvester's inertia:
+    // every one of them must be among those returned. (Just below, not above: a requested
+    // count may end inside a degenerate group whose other members were not asked for.)
     const double top = r.eigenvalues.maxCoeff();
-    const double sigma_plus = top + 1e-6 * std::max(std::abs(top), std::abs(o.shift)) + 1e-12;
-    SparseMatrix A = K - sigma_plus * M;
+    const double sigma_c = top - 1e-6 * std::max(std::abs(top), std::abs(o.shift)) - 1e-12;
+    const int expected = static_cast<int>((r.eigenvalues.array() < sigma_c).count());
+    SparseMatrix A = K - sigma_c * M;
     A.makeCompressed();
     SparseCholesky ldlt(CholeskyBackend::kCholmodLDLT, 3);
     const FactorInfo fi = ldlt.Factorize(A);
     if (fi.ok()) {
       r.sturm_count = fi.num_negative_pivots;
-      // With σ below the spectrum of a PSD pencil, every eigenvalue under σ₊ must have been
-      // returned; for an interior shift the count is reported but cannot be judged here.
-      const int expected = r.num_converged;
+      // With σ below the spectrum of a PSD pencil nothing lies below the first mode returned;
+      // for an interior shift the count is reported but cannot be judged here.
       if (o.shift < 0.0 && r.sturm_count != expected) {
         std::ostringstream m;
-        m << "Sturm check: " << r.sturm_count << " eigenvalues lie below " << sigma_plus
-          << " but " << expected << " were found: modes were missed";
+        m << "Sturm check: " << r.sturm_count << " eigenvalues lie below " << sigma_c << " but "
+          << expected << " were found there: modes were missed";
         r.status = EigenStatus::kMissedModes;
         r.message = m.str();
       }

@@ -11,7 +11,7 @@
 /// converged subspace each pair's normwise backward error
 ///     η_i = ‖K φ_i − λ_i M φ_i‖₂ / ((‖K‖₁ + |λ_i| ‖M‖₁) ‖φ_i‖₂)
 /// and the M-orthonormality ‖Φᵀ M Φ − I‖_max are measured, and optionally Sylvester's
-/// inertia of K − σ₊M (σ₊ just above the highest mode found) proves no mode below it was
+/// inertia of K − σ_c M (σ_c just below the highest mode found) proves no mode below it was
 /// missed (the "Sturm check": counts eigenvalues, so degenerate pairs cannot hide).
 
 #include <string>
@@ -64,7 +64,7 @@ struct EigenResult {
   int num_converged{0};
   int iterations{0};                 ///< Lanczos restarts
   int num_solves{0};                 ///< applications of (K − σM)⁻¹
-  int sturm_count{-1};               ///< eigenvalues below σ₊ by inertia, -1 if not checked
+  int sturm_count{-1};               ///< eigenvalues below σ_c by inertia, -1 if not checked
   double shift{0.0};
   std::string method;                ///< "lanczos" or "dense"
   FactorInfo factor;                 ///< the factorisation of K − σM

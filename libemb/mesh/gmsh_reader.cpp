@@ -33,6 +33,10 @@ class GmshSession {
     for (auto& a : all) argv.push_back(a.data());
     gmsh::initialize(static_cast<int>(argv.size()), argv.data(), /*readConfigFiles=*/false);
     gmsh::option::setNumber("General.Terminal", 0);
+    // Errors are logged, not thrown: gmsh 4.8 throwing from inside its .geo parser leaves the
+    // lexer's state behind, and every later file in the process then misparses. We check the
+    // log after each call instead (GmshCall).
+    gmsh::option::setNumber("General.AbortOnError", 0);
     gmsh::logger::start();
   }
   ~GmshSession() {
@@ -64,18 +68,19 @@ class GmshSession {
   }
 };
 
-// Runs a gmsh call; gmsh reports errors by throwing (General.AbortOnError = 2) or logging.
+// Runs a gmsh call and turns an exception or a logged error into an InputError.
 template <typename F>
 void GmshCall(const std::string& what, const std::string& path, F&& f) {
+  std::string error;
   try {
     f();
+    gmsh::logger::getLastError(error);
   } catch (const std::exception& e) {
-    EMB_THROW(InputError, "gmsh failed to " << what << " '" << path << "': " << e.what() << " ("
-                                            << GmshSession::LastError() << ")");
+    error = e.what();
   } catch (...) {
-    EMB_THROW(InputError,
-              "gmsh failed to " << what << " '" << path << "': " << GmshSession::LastError());
+    error = GmshSession::LastError();
   }
+  if (!error.empty()) EMB_THROW(InputError, "gmsh failed to " << what << " '" << path << "': " << error);
 }
 
 CellBlock MakeBlock(int gmsh_type, const std::vector<std::size_t>& tags,

@@ -1,5 +1,6 @@
 #include "libemb/mesh/mesh.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -50,7 +51,15 @@ std::string MeshHash(const Mesh& mesh) {
       h *= 1099511628211ull;
     }
   };
-  mix(mesh.nodes.data(), sizeof(double) * mesh.nodes.size());
+  // Coordinates are hashed rounded to 1e-9 of the mesh size, so that a mesh written to a text
+  // format (e.g. .msh, 16 digits) and read back has the same hash as the one in memory.
+  const double size =
+      mesh.num_nodes() ? (mesh.nodes.rowwise().maxCoeff() - mesh.nodes.rowwise().minCoeff()).norm() : 1.0;
+  const double quantum = (size > 0 ? size : 1.0) * 1e-9;
+  for (Eigen::Index k = 0; k < mesh.nodes.size(); ++k) {
+    const long long q = std::llround(mesh.nodes.data()[k] / quantum);
+    mix(&q, sizeof q);
+  }
   for (const auto& b : mesh.blocks) {
     const int code = GmshCode(b.type);
     mix(&code, sizeof code);

@@ -54,7 +54,8 @@ struct Mesh {
   std::string Summary() const;
 };
 
-/// A 64-bit FNV-1a digest of the node coordinates and connectivity, as 16 hex digits.
+/// A 64-bit FNV-1a digest of the node coordinates (rounded to 1e-9 of the mesh size) and the
+/// connectivity, as 16 hex digits.
 /// Used as provenance: a result computed from a mesh records the mesh it came from.
 std::string MeshHash(const Mesh& mesh);
 

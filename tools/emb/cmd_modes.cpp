@@ -26,6 +26,7 @@ struct ModesCommand {
   std::vector<std::string> fixed_groups;
   int subspace{0};
   double tolerance{1e-10};
+  int max_restarts{1000};
   bool sturm_check{false};
   std::string backend{"cholmod"};
   std::string output;
@@ -51,6 +52,7 @@ struct ModesCommand {
     mo.shift_hz = shift_hz;
     mo.solver.subspace = subspace;
     mo.solver.tolerance = tolerance;
+    mo.solver.max_restarts = max_restarts;
     mo.solver.sturm_check = sturm_check;
     if (backend == "eigen") mo.solver.backend = CholeskyBackend::kEigenLDLT;
     for (const auto& g : fixed_groups) {
@@ -148,6 +150,8 @@ void RegisterModesCommand(CLI::App& app) {
   cmd->add_option("--ncv", st->subspace, "Lanczos subspace size (0 = automatic)")
       ->capture_default_str();
   cmd->add_option("--tol", st->tolerance, "Lanczos relative tolerance")->capture_default_str();
+  cmd->add_option("--max-restarts", st->max_restarts, "Lanczos restart limit")
+      ->capture_default_str();
   cmd->add_flag("--sturm-check", st->sturm_check,
                 "Prove no mode was missed below the highest one found (extra LDL^T "
                 "factorisation, slow on big models)");

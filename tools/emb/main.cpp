@@ -3,6 +3,8 @@
 // One command with subcommands:
 //   emb mesh  PART            mesh a geometry (or read a mesh) and report what is in it
 //   emb modes PART            free-free (or constrained) natural frequencies and mode shapes
+//   emb dof SCENE             degrees of freedom and redundant constraints of a multibody scene
+//   emb run SCENE             run a multibody scene (kinematic/static/dynamic), results to HDF5
 // Sample run:
 //   emb modes meshes/crankshaft_i4.geo --modes 20 -o crank_modes.h5
 // Inputs: a gmsh geometry (.geo with parameters, .step, .brep) or a mesh (.msh, .unv, .bdf).
@@ -27,6 +29,22 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   RegisterMeshCommand(app);
   RegisterModesCommand(app);
+  RegisterDofCommand(app);
+  RegisterRunCommand(app);
+  // Name an unknown subcommand (CLI11 would only say that one is required).
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    std::string names;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      known |= sub->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::cerr << "emb: unknown subcommand '" << argv[1] << "'; expected one of: " << names
+                << " (see emb --help)\n";
+      return kExitUsage;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

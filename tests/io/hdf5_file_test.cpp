@@ -1,0 +1,95 @@
+// HDF5 layer: bit-for-bit round trips, attributes, listing, and errors naming the object.
+
+#include "libemb/io/hdf5_file.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "libemb/common/error.h"
+#include "libemb/io/atomic_file.h"
+
+namespace emb {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path TempPath(const std::string& name) {
+  return fs::temp_directory_path() / ("emb_h5_" + std::to_string(::getpid()) + "_" + name);
+}
+
+TEST(H5File, RoundTripIsBitForBit) {
+  const fs::path p = TempPath("roundtrip.h5");
+  std::vector<double> d(5000);
+  for (size_t i = 0; i < d.size(); ++i) d[i] = std::sin(1.0 + i) * std::pow(10.0, double(i % 40) - 20);
+  d[7] = std::numeric_limits<double>::denorm_min();
+  d[8] = -0.0;
+  const std::vector<int> ints{-3, 0, 7, 2147483647};
+  {
+    H5File f(p.string(), H5File::Mode::kCreate);
+    f.Write("/a/b/values", d.data(), {1000, 5});
+    f.Write("/ints", ints.data(), {2, 2});
+    f.Write("/names", std::vector<std::string>{"main_journal_1", "flange", ""});
+    f.SetAttribute("/", "format", std::string("emb.test"));
+    f.SetAttribute("/a", "pi", M_PI);
+    f.SetAttribute("/a/b/values", "count", 5000LL);
+  }
+  H5File f(p.string(), H5File::Mode::kRead);
+  EXPECT_EQ(f.Shape("/a/b/values"), (std::vector<std::uint64_t>{1000, 5}));
+  const std::vector<double> back = f.ReadDoubles("/a/b/values");
+  ASSERT_EQ(back.size(), d.size());
+  EXPECT_EQ(std::memcmp(back.data(), d.data(), sizeof(double) * d.size()), 0);
+  EXPECT_EQ(f.ReadInts("/ints"), ints);
+  EXPECT_EQ(f.ReadStrings("/names"), (std::vector<std::string>{"main_journal_1", "flange", ""}));
+  EXPECT_EQ(f.ReadStringAttribute("/", "format"), "emb.test");
+  EXPECT_EQ(f.ReadDoubleAttribute("/a", "pi"), M_PI);
+  EXPECT_EQ(f.ReadIntAttribute("/a/b/values", "count"), 5000);
+  EXPECT_EQ(f.List("/"), (std::vector<std::string>{"a", "ints", "names"}));
+  EXPECT_TRUE(f.Exists("/a/b"));
+  EXPECT_FALSE(f.Exists("/a/c/d"));
+  fs::remove(p);
+}
+
+TEST(H5File, ErrorsNameTheFileAndObject) {
+  const fs::path p = TempPath("errors.h5");
+  { H5File f(p.string(), H5File::Mode::kCreate); }
+  H5File f(p.string(), H5File::Mode::kRead);
+  try {
+    f.ReadDoubles("/modes/shapes");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/modes/shapes"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(f.ReadStringAttribute("/", "format"), InputError);
+  fs::remove(p);
+
+  const fs::path text = TempPath("not_hdf5.h5");
+  std::ofstream(text) << "hello";
+  EXPECT_THROW(H5File(text.string(), H5File::Mode::kRead), InputError);
+  fs::remove(text);
+  EXPECT_THROW(H5File(TempPath("missing.h5").string(), H5File::Mode::kRead), InputError);
+}
+
+TEST(AtomicFile, NothingAppearsUnlessCommitted) {
+  const fs::path p = TempPath("atomic.txt");
+  {
+    AtomicFile f(p.string());
+    std::ofstream(f.temp_path()) << "partial";
+    // no Commit(): e.g. an exception unwound the writer
+  }
+  EXPECT_FALSE(fs::exists(p));
+  WriteTextFileAtomic(p.string(), "complete");
+  std::ifstream in(p);
+  std::string s;
+  in >> s;
+  EXPECT_EQ(s, "complete");
+  fs::remove(p);
+  EXPECT_THROW(AtomicFile("/nonexistent_dir_emb/x.h5"), InputError);
+}
+
+}  // namespace
+}  // namespace emb
