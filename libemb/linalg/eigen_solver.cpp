@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 #include "libemb/common/error.h"
@@ -24,14 +25,27 @@ class ShiftInvertOp {
   Eigen::Index rows() const { return K_.rows(); }
   Eigen::Index cols() const { return K_.cols(); }
 
-  // Spectra calls this once, from the solver's constructor.
-  void set_shift(double sigma) {
+  // Factorises K − σM and measures the backward error of one test solve: an LDLᵀ without
+  // pivoting can break down when σ sits almost on an eigenvalue.
+  void Prepare(double sigma) {
     Stopwatch sw;
     SparseMatrix A = K_ - sigma * M_;
     A.makeCompressed();
     info_ = chol_.Factorize(A);
-    factor_seconds_ = sw.seconds();
+    prepared_sigma_ = sigma;
+    solve_backward_error_ = std::numeric_limits<double>::infinity();
+    if (info_.ok()) {
+      const Eigen::VectorXd b = Eigen::VectorXd::Ones(A.rows());
+      const Eigen::VectorXd x = chol_.Solve(b);
+      solve_backward_error_ = (A * x - b).norm() / (NormOne(A) * x.norm() + b.norm());
+    }
+    factor_seconds_ += sw.seconds();
   }
+  // Spectra calls this once, from the solver's constructor, with the prepared shift.
+  void set_shift(double sigma) {
+    if (sigma != prepared_sigma_) Prepare(sigma);
+  }
+  double solve_backward_error() const { return solve_backward_error_; }
 
   void perform_op(const double* x_in, double* y_out) const {
     if (!info_.ok()) {  // keep Spectra from using a failed factor; the caller reports it
@@ -57,6 +71,8 @@ class ShiftInvertOp {
   int expected_;
   mutable int solves_{0};
   double factor_seconds_{0.0};
+  double prepared_sigma_{std::numeric_limits<double>::quiet_NaN()};
+  double solve_backward_error_{0.0};
 };
 
 // y = M x, remembering the last two products: Spectra asks for M·f more than once per step
@@ -91,38 +107,39 @@ class CachedMassProduct {
   mutable int next_{0};
 };
 
-// Rayleigh–Ritz on span(Φ): refines near-converged vectors, makes them exactly M-orthonormal
-// in floating point, and sorts ascending.
-void RayleighRitz(const SparseMatrix& K, const SparseMatrix& M, Eigen::MatrixXd& Phi,
-                  Eigen::VectorXd& lambda) {
-  if (Phi.cols() == 0) return;
-  const Eigen::MatrixXd KPhi = K * Phi;
-  const Eigen::MatrixXd MPhi = M * Phi;
+// Rayleigh–Ritz on span(Φ), then the checks of every pair: refines near-converged vectors,
+// makes them M-orthonormal to round-off, sorts them ascending, and measures the backward
+// errors and ‖ΦᵀMΦ − I‖. K·Φ and M·Φ are formed once and rotated with the Ritz vectors.
+void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, EigenResult& r) {
+  Eigen::MatrixXd& Phi = r.vectors;
+  const int m = static_cast<int>(Phi.cols());
+  Eigen::MatrixXd KPhi = K * Phi;
+  Eigen::MatrixXd MPhi = M * Phi;
   Eigen::MatrixXd Kr = Phi.transpose() * KPhi;
   Eigen::MatrixXd Mr = Phi.transpose() * MPhi;
   Kr = 0.5 * (Kr + Kr.transpose()).eval();
   Mr = 0.5 * (Mr + Mr.transpose()).eval();
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ges(Kr, Mr);
-  if (ges.info() != Eigen::Success) return;  // keep Spectra's pairs; the checks will judge
-  Phi = Phi * ges.eigenvectors();
-  lambda = ges.eigenvalues();
-}
-
-void CheckPairs(const SparseMatrix& K, const SparseMatrix& M, EigenResult& r) {
-  const int m = static_cast<int>(r.vectors.cols());
+  if (ges.info() == Eigen::Success) {  // else keep Spectra's pairs; the checks will judge
+    const Eigen::MatrixXd& Q = ges.eigenvectors();
+    Phi = Phi * Q;
+    KPhi = KPhi * Q;
+    MPhi = MPhi * Q;
+    r.eigenvalues = ges.eigenvalues();
+  }
   r.backward_errors.resize(m);
   const double k1 = NormOne(K), m1 = NormOne(M);
-  const Eigen::MatrixXd KPhi = K * r.vectors;
-  const Eigen::MatrixXd MPhi = M * r.vectors;
   for (int i = 0; i < m; ++i) {
     const double lam = r.eigenvalues[i];
     const double res = (KPhi.col(i) - lam * MPhi.col(i)).norm();
-    const double scale = (k1 + std::abs(lam) * m1) * r.vectors.col(i).norm();
+    const double scale = (k1 + std::abs(lam) * m1) * Phi.col(i).norm();
     r.backward_errors[i] = scale > 0 ? res / scale : res;
   }
-  r.max_backward_error = m ? r.backward_errors.maxCoeff() : 0.0;
-  const Eigen::MatrixXd G = r.vectors.transpose() * MPhi - Eigen::MatrixXd::Identity(m, m);
-  r.orthonormality_error = m ? G.cwiseAbs().maxCoeff() : 0.0;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  r.max_backward_error =
+      m == 0 ? 0.0 : r.backward_errors.hasNaN() ? kNaN : r.backward_errors.maxCoeff();
+  const Eigen::MatrixXd G = Phi.transpose() * MPhi - Eigen::MatrixXd::Identity(m, m);
+  r.orthonormality_error = m == 0 ? 0.0 : G.hasNaN() ? kNaN : G.cwiseAbs().maxCoeff();
 }
 
 void SolveDense(const SparseMatrix& K, const SparseMatrix& M, const EigenSolverOptions& o,
@@ -166,15 +183,32 @@ void SolveLanczos(const SparseMatrix& K, const SparseMatrix& M, const EigenSolve
   Stopwatch sw;
   using Solver =
       Spectra::SymGEigsShiftSolver<ShiftInvertOp, CachedMassProduct, Spectra::GEigsMode::ShiftInvert>;
-  Solver solver(op, bop, nev, ncv, o.shift);  // factorises K − σM
+  // A shift that lands (numerically) on an eigenvalue makes K − σM singular, and an LDLᵀ
+  // without pivoting inaccurate: move it by 0.1 %, 0.2 %, ... of |σ| (the Rayleigh–Ritz step
+  // recomputes every eigenvalue from K and M, so the exact shift does not matter).
+  double sigma = o.shift;
+  constexpr double kSolveAccuracy = 1e-10;  // backward error of a sound factorisation: ~1e-15
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    op.Prepare(sigma);
+    if (op.info().ok() && op.solve_backward_error() < kSolveAccuracy) break;
+    if (o.backend == CholeskyBackend::kCholmodSupernodal || o.shift == 0.0) break;
+    sigma = o.shift * (1.0 + 1e-3 * (attempt + 1));
+  }
+  r.shift = sigma;
   r.factor = op.info();
   r.times.Add("factorisation", op.factor_seconds());
-  if (!r.factor.ok()) {
+  if (!r.factor.ok() || !(op.solve_backward_error() < kSolveAccuracy)) {
+    std::ostringstream m;
+    m << "K - sigma*M (sigma = " << sigma << ") could not be factorised";
+    if (r.factor.ok())
+      m << " accurately (test solve backward error " << op.solve_backward_error() << ")";
+    else
+      m << ": " << r.factor.message;
     r.status = EigenStatus::kFactorizationFailed;
-    r.message = "K - sigma*M (sigma = " + std::to_string(o.shift) +
-                ") could not be factorised: " + r.factor.message;
+    r.message = m.str();
     return;
   }
+  Solver solver(op, bop, nev, ncv, sigma);  // the factorisation above is reused
   sw.Restart();
   solver.init();
   const int nconv = static_cast<int>(solver.compute(Spectra::SortRule::LargestMagn, o.max_restarts,
@@ -250,10 +284,10 @@ EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
   if (r.vectors.cols() == 0) return r;
 
   Stopwatch sw;
-  RayleighRitz(K, M, r.vectors, r.eigenvalues);
-  CheckPairs(K, M, r);
-  if (r.status == EigenStatus::kSuccess && (r.max_backward_error > o.residual_tolerance ||
-                                            r.orthonormality_error > 1e-8)) {
+  RayleighRitzAndCheck(K, M, r);
+  // Written so that NaN fails the check.
+  if (r.status == EigenStatus::kSuccess && !(r.max_backward_error <= o.residual_tolerance &&
+                                             r.orthonormality_error <= 1e-8)) {
     std::ostringstream m;
     m << "eigenpair check failed: largest backward error " << r.max_backward_error
       << " (limit " << o.residual_tolerance << "), M-orthonormality error "
