@@ -67,7 +67,7 @@ class ShiftInvertOp {
   const SparseMatrix& M_;
   SparseCholesky chol_;
   FactorInfo info_;
-  const ProgressFn& progress_;
+  ProgressFn progress_;
   int expected_;
   mutable int solves_{0};
   double factor_seconds_{0.0};
@@ -170,6 +170,35 @@ void SolveDense(const SparseMatrix& K, const SparseMatrix& M, const EigenSolverO
   r.status = EigenStatus::kSuccess;
 }
 
+// Factorises K − σM for the shift of `o` and records it in r. A shift that lands
+// (numerically) on an eigenvalue makes K − σM singular, and an LDLᵀ without pivoting
+// inaccurate: it is moved by 0.1 %, 0.2 %, ... of |σ| (the Rayleigh–Ritz step recomputes every
+// eigenvalue from K and M, so the exact shift does not matter). False (with r's status and
+// message set) if no usable factorisation was found.
+bool PrepareShift(ShiftInvertOp& op, const EigenSolverOptions& o, EigenResult& r) {
+  double sigma = o.shift;
+  constexpr double kSolveAccuracy = 1e-10;  // backward error of a sound factorisation: ~1e-15
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    op.Prepare(sigma);
+    if (op.info().ok() && op.solve_backward_error() < kSolveAccuracy) break;
+    if (o.backend == CholeskyBackend::kCholmodSupernodal || o.shift == 0.0) break;
+    sigma = o.shift * (1.0 + 1e-3 * (attempt + 1));
+  }
+  r.shift = sigma;
+  r.factor = op.info();
+  r.times.Add("factorisation", op.factor_seconds());
+  if (r.factor.ok() && op.solve_backward_error() < kSolveAccuracy) return true;
+  std::ostringstream m;
+  m << "K - sigma*M (sigma = " << sigma << ") could not be factorised";
+  if (r.factor.ok())
+    m << " accurately (test solve backward error " << op.solve_backward_error() << ")";
+  else
+    m << ": " << r.factor.message;
+  r.status = EigenStatus::kFactorizationFailed;
+  r.message = m.str();
+  return false;
+}
+
 void SolveLanczos(const SparseMatrix& K, const SparseMatrix& M, const EigenSolverOptions& o,
                   const ProgressFn& progress, EigenResult& r) {
   const int n = static_cast<int>(K.rows());
@@ -183,31 +212,8 @@ void SolveLanczos(const SparseMatrix& K, const SparseMatrix& M, const EigenSolve
   Stopwatch sw;
   using Solver =
       Spectra::SymGEigsShiftSolver<ShiftInvertOp, CachedMassProduct, Spectra::GEigsMode::ShiftInvert>;
-  // A shift that lands (numerically) on an eigenvalue makes K − σM singular, and an LDLᵀ
-  // without pivoting inaccurate: move it by 0.1 %, 0.2 %, ... of |σ| (the Rayleigh–Ritz step
-  // recomputes every eigenvalue from K and M, so the exact shift does not matter).
-  double sigma = o.shift;
-  constexpr double kSolveAccuracy = 1e-10;  // backward error of a sound factorisation: ~1e-15
-  for (int attempt = 0; attempt < 4; ++attempt) {
-    op.Prepare(sigma);
-    if (op.info().ok() && op.solve_backward_error() < kSolveAccuracy) break;
-    if (o.backend == CholeskyBackend::kCholmodSupernodal || o.shift == 0.0) break;
-    sigma = o.shift * (1.0 + 1e-3 * (attempt + 1));
-  }
-  r.shift = sigma;
-  r.factor = op.info();
-  r.times.Add("factorisation", op.factor_seconds());
-  if (!r.factor.ok() || !(op.solve_backward_error() < kSolveAccuracy)) {
-    std::ostringstream m;
-    m << "K - sigma*M (sigma = " << sigma << ") could not be factorised";
-    if (r.factor.ok())
-      m << " accurately (test solve backward error " << op.solve_backward_error() << ")";
-    else
-      m << ": " << r.factor.message;
-    r.status = EigenStatus::kFactorizationFailed;
-    r.message = m.str();
-    return;
-  }
+  if (!PrepareShift(op, o, r)) return;
+  const double sigma = r.shift;
   Solver solver(op, bop, nev, ncv, sigma);  // the factorisation above is reused
   sw.Restart();
   solver.init();
@@ -266,6 +272,7 @@ EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
   const int n = static_cast<int>(K.rows());
   EMB_THROW_IF(o.num_modes < 1, "number of modes: expected at least 1, got " << o.num_modes);
   const bool dense = o.method == EigenMethod::kDense || (o.method == EigenMethod::kAuto && n <= 300);
+
   EMB_THROW_IF(o.num_modes > n || (!dense && o.num_modes >= n),
                "number of modes: " << o.num_modes << " requested but the model has only " << n
                                    << " degrees of freedom"

@@ -25,7 +25,7 @@ namespace emb {
 
 enum class EigenMethod {
   kAuto,     ///< dense for n ≤ 300, Lanczos otherwise
-  kLanczos,  ///< Spectra shift-invert Lanczos (needs num_modes < n)
+  kLanczos,  ///< Spectra's shift-invert Lanczos (needs num_modes < n)
   kDense,    ///< Eigen's dense generalized solver (small problems, cross-checks)
 };
 

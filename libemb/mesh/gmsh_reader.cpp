@@ -37,6 +37,10 @@ class GmshSession {
     // lexer's state behind, and every later file in the process then misparses. We check the
     // log after each call instead (GmshCall).
     gmsh::option::setNumber("General.AbortOnError", 0);
+    // One thread, so that meshing is as reproducible as gmsh allows (the same geometry and
+    // parameters should give the same mesh: its hash is provenance). Known exception in 4.8:
+    // Mesh.HighOrderOptimize moves curved high-order nodes differently from run to run.
+    gmsh::option::setNumber("General.NumThreads", 1);
     gmsh::logger::start();
   }
   ~GmshSession() {

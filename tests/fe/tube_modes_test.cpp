@@ -118,7 +118,9 @@ TEST(TubeModes, SweptHex20) {
 }
 
 TEST(TubeModes, CurvedTet10) {
-  const TubeModel t = Build({{"hex", 0}, {"h", 0.02}});
+  // h = 0.016 m: coarser Tet10 meshes of this 2 mm wall put torsion 0.3 % high, too close
+  // to the 0.5 % target (gmsh's high-order optimisation is not bit-reproducible).
+  const TubeModel t = Build({{"hex", 0}, {"h", 0.016}});
   ASSERT_EQ(t.mesh.blocks.at(0).type, CellType::kTet10);
   CheckTube(t, false);
 }

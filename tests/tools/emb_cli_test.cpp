@@ -9,22 +9,16 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tests/support/cli_fixture.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-  int exit_code;
-  std::string out, err;
-};
-
-class EmbCli : public ::testing::Test {
+class EmbCli : public emb::test::CliTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("emb_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    CliTest::SetUp();
     std::ofstream(dir_ / "bar.geo") << R"(SetFactory("OpenCASCADE");
 DefineConstant[ h = {0.05, Name "Parameters/h"}, L = {0.5, Name "Parameters/L"} ];
 Box(1) = {0, 0, 0, L, 0.05, 0.05};
@@ -33,45 +27,30 @@ Physical Volume("bar") = {1};
 Mesh.MeshSizeMax = h;
 )";
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  RunResult Run(const std::string& args) {
-    const std::string out = (dir_ / "stdout.txt").string(), err = (dir_ / "stderr.txt").string();
-    const std::string cmd = "cd '" + dir_.string() + "' && '" + EMB_EXE + "' " + args + " > '" +
-                            out + "' 2> '" + err + "'";
-    const int status = std::system(cmd.c_str());
-    return {WEXITSTATUS(status), Slurp(out), Slurp(err)};
-  }
-  static std::string Slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
   void ExpectFailure(const std::string& args, int code, std::initializer_list<std::string> words) {
-    const RunResult r = Run(args);
+    const emb::test::CliResult r = Run(args);
     EXPECT_EQ(r.exit_code, code) << args << "\n" << r.err;
     for (const auto& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << args << "\n" << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "out.h5")) << "partial output left by: " << args;
     EXPECT_FALSE(fs::exists(dir_ / "out.xdmf")) << "partial output left by: " << args;
   }
-  fs::path dir_;
 };
 
 TEST_F(EmbCli, HelpDocumentsSubcommandsAndOptions) {
-  const RunResult top = Run("--help");
+  const emb::test::CliResult top = Run("--help");
   EXPECT_EQ(top.exit_code, 0);
   EXPECT_NE(top.out.find("mesh"), std::string::npos);
   EXPECT_NE(top.out.find("modes"), std::string::npos);
-  const RunResult modes = Run("modes --help");
+  const emb::test::CliResult modes = Run("modes --help");
   EXPECT_EQ(modes.exit_code, 0);
   for (const char* opt : {"--modes", "--shift-hz", "--fixed", "--order", "--size", "--set", "--E",
-                          "--nu", "--rho", "--json", "--output", "--sturm-check", "--backend"})
+                          "--nu", "--rho", "--json", "--output", "--sturm-check", "--backend",
+                          "--method", "--ncv"})
     EXPECT_NE(modes.out.find(opt), std::string::npos) << opt;
 }
 
 TEST_F(EmbCli, ModesWritesFilesAndJson) {
-  const RunResult r = Run("modes bar.geo --modes 8 -o out.h5 --json -q");
+  const emb::test::CliResult r = Run("modes bar.geo --modes 8 -o out.h5 --json -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["modes"].size(), 8u);
@@ -81,14 +60,14 @@ TEST_F(EmbCli, ModesWritesFilesAndJson) {
   EXPECT_TRUE(fs::exists(dir_ / "out.h5"));
   EXPECT_TRUE(fs::exists(dir_ / "out.xdmf"));
   // Text table on a second run, clamped at x0: no rigid modes.
-  const RunResult t = Run("modes bar.geo --modes 4 --fixed x0 --no-output -q");
+  const emb::test::CliResult t = Run("modes bar.geo --modes 4 --fixed x0 --no-output -q");
   ASSERT_EQ(t.exit_code, 0) << t.err;
   EXPECT_NE(t.out.find("frequency [Hz]"), std::string::npos);
   EXPECT_EQ(t.out.find("rigid "), std::string::npos) << t.out;
 }
 
 TEST_F(EmbCli, MeshReportsGroupsAsJson) {
-  const RunResult r = Run("mesh bar.geo --set L=0.4 --json -q");
+  const emb::test::CliResult r = Run("mesh bar.geo --set L=0.4 --json -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["mesh"]["volume_m3"].get<double>(), 0.4 * 0.05 * 0.05, 1e-12);
@@ -111,8 +90,9 @@ TEST_F(EmbCli, BadInputsFailCleanly) {
 }
 
 TEST_F(EmbCli, NonConvergenceIsANumericalFailureWithCounts) {
-  ExpectFailure("modes bar.geo --modes 30 --ncv 31 --max-restarts 1 --tol 1e-15 -o out.h5 -q", 3,
-                {"converged", "of 30", "no output file"});
+  ExpectFailure(
+      "modes bar.geo --method lanczos --modes 30 --ncv 31 --max-restarts 1 --tol 1e-15 -o out.h5 -q",
+      3, {"converged", "of 30", "no output file"});
 }
 
 }  // namespace

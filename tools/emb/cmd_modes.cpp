@@ -29,6 +29,7 @@ struct ModesCommand {
   int max_restarts{1000};
   bool sturm_check{false};
   std::string backend{"cholmod"};
+  std::string method{"auto"};
   std::string output;
   bool no_output{false};
   bool no_xdmf{false};
@@ -55,6 +56,8 @@ struct ModesCommand {
     mo.solver.max_restarts = max_restarts;
     mo.solver.sturm_check = sturm_check;
     if (backend == "eigen") mo.solver.backend = CholeskyBackend::kEigenLDLT;
+    if (method == "lanczos") mo.solver.method = EigenMethod::kLanczos;
+    if (method == "dense") mo.solver.method = EigenMethod::kDense;
     for (const auto& g : fixed_groups) {
       const auto dofs = GroupDofs(mesh, g);
       mo.fixed_dofs.insert(mo.fixed_dofs.end(), dofs.begin(), dofs.end());
@@ -147,10 +150,15 @@ void RegisterModesCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--fixed", st->fixed_groups,
                   "Clamp all nodes of this physical group (repeatable); default free-free");
+  cmd->add_option("--method", st->method,
+                  "Eigen-solver: auto (dense up to 300 unknowns, else lanczos), lanczos "
+                  "(Spectra's shift-invert Lanczos), dense")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "lanczos", "dense"}));
   cmd->add_option("--ncv", st->subspace, "Lanczos subspace size (0 = automatic)")
       ->capture_default_str();
   cmd->add_option("--tol", st->tolerance, "Lanczos relative tolerance")->capture_default_str();
-  cmd->add_option("--max-restarts", st->max_restarts, "Lanczos restart limit")
+  cmd->add_option("--max-restarts", st->max_restarts, "Spectra's Lanczos restart limit")
       ->capture_default_str();
   cmd->add_flag("--sturm-check", st->sturm_check,
                 "Prove no mode was missed below the highest one found (extra LDL^T "

@@ -15,5 +15,8 @@ inline constexpr int kExitInternal = 4;
 
 void RegisterMeshCommand(CLI::App& app);
 void RegisterModesCommand(CLI::App& app);
+/// `emb dof SCENE` and `emb run SCENE` (multibody scenes).
+void RegisterDofCommand(CLI::App& app);
+void RegisterRunCommand(CLI::App& app);
 
 }  // namespace emb::cli

@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   RegisterMeshCommand(app);
   RegisterModesCommand(app);
+  RegisterDofCommand(app);
+  RegisterRunCommand(app);
   // Name an unknown subcommand (CLI11 would only say that one is required).
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;

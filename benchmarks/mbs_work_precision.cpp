@@ -1,0 +1,141 @@
+// Work-precision of the multibody DAE (GGL index-2 on IDA): error against a reference vs
+// wall time over a tolerance sweep, for the slider-crank (reference: closed form of the
+// piston position) and the seed's single-cylinder engine, variant (c) (reference: the same
+// run at rtol 1e-10).
+//   build/benchmarks/mbs_work_precision [repeats]
+// Prints one line per (model, rtol): IDA steps, residual and Jacobian evaluations, wall
+// time per run (best of `repeats`), and the max error over the output times.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "libemb/mbs/analysis.h"
+#include "libemb/scene/scene.h"
+
+namespace {
+
+using emb::mbs::AnalysisSettings;
+using emb::mbs::RunResult;
+using emb::mbs::Sample;
+
+struct Outcome {
+  RunResult result;
+  std::vector<Eigen::VectorXd> q;
+  std::vector<double> t;
+  double seconds{0};
+};
+
+Outcome Run(const emb::scene::Scene& sc, AnalysisSettings s, double rtol, int repeats) {
+  s.type = emb::mbs::AnalysisType::kDynamic;
+  s.ida.rtol = rtol;
+  // atol below ~1e-11 m sits at the round-off floor of the constraint solves of these
+  // models: IDA's Newton test then fails at t0 (see benchmarks/README.md).
+  s.ida.atol = std::max(rtol * 1e-2, 1e-11);
+  Outcome best;
+  best.seconds = 1e300;
+  for (int k = 0; k < repeats; ++k) {
+    Outcome o;
+    const auto start = std::chrono::steady_clock::now();
+    const emb::mbs::PreparedRun run = emb::mbs::PrepareRun(sc.system, s);
+    o.result = emb::mbs::RunAnalysis(run, s, [&](const Sample& smp) {
+      o.q.push_back(smp.q);
+      o.t.push_back(smp.t);
+    });
+    o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (o.seconds < best.seconds) best = std::move(o);
+  }
+  return best;
+}
+
+void PrintRow(const char* model, double rtol, const Outcome& o, double error) {
+  std::printf("%-14s %8.0e %8ld %9ld %7ld %10.4f %12.3e %s\n", model, rtol,
+              o.result.ida_stats.steps, o.result.ida_stats.residual_evals,
+              o.result.ida_stats.jacobian_evals, o.seconds, error,
+              o.result.ok() ? "" : o.result.message.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int repeats = argc > 1 ? std::atoi(argv[1]) : 3;
+  const std::string dir = std::string(EMB_SOURCE_DIR) + "/tools/scenes/";
+  std::printf("%-14s %8s %8s %9s %7s %10s %12s\n", "model", "rtol", "steps", "residuals",
+              "jacobians", "wall [s]", "max error");
+
+  // Slider-crank, one crank revolution at 600 rpm, piston position vs the closed form.
+  {
+    const emb::scene::Scene sc = emb::scene::LoadScene(dir + "slider_crank.yaml");
+    const int piston = sc.system.FindBody("piston");
+    const double r = 0.05, l = 0.2, w = 2 * std::numbers::pi * 10;
+    for (double rtol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
+      const Outcome o = Run(sc, sc.analysis, rtol, repeats);
+      double err = 0;
+      for (std::size_t k = 0; k < o.t.size(); ++k) {
+        const double a = w * o.t[k];
+        const double x = r * std::cos(a) + std::sqrt(l * l - r * r * std::sin(a) * std::sin(a));
+        err = std::max(err, std::abs(o.q[k][sc.system.layout().position(piston)] - x));
+      }
+      PrintRow("slider-crank", rtol, o, err);
+    }
+  }
+  // Single-cylinder engine (c): 2 DOF, bushing big end, gas force; one 4-stroke cycle.
+  {
+    const emb::scene::Scene sc = emb::scene::LoadScene(dir + "engine_c.yaml");
+    const Outcome ref = Run(sc, sc.analysis, 1e-10, 1);
+    for (double rtol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9}) {
+      const Outcome o = Run(sc, sc.analysis, rtol, repeats);
+      double err = 0;
+      // Positions only (p_WB of every body), quaternion parts excluded to keep units [m].
+      for (std::size_t k = 0; k < std::min(o.q.size(), ref.q.size()); ++k)
+        for (int b = 1; b < sc.system.num_bodies(); ++b)
+          err = std::max(err, (o.q[k].segment<3>(sc.system.layout().position(b)) -
+                               ref.q[k].segment<3>(sc.system.layout().position(b)))
+                                  .cwiseAbs()
+                                  .maxCoeff());
+      PrintRow("engine (c)", rtol, o, err);
+    }
+  }
+  // Linear solver: a chain of N rods (planar, revolute joints), 1 s, rtol 1e-6, dense vs KLU.
+  std::printf("\n%-14s %8s %8s %9s %7s %10s\n", "chain", "solver", "steps", "residuals",
+              "jacobians", "wall [s]");
+  for (int n : {4, 16, 32}) {
+    emb::mbs::System chain;
+    const double l = 0.3;
+    chain.AddMarker("o", "ground", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
+    for (int k = 0; k < n; ++k) {
+      emb::mbs::RigidBody b;
+      b.name = "link" + std::to_string(k);
+      b.mass = 1.0;
+      b.inertia_B = Eigen::Vector3d(1e-4, l * l / 12, l * l / 12).asDiagonal();
+      b.p_WB = Eigen::Vector3d((k + 0.5) * l, 0, 0);
+      chain.AddBody(b);
+      chain.AddMarker(b.name + "_a", b.name, Eigen::Vector3d(-0.5 * l, 0, 0),
+                      Eigen::Matrix3d::Identity());
+      chain.AddMarker(b.name + "_b", b.name, Eigen::Vector3d(0.5 * l, 0, 0),
+                      Eigen::Matrix3d::Identity());
+      chain.AddJoint("j" + std::to_string(k), emb::mbs::JointType::kRevolute, b.name + "_a",
+                     k == 0 ? "o" : "link" + std::to_string(k - 1) + "_b");
+    }
+    chain.SetGravity(Eigen::Vector3d(0, -9.81, 0));
+    chain.Finalize();
+    emb::scene::Scene sc;
+    sc.system = chain;
+    sc.analysis.t_end = 1.0;
+    sc.analysis.output_step = 0.1;
+    for (auto ls : {emb::IdaLinearSolver::kDense, emb::IdaLinearSolver::kKlu}) {
+      sc.analysis.ida.linear_solver = ls;
+      const Outcome o = Run(sc, sc.analysis, 1e-6, 1);
+      std::printf("%-14d %8s %8ld %9ld %7ld %10.4f %s\n", n,
+                  ls == emb::IdaLinearSolver::kKlu ? "klu" : "dense", o.result.ida_stats.steps,
+                  o.result.ida_stats.residual_evals, o.result.ida_stats.jacobian_evals, o.seconds,
+                  o.result.ok() ? "" : o.result.message.c_str());
+    }
+  }
+  return 0;
+}

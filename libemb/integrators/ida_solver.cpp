@@ -1,0 +1,323 @@
+#include "libemb/integrators/ida_solver.h"
+
+#include <ida/ida.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "libemb/common/error.h"
+
+namespace emb {
+
+const char* Name(IdaStatus status) {
+  switch (status) {
+    case IdaStatus::kSuccess:
+      return "success";
+    case IdaStatus::kTooMuchWork:
+      return "too-much-work";
+    case IdaStatus::kTooMuchAccuracy:
+      return "too-much-accuracy";
+    case IdaStatus::kErrorTestFailure:
+      return "error-test-failure";
+    case IdaStatus::kConvergenceFailure:
+      return "convergence-failure";
+    case IdaStatus::kLinearSolverFailure:
+      return "linear-solver-failure";
+    case IdaStatus::kResidualFailure:
+      return "residual-failure";
+    case IdaStatus::kOtherFailure:
+      return "failure";
+  }
+  return "unknown";
+}
+
+namespace {
+
+// Set-up calls must never fail for a valid problem: a failure is a bug or a broken install.
+void CheckSetup(int flag, const char* call) {
+  if (flag < 0)
+    EMB_THROW(InternalError, "SUNDIALS IDA set-up call " << call << " failed with flag " << flag);
+}
+
+template <typename T>
+T* CheckPtr(T* p, const char* call) {
+  if (p == nullptr) EMB_THROW(InternalError, "SUNDIALS " << call << " returned NULL");
+  return p;
+}
+
+Eigen::Map<Eigen::VectorXd> View(N_Vector v) {
+  return {N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v))};
+}
+
+IdaStatus StatusOf(int flag) {
+  switch (flag) {
+    case IDA_TOO_MUCH_WORK:
+      return IdaStatus::kTooMuchWork;
+    case IDA_TOO_MUCH_ACC:
+      return IdaStatus::kTooMuchAccuracy;
+    case IDA_ERR_FAIL:
+      return IdaStatus::kErrorTestFailure;
+    case IDA_CONV_FAIL:
+    case IDA_NLS_FAIL:
+      return IdaStatus::kConvergenceFailure;
+    case IDA_LINIT_FAIL:
+    case IDA_LSETUP_FAIL:
+    case IDA_LSOLVE_FAIL:
+      return IdaStatus::kLinearSolverFailure;
+    case IDA_RES_FAIL:
+    case IDA_REP_RES_ERR:
+    case IDA_FIRST_RES_FAIL:
+      return IdaStatus::kResidualFailure;
+    default:
+      return IdaStatus::kOtherFailure;
+  }
+}
+
+}  // namespace
+
+struct IdaSolver::Impl {
+  const DaeProblem* problem{nullptr};
+  SUNContext ctx{nullptr};
+  void* mem{nullptr};
+  N_Vector y{nullptr}, yp{nullptr}, id{nullptr}, scratch{nullptr};
+  SUNMatrix a{nullptr};
+  SUNLinearSolver ls{nullptr};
+  std::exception_ptr pending;  // an exception thrown inside a callback, re-thrown later
+  std::string last_message;
+  // KLU: the fixed compressed-column pattern and a dense scratch the problem fills.
+  std::vector<sunindextype> col_ptr, row_ind;
+  Eigen::MatrixXd dense;
+
+  ~Impl() {
+    if (mem) IDAFree(&mem);
+    if (ls) SUNLinSolFree(ls);
+    if (a) SUNMatDestroy(a);
+    for (N_Vector v : {y, yp, id, scratch})
+      if (v) N_VDestroy(v);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+
+  // The C trampolines IDA calls; they never let an exception cross the C boundary.
+  static int Residual(realtype t, N_Vector y, N_Vector yp, N_Vector r, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      auto rv = View(r);
+      if (!self->problem->CalcResidual(t, View(y), View(yp), rv)) return 1;
+      return rv.allFinite() ? 0 : 1;  // recoverable: IDA retries with a smaller step
+    } catch (...) {
+      self->pending = std::current_exception();
+      return -1;
+    }
+  }
+
+  static int Jacobian(realtype t, realtype cj, N_Vector y, N_Vector yp, N_Vector, SUNMatrix jac,
+                      void* user, N_Vector, N_Vector, N_Vector) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      const auto n = static_cast<Eigen::Index>(SUNDenseMatrix_Rows(jac));
+      Eigen::Map<Eigen::MatrixXd> j(SUNDenseMatrix_Data(jac), n, n);  // column-major, lda = n
+      self->problem->CalcJacobian(t, cj, View(y), View(yp), j);
+      return j.allFinite() ? 0 : 1;
+    } catch (...) {
+      self->pending = std::current_exception();
+      return -1;
+    }
+  }
+
+  // Sparse variant: the problem's dense iteration matrix gathered on the fixed pattern
+  // (IDA zeroes the structure before every call, so it is written in full each time).
+  static int SparseJacobian(realtype t, realtype cj, N_Vector y, N_Vector yp, N_Vector,
+                            SUNMatrix jac, void* user, N_Vector, N_Vector, N_Vector) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      self->problem->CalcJacobian(t, cj, View(y), View(yp), self->dense);
+      sunindextype* cp = SUNSparseMatrix_IndexPointers(jac);
+      sunindextype* ri = SUNSparseMatrix_IndexValues(jac);
+      realtype* data = SUNSparseMatrix_Data(jac);
+      const auto n = static_cast<sunindextype>(self->col_ptr.size()) - 1;
+      for (sunindextype c = 0; c <= n; ++c) cp[c] = self->col_ptr[c];
+      for (sunindextype c = 0; c < n; ++c)
+        for (sunindextype k = self->col_ptr[c]; k < self->col_ptr[c + 1]; ++k) {
+          ri[k] = self->row_ind[k];
+          data[k] = self->dense(self->row_ind[k], c);
+        }
+      return self->dense.allFinite() ? 0 : 1;
+    } catch (...) {
+      self->pending = std::current_exception();
+      return -1;
+    }
+  }
+
+  static void ErrorHandler(int, const char* module, const char* function, char* msg, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    self->last_message = std::string(module) + "/" + function + ": " + msg;
+  }
+};
+
+IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd& y0,
+                     const Eigen::VectorXd& yp0, const IdaOptions& options)
+    : problem_(problem), options_(options), impl_(std::make_unique<Impl>()) {
+  const int n = problem.size();
+  EMB_THROW_IF(n <= 0, "IDA: expected a problem with at least one unknown, got " << n);
+  EMB_THROW_IF(y0.size() != n || yp0.size() != n, "IDA: expected initial values of size "
+                                                      << n << ", got y0 " << y0.size()
+                                                      << " and y'0 " << yp0.size());
+  EMB_THROW_IF(!(options.rtol > 0.0) || !(options.atol > 0.0),
+               "IDA: expected positive tolerances, got rtol " << options.rtol << " and atol "
+                                                              << options.atol);
+  EMB_THROW_IF(options.max_order < 1 || options.max_order > 5,
+               "IDA: expected max order 1..5, got " << options.max_order);
+  Impl& m = *impl_;
+  m.problem = &problem;
+  CheckSetup(SUNContext_Create(nullptr, &m.ctx), "SUNContext_Create");
+  m.y = CheckPtr(N_VNew_Serial(n, m.ctx), "N_VNew_Serial");
+  m.yp = CheckPtr(N_VNew_Serial(n, m.ctx), "N_VNew_Serial");
+  m.id = CheckPtr(N_VNew_Serial(n, m.ctx), "N_VNew_Serial");
+  m.scratch = CheckPtr(N_VNew_Serial(n, m.ctx), "N_VNew_Serial");
+  View(m.y) = y0;
+  View(m.yp) = yp0;
+  View(m.id) = problem.DifferentialMask();
+  m.mem = CheckPtr(IDACreate(m.ctx), "IDACreate");
+  CheckSetup(IDASetErrHandlerFn(m.mem, &Impl::ErrorHandler, &m), "IDASetErrHandlerFn");
+  CheckSetup(IDAInit(m.mem, &Impl::Residual, t0, m.y, m.yp), "IDAInit");
+  if (options.algebraic_atol > 0.0) {
+    N_Vector atol = CheckPtr(N_VClone(m.id), "N_VClone");
+    const Eigen::VectorXd mask = View(m.id);
+    View(atol) = (mask.array() > 0.5)
+                     .select(options.atol, Eigen::VectorXd::Constant(n, options.algebraic_atol));
+    const int flag = IDASVtolerances(m.mem, options.rtol, atol);
+    N_VDestroy(atol);
+    CheckSetup(flag, "IDASVtolerances");
+  } else {
+    CheckSetup(IDASStolerances(m.mem, options.rtol, options.atol), "IDASStolerances");
+  }
+  CheckSetup(IDASetUserData(m.mem, &m), "IDASetUserData");
+  CheckSetup(IDASetId(m.mem, m.id), "IDASetId");
+  CheckSetup(IDASetSuppressAlg(m.mem, options.suppress_algebraic ? SUNTRUE : SUNFALSE),
+             "IDASetSuppressAlg");
+  CheckSetup(IDASetMaxNumSteps(m.mem, options.max_num_steps), "IDASetMaxNumSteps");
+  CheckSetup(IDASetMaxOrd(m.mem, options.max_order), "IDASetMaxOrd");
+  if (options.initial_step > 0.0)
+    CheckSetup(IDASetInitStep(m.mem, options.initial_step), "IDASetInitStep");
+  if (options.max_step > 0.0) CheckSetup(IDASetMaxStep(m.mem, options.max_step), "IDASetMaxStep");
+  if (options.linear_solver == IdaLinearSolver::kKlu) {
+    EMB_THROW_IF(!problem.has_jacobian() || !options.use_analytic_jacobian,
+                 "IDA: the KLU linear solver needs the problem's analytic Jacobian");
+    // Pattern (with the diagonal) sorted into compressed columns.
+    std::vector<std::pair<int, int>> pattern = problem.JacobianPattern();
+    if (pattern.empty())
+      for (int c = 0; c < n; ++c)
+        for (int r = 0; r < n; ++r) pattern.emplace_back(r, c);
+    for (int i = 0; i < n; ++i) pattern.emplace_back(i, i);
+    std::sort(pattern.begin(), pattern.end(), [](const auto& a, const auto& b) {
+      return a.second != b.second ? a.second < b.second : a.first < b.first;
+    });
+    pattern.erase(std::unique(pattern.begin(), pattern.end()), pattern.end());
+    m.col_ptr.assign(n + 1, 0);
+    for (const auto& [r, c] : pattern) {
+      EMB_CHECK(r >= 0 && r < n && c >= 0 && c < n);
+      ++m.col_ptr[c + 1];
+      m.row_ind.push_back(r);
+    }
+    for (int c = 0; c < n; ++c) m.col_ptr[c + 1] += m.col_ptr[c];
+    m.dense.setZero(n, n);
+    const auto nnz = static_cast<sunindextype>(pattern.size());
+    m.a = CheckPtr(SUNSparseMatrix(n, n, nnz, CSC_MAT, m.ctx), "SUNSparseMatrix");
+    m.ls = CheckPtr(SUNLinSol_KLU(m.y, m.a, m.ctx), "SUNLinSol_KLU");
+    CheckSetup(IDASetLinearSolver(m.mem, m.ls, m.a), "IDASetLinearSolver");
+    CheckSetup(IDASetJacFn(m.mem, &Impl::SparseJacobian), "IDASetJacFn");
+  } else {
+    m.a = CheckPtr(SUNDenseMatrix(n, n, m.ctx), "SUNDenseMatrix");
+    m.ls = CheckPtr(SUNLinSol_Dense(m.y, m.a, m.ctx), "SUNLinSol_Dense");
+    CheckSetup(IDASetLinearSolver(m.mem, m.ls, m.a), "IDASetLinearSolver");
+    if (options.use_analytic_jacobian && problem.has_jacobian())
+      CheckSetup(IDASetJacFn(m.mem, &Impl::Jacobian), "IDASetJacFn");
+  }
+  t_ = t0;
+  y_ = y0;
+  yp_ = yp0;
+}
+
+IdaSolver::~IdaSolver() = default;
+
+void IdaSolver::Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) {
+  Impl& m = *impl_;
+  EMB_THROW_IF(y0.size() != problem_.size() || yp0.size() != problem_.size(),
+               "IDA reinit: expected values of size " << problem_.size());
+  View(m.y) = y0;
+  View(m.yp) = yp0;
+  CheckSetup(IDAReInit(m.mem, t0, m.y, m.yp), "IDAReInit");
+  t_ = t0;
+  y_ = y0;
+  yp_ = yp0;
+}
+
+IdaReport IdaSolver::AdvanceTo(double t_out) {
+  Impl& m = *impl_;
+  IdaReport report;
+  if (t_out <= t_) {
+    report.t = t_;
+    return report;
+  }
+  CheckSetup(IDASetStopTime(m.mem, t_out), "IDASetStopTime");
+  realtype t_reached = t_;
+  m.last_message.clear();
+  const int flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_NORMAL);
+  if (m.pending) {
+    std::exception_ptr e = m.pending;
+    m.pending = nullptr;
+    std::rethrow_exception(e);
+  }
+  t_ = t_reached;
+  y_ = View(m.y);
+  yp_ = View(m.yp);
+  report.t = t_reached;
+  if (flag >= 0) return report;  // IDA_SUCCESS or IDA_TSTOP_RETURN
+
+  report.status = StatusOf(flag);
+  report.message = m.last_message;
+  realtype h = 0.0;
+  if (IDAGetLastStep(m.mem, &h) >= 0) report.last_step = h;
+  realtype tcur = t_reached;
+  if (IDAGetCurrentTime(m.mem, &tcur) >= 0) report.t = tcur;
+  // The component with the largest weighted local error estimate (what the error test saw).
+  N_Vector w = m.scratch;
+  N_Vector e = N_VClone(m.scratch);
+  if (e != nullptr) {
+    if (IDAGetErrWeights(m.mem, w) >= 0 && IDAGetEstLocalErrors(m.mem, e) >= 0) {
+      Eigen::VectorXd weighted = View(e).cwiseAbs().cwiseProduct(View(w));
+      // Components outside the error test cannot be what failed it.
+      if (options_.suppress_algebraic) weighted = weighted.cwiseProduct(View(m.id));
+      Eigen::Index i = 0;
+      report.worst_weighted_error = weighted.maxCoeff(&i);
+      report.worst_component = static_cast<int>(i);
+      report.worst_component_name = problem_.ComponentName(static_cast<int>(i));
+    }
+    N_VDestroy(e);
+  }
+  return report;
+}
+
+IdaStats IdaSolver::stats() const {
+  IdaStats s;
+  void* mem = impl_->mem;
+  long v = 0;
+  if (IDAGetNumSteps(mem, &v) >= 0) s.steps = v;
+  if (IDAGetNumResEvals(mem, &v) >= 0) s.residual_evals = v;
+  if (IDAGetNumJacEvals(mem, &v) >= 0) s.jacobian_evals = v;
+  if (IDAGetNumErrTestFails(mem, &v) >= 0) s.error_test_failures = v;
+  if (IDAGetNumNonlinSolvConvFails(mem, &v) >= 0) s.nonlinear_convergence_failures = v;
+  int q = 0;
+  if (IDAGetLastOrder(mem, &q) >= 0) s.last_order = q;
+  realtype h = 0.0;
+  if (IDAGetLastStep(mem, &h) >= 0) s.last_step = h;
+  return s;
+}
+
+}  // namespace emb

@@ -1,0 +1,65 @@
+#pragma once
+/// @file
+/// Force elements (Drake `force_element.h` pattern): a non-virtual public method that
+/// checks and a protected Do* that works. Generalised forces live in v-space (notation.h):
+/// for body b, f[velocity(b)..+2] is the force in W [N] and f[angular_velocity(b)..+2] the
+/// moment about the CM in B [N m].
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "libemb/mbs/kinematics.h"
+#include "libemb/mbs/state_layout.h"
+
+namespace emb::mbs {
+
+class ConstraintWorkspace;
+
+/// What a force element may read: all body kinematics at (q, v), the time, and (for
+/// elements that follow a joint angle across turns) the run's workspace with the first of
+/// its angle slots.
+struct ForceContext {
+  const System* system{nullptr};
+  const std::vector<BodyKinematics>* bodies{nullptr};
+  double t{0.0};
+  ConstraintWorkspace* workspace{nullptr};  ///< may be null: angles are then wrapped
+  int angle_slot{-1};                       ///< this element's first slot (System::Finalize)
+};
+
+class ForceElement {
+ public:
+  explicit ForceElement(std::string name) : name_(std::move(name)) {}
+  virtual ~ForceElement() = default;
+  const std::string& name() const { return name_; }
+
+  /// Adds this element's generalised forces to f (size nv).
+  void AddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const;
+  /// Stored (potential) energy [J]; 0 for non-conservative elements.
+  double CalcPotentialEnergy(const ForceContext& ctx) const { return DoCalcPotentialEnergy(ctx); }
+  /// Power dissipated by the element [W], >= 0 for a passive damper.
+  double CalcDissipatedPower(const ForceContext& ctx) const { return DoCalcDissipatedPower(ctx); }
+  /// Markers this element reads (to validate marker indices at Finalize).
+  std::vector<int> markers() const { return DoMarkers(); }
+  /// Continuous-angle slots it needs in the ConstraintWorkspace (e.g. a crank angle over a
+  /// 720 degree cycle).
+  int num_angle_slots() const { return DoNumAngleSlots(); }
+
+ protected:
+  virtual void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const = 0;
+  virtual double DoCalcPotentialEnergy(const ForceContext&) const { return 0.0; }
+  virtual double DoCalcDissipatedPower(const ForceContext&) const { return 0.0; }
+  virtual std::vector<int> DoMarkers() const = 0;
+  virtual int DoNumAngleSlots() const { return 0; }
+
+ private:
+  std::string name_;
+};
+
+/// Adds a force F_W [N] acting at world point p_WQ and a couple T_W [N m] to body `body`
+/// (nothing for the ground): f_b += F_W, n_B += R_BW (T_W + (p_WQ - p_WB) x F_W).
+void AddWrench(const StateLayout& layout, const BodyKinematics& body_kin, int body,
+               const Eigen::Vector3d& p_WQ, const Eigen::Vector3d& F_W, const Eigen::Vector3d& T_W,
+               Eigen::Ref<Eigen::VectorXd> f);
+
+}  // namespace emb::mbs

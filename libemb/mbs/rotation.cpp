@@ -1,0 +1,93 @@
+#include "libemb/mbs/rotation.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "libemb/common/error.h"
+
+namespace emb::mbs {
+
+Matrix3d RotationFromQuaternion(const Vector4d& e_in) {
+  const double n = e_in.norm();
+  EMB_CHECK(n > 0.0);
+  const Vector4d e = e_in / n;
+  const double w = e[0], x = e[1], y = e[2], z = e[3];
+  Matrix3d R;
+  R << 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),  //
+      2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),   //
+      2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y);
+  return R;
+}
+
+Vector4d QuaternionFromRotation(const Matrix3d& R) {
+  const Eigen::Quaterniond q(R);  // Shepperd-type branch selection inside Eigen
+  Vector4d e(q.w(), q.x(), q.y(), q.z());
+  if (e[0] < 0) e = -e;
+  return e.normalized();
+}
+
+Eigen::Matrix<double, 4, 3> QuaternionRateMatrix(const Vector4d& e) {
+  const double w = e[0], x = e[1], y = e[2], z = e[3];
+  Eigen::Matrix<double, 4, 3> Q;
+  Q << -x, -y, -z,  //
+      w, -z, y,     //
+      z, w, -x,     //
+      -y, x, w;
+  return Q;
+}
+
+Vector4d RotateQuaternion(const Vector4d& e, const Vector3d& delta_pi_B) {
+  const double angle = delta_pi_B.norm();
+  Eigen::Quaterniond dq = Eigen::Quaterniond::Identity();
+  if (angle > 0.0) dq = Eigen::Quaterniond(Eigen::AngleAxisd(angle, delta_pi_B / angle));
+  const Eigen::Quaterniond q(e[0], e[1], e[2], e[3]);
+  const Eigen::Quaterniond r = (q.normalized() * dq).normalized();
+  return {r.w(), r.x(), r.y(), r.z()};
+}
+
+Matrix3d RotationFromEuler313(double psi, double theta, double phi) {
+  const double cs = std::cos(psi), ss = std::sin(psi);
+  const double ct = std::cos(theta), st = std::sin(theta);
+  const double cp = std::cos(phi), sp = std::sin(phi);
+  // Seed eq. (1.20), row by row (its (2,1) entry reads S psi C phi + C psi C theta S phi).
+  Matrix3d T;
+  T << cs * cp - ss * ct * sp, -cs * sp - ss * ct * cp, ss * st,  //
+      ss * cp + cs * ct * sp, -ss * sp + cs * ct * cp, -cs * st,  //
+      st * sp, st * cp, ct;
+  return T;
+}
+
+Vector3d Euler313FromRotation(const Matrix3d& R) {
+  const double ct = std::clamp(R(2, 2), -1.0, 1.0);
+  const double st = std::hypot(R(0, 2), R(1, 2));
+  const double theta = std::atan2(st, ct);
+  // Below this sin(theta) the psi/phi split is numerically meaningless (round-off of R).
+  constexpr double kSingularSinTheta = 1e-12;
+  if (st < kSingularSinTheta) {
+    // theta = 0: R = Rz(psi + phi); theta = pi: R = Rz(psi) Rx(pi) Rz(phi) = .. psi - phi.
+    return {std::atan2(R(1, 0), R(0, 0)), theta, 0.0};
+  }
+  const double psi = std::atan2(R(0, 2), -R(1, 2));
+  const double phi = std::atan2(R(2, 0), R(2, 1));
+  return {psi, theta, phi};
+}
+
+Matrix3d Skew(const Vector3d& a) {
+  Matrix3d S;
+  S << 0, -a[2], a[1], a[2], 0, -a[0], -a[1], a[0], 0;
+  return S;
+}
+
+Vector3d RotationVectorFromRotation(const Matrix3d& R) {
+  const Eigen::AngleAxisd aa(R);
+  return aa.axis() * aa.angle();
+}
+
+double WrapAngle(double a) {
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double r = std::remainder(a, kTwoPi);  // in [-pi, pi]
+  if (r <= -std::numbers::pi) r += kTwoPi;
+  return r;
+}
+
+}  // namespace emb::mbs

@@ -1,0 +1,51 @@
+#pragma once
+/// @file
+/// Rotations for the multibody module: unit quaternions (Euler parameters, stored
+/// (w, x, y, z)) internally; Euler body 3-1-3 angles (seed eq. 1.20) only for input/output.
+/// See notation.h for the frame conventions.
+
+#include <Eigen/Dense>
+
+namespace emb::mbs {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+using Eigen::Vector4d;
+
+/// R_WB of the quaternion e = (w, x, y, z) after normalising it, so that R is orthonormal
+/// for any non-zero e (Newton iterates may leave |e| = 1) and dR/de . e = 0.
+/// @pre |e| > 0.
+Matrix3d RotationFromQuaternion(const Vector4d& e);
+
+/// The unit quaternion (w >= 0) of a rotation matrix (Shepperd's method, any R).
+Vector4d QuaternionFromRotation(const Matrix3d& R);
+
+/// The 4x3 matrix Q(e) with de/dt = 1/2 Q(e) omega_B:
+///   Q(e) = [ -x -y -z ;  w -z  y ;  z  w -x ; -y  x  w ].
+/// For a unit e, Q^T Q = I3 and Q^T e = 0, so delta pi_B = 2 Q(e)^T delta e.
+Eigen::Matrix<double, 4, 3> QuaternionRateMatrix(const Vector4d& e);
+
+/// e * exp(delta_pi_B / 2): rotates the body by delta_pi_B (a rotation vector in B) and
+/// returns a unit quaternion. Used by Newton updates on the rotation manifold.
+Vector4d RotateQuaternion(const Vector4d& e, const Vector3d& delta_pi_B);
+
+/// The Euler 3-1-3 transformation of seed eq. (1.20):
+///   T = Rz(psi) Rx(theta) Rz(phi), i.e. R_WB for the angles (psi, theta, phi) [rad].
+Matrix3d RotationFromEuler313(double psi, double theta, double phi);
+
+/// Euler 3-1-3 angles (psi, theta, phi) [rad] of R_WB, theta in [0, pi].
+/// At the singular poses theta = 0 or pi only psi +- phi is defined; then phi = 0 and psi
+/// carries the whole rotation about z (a reporting convention; nothing is integrated in
+/// these angles).
+Vector3d Euler313FromRotation(const Matrix3d& R);
+
+/// [a x], the skew matrix with [a x] b = a x b.
+Matrix3d Skew(const Vector3d& a);
+
+/// Rotation vector (axis * angle, angle in [0, pi]) of R.
+Vector3d RotationVectorFromRotation(const Matrix3d& R);
+
+/// Wraps an angle to (-pi, pi].
+double WrapAngle(double a);
+
+}  // namespace emb::mbs

@@ -1,0 +1,49 @@
+#pragma once
+/// @file
+/// Scalar functions f(x) with first and second derivatives, used for prescribed motions
+/// (x = time, e.g. a crank angle 2 pi N t) and applied loads (x = time or a joint
+/// coordinate, e.g. cylinder pressure force vs crank angle).
+
+#include <string>
+#include <vector>
+
+namespace emb::mbs {
+
+/// f, f' and f'' at one point.
+struct FunctionValue {
+  double f{0.0};
+  double df{0.0};
+  double d2f{0.0};
+};
+
+/// An immutable scalar function. Kinds:
+///  - polynomial: f = sum_k c_k x^k (constant, ramp a + b x, 2 pi N t, ...);
+///  - harmonic:   f = offset + amplitude sin(omega x + phase);
+///  - table:      piecewise-linear through (x_i, y_i), x strictly increasing, held constant
+///                outside; optionally periodic with period x_last - x_first
+///                (f'' = 0 inside intervals; use it for loads, not for motions).
+class TimeFunction {
+ public:
+  /// f = 0.
+  TimeFunction() = default;
+  static TimeFunction Constant(double value);
+  /// @throws InputError if coefficients is empty.
+  static TimeFunction Polynomial(std::vector<double> coefficients);
+  static TimeFunction Harmonic(double amplitude, double omega, double phase, double offset);
+  /// @throws InputError if sizes differ, fewer than 2 points, or x not strictly increasing.
+  static TimeFunction Table(std::vector<double> x, std::vector<double> y, bool periodic);
+
+  FunctionValue Eval(double x) const;
+  double operator()(double x) const { return Eval(x).f; }
+  /// "polynomial[0, 6.28]" etc. for reports.
+  std::string Describe() const;
+
+ private:
+  enum class Kind { kPolynomial, kHarmonic, kTable };
+  Kind kind_{Kind::kPolynomial};
+  std::vector<double> c_{0.0};  // polynomial coefficients, or (amplitude, omega, phase, offset)
+  std::vector<double> x_, y_;
+  bool periodic_{false};
+};
+
+}  // namespace emb::mbs

@@ -1,0 +1,39 @@
+#pragma once
+/// @file
+/// A scene: one YAML file describing a multibody model (parts, markers, joints, motions,
+/// couplers, forces), the analysis to run and what to output, in SI units. The format is
+/// documented in tools/scenes/README.md with an example per feature.
+
+#include <string>
+#include <vector>
+
+#include "libemb/mbs/analysis.h"
+#include "libemb/mbs/system.h"
+
+namespace emb::scene {
+
+/// Where results go.
+struct OutputSpec {
+  std::string file;                   ///< HDF5 results (empty: none unless the CLI says)
+  std::string csv;                    ///< optional CSV of chosen channels
+  std::vector<std::string> channels;  ///< CSV channel names (see results_writer.h)
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  std::string source;  ///< the file it came from
+  mbs::System system;  ///< finalized
+  mbs::AnalysisSettings analysis;
+  OutputSpec output;
+};
+
+/// Reads and validates a scene file. @throws InputError with file:line for anything wrong:
+/// YAML syntax, unknown keys (with a did-you-mean), unknown part/marker/joint names, zero or
+/// non-unit axes, bad mass or inertia, bad functions.
+Scene LoadScene(const std::string& path);
+
+/// The same from text; `source` names it in messages.
+Scene ParseScene(const std::string& yaml_text, const std::string& source);
+
+}  // namespace emb::scene

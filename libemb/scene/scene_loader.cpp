@@ -1,0 +1,217 @@
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <numbers>
+#include <sstream>
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/applied_load.h"
+#include "libemb/mbs/bushing.h"
+#include "libemb/mbs/rotation.h"
+#include "libemb/mbs/spring_damper.h"
+#include "libemb/scene/scene.h"
+#include "libemb/scene/scene_parts.h"
+#include "libemb/scene/yaml_reader.h"
+
+namespace emb::scene {
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sys) {
+  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'bodies': expected a list");
+  for (const auto& node : list) {
+    MapReader r(node, file, "body");
+    mbs::RigidBody b;
+    b.name = r.GetString("name");
+    MapReader rb(node, file, "body '" + b.name + "'");
+    rb.GetString("name");
+    b.mass = rb.GetDouble("mass");
+    const YAML::Node in = rb.Require("inertia");
+    b.inertia_B = ReadInertia(in, file, "body '" + b.name + "' inertia");
+    b.p_WB = rb.GetVector3("position", Vector3d::Zero());
+    if (const YAML::Node o = rb.Optional("orientation"))
+      b.R_WB = ReadOrientation(o, file, "body '" + b.name + "' orientation");
+    b.v_WB = rb.GetVector3("velocity", Vector3d::Zero());
+    b.omega_W = rb.GetVector3("angular_velocity", Vector3d::Zero());
+    rb.Finish();
+    try {
+      sys->AddBody(b);
+    } catch (const InputError& e) {
+      EMB_THROW(InputError, Where(file, node) << ": " << e.what());
+    }
+  }
+}
+
+void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* sys) {
+  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'markers': expected a list");
+  for (const auto& node : list) {
+    MapReader r0(node, file, "marker");
+    const std::string name = r0.GetString("name");
+    MapReader r(node, file, "marker '" + name + "'");
+    r.GetString("name");
+    const std::string body = r.GetString("body");
+    const std::string frame = r.GetString("frame", "body");
+    EMB_THROW_IF(frame != "body" && frame != "world",
+                 Where(file, node) << ": marker '" << name
+                                   << "' frame: expected 'body' or 'world', got '" << frame << "'");
+    const Vector3d p = r.GetVector3("position", Vector3d::Zero());
+    Matrix3d R = Matrix3d::Identity();
+    if (const YAML::Node o = r.Optional("orientation"))
+      R = ReadOrientation(o, file, "marker '" + name + "' orientation");
+    r.Finish();
+    try {
+      const int b = sys->FindBody(body);
+      Vector3d p_BM = p;
+      Matrix3d R_BM = R;
+      if (frame == "world") {  // given at the initial configuration
+        const mbs::RigidBody& rb = sys->body(b);
+        p_BM = rb.R_WB.transpose() * (p - rb.p_WB);
+        R_BM = rb.R_WB.transpose() * R;
+      }
+      sys->AddMarker(name, body, p_BM, R_BM);
+    } catch (const InputError& e) {
+      EMB_THROW(InputError, Where(file, node) << ": " << e.what());
+    }
+  }
+}
+
+void ReadJoints(const YAML::Node& list, const std::string& file, mbs::System* sys) {
+  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'joints': expected a list");
+  for (const auto& node : list) {
+    MapReader r0(node, file, "joint");
+    const std::string name = r0.GetString("name");
+    MapReader r(node, file, "joint '" + name + "'");
+    r.GetString("name");
+    const std::string type = r.GetString("type");
+    const std::string i = r.GetString("i"), j = r.GetString("j");
+    r.Finish();
+    try {
+      sys->AddJoint(name, mbs::ParseJointType(type), i, j);
+    } catch (const InputError& e) {
+      EMB_THROW(InputError, Where(file, node) << ": joint '" << name << "': " << e.what());
+    }
+  }
+}
+
+void ReadMotions(const YAML::Node& list, const std::string& file, mbs::System* sys) {
+  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'motions': expected a list");
+  for (const auto& node : list) {
+    MapReader r0(node, file, "motion");
+    const std::string name = r0.GetString("name");
+    MapReader r(node, file, "motion '" + name + "'");
+    r.GetString("name");
+    const std::string joint = r.GetString("joint");
+    const mbs::JointCoordinate c = ReadCoordinate(r, "coordinate");
+    const mbs::TimeFunction f =
+        ReadFunction(r.Require("function"), file, "motion '" + name + "' function");
+    r.Finish();
+    try {
+      sys->AddMotion(name, joint, c, f);
+    } catch (const InputError& e) {
+      EMB_THROW(InputError, Where(file, node) << ": motion '" << name << "': " << e.what());
+    }
+  }
+}
+
+void ReadCouplers(const YAML::Node& list, const std::string& file, mbs::System* sys) {
+  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'couplers': expected a list");
+  for (const auto& node : list) {
+    MapReader r0(node, file, "coupler");
+    const std::string name = r0.GetString("name");
+    MapReader r(node, file, "coupler '" + name + "'");
+    r.GetString("name");
+    const std::string j1 = r.GetString("joint1"), j2 = r.GetString("joint2");
+    const mbs::JointCoordinate c1 = ReadCoordinate(r, "coordinate1");
+    const mbs::JointCoordinate c2 = ReadCoordinate(r, "coordinate2");
+    const double ratio = r.GetDouble("ratio");
+    const double offset = r.GetDouble("offset", 0.0);
+    r.Finish();
+    try {
+      sys->AddCoupler(name, j1, c1, j2, c2, ratio, offset);
+    } catch (const InputError& e) {
+      EMB_THROW(InputError, Where(file, node) << ": coupler '" << name << "': " << e.what());
+    }
+  }
+}
+
+void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::AnalysisSettings* s) {
+  MapReader r(node, file, "analysis");
+  s->type = mbs::ParseAnalysisType(r.GetString("type", "dynamic"));
+  s->t_start = r.GetDouble("t_start", s->t_start);
+  s->t_end = r.GetDouble("t_end", s->t_end);
+  s->output_step = r.GetDouble("output_step", s->output_step);
+  s->ida.rtol = r.GetDouble("rtol", s->ida.rtol);
+  s->ida.atol = r.GetDouble("atol", s->ida.atol);
+  s->ida.algebraic_atol = r.GetDouble("multiplier_atol", s->ida.algebraic_atol);
+  s->ida.max_step = r.GetDouble("max_step", s->ida.max_step);
+  s->ida.max_num_steps = r.GetInt("max_steps", static_cast<int>(s->ida.max_num_steps));
+  const std::string ls = r.GetString("linear_solver", "dense");
+  EMB_THROW_IF(ls != "dense" && ls != "klu",
+               Where(file, node) << ": analysis linear_solver: expected 'dense' or 'klu', got '"
+                                 << ls << "'");
+  s->ida.linear_solver = ls == "klu" ? IdaLinearSolver::kKlu : IdaLinearSolver::kDense;
+  s->remove_redundant = r.GetBool("remove_redundant", s->remove_redundant);
+  s->assembly.tolerance = r.GetDouble("assembly_tolerance", s->assembly.tolerance);
+  s->assembly.max_iterations = r.GetInt("assembly_iterations", s->assembly.max_iterations);
+  s->static_force_tolerance = r.GetDouble("static_tolerance", s->static_force_tolerance);
+  r.Finish();
+  EMB_THROW_IF(!(s->output_step > 0), Where(file, node) << ": analysis output_step: expected > 0");
+  EMB_THROW_IF(!(s->t_end >= s->t_start), Where(file, node)
+                                              << ": analysis: expected t_end >= t_start");
+  EMB_THROW_IF(!(s->ida.rtol > 0 && s->ida.atol > 0),
+               Where(file, node) << ": analysis: expected rtol > 0 and atol > 0");
+}
+
+void ReadOutput(const YAML::Node& node, const std::string& file, OutputSpec* o) {
+  MapReader r(node, file, "output");
+  o->file = r.GetString("file", "");
+  o->csv = r.GetString("csv", "");
+  if (const YAML::Node ch = r.Optional("channels")) {
+    EMB_THROW_IF(!ch.IsSequence(), Where(file, ch) << ": output channels: expected a list");
+    for (const auto& c : ch) o->channels.push_back(c.Scalar());
+  }
+  r.Finish();
+}
+
+}  // namespace
+
+Scene ParseScene(const std::string& text, const std::string& source) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    EMB_THROW(InputError, source << ":" << e.mark.line + 1 << ": YAML syntax error: " << e.msg);
+  }
+  MapReader r(root, source, "scene");
+  Scene scene;
+  scene.source = source;
+  scene.name = r.GetString("name", "scene");
+  scene.description = r.GetString("description", "");
+  if (r.Has("gravity"))
+    scene.system.SetGravity(r.GetVector3("gravity"));
+  else
+    r.Optional("gravity");
+  ReadBodies(r.Require("bodies"), source, &scene.system);
+  if (const YAML::Node n = r.Optional("markers")) ReadMarkers(n, source, &scene.system);
+  if (const YAML::Node n = r.Optional("joints")) ReadJoints(n, source, &scene.system);
+  if (const YAML::Node n = r.Optional("motions")) ReadMotions(n, source, &scene.system);
+  if (const YAML::Node n = r.Optional("couplers")) ReadCouplers(n, source, &scene.system);
+  if (const YAML::Node n = r.Optional("forces")) ReadForces(n, source, &scene.system);
+  if (const YAML::Node n = r.Optional("analysis")) ReadAnalysis(n, source, &scene.analysis);
+  if (const YAML::Node n = r.Optional("output")) ReadOutput(n, source, &scene.output);
+  r.Finish();
+  scene.system.Finalize();
+  return scene;
+}
+
+Scene LoadScene(const std::string& path) {
+  std::ifstream in(path);
+  EMB_THROW_IF(!in, "scene file '" << path << "' cannot be read (does it exist?)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return ParseScene(text.str(), path);
+}
+
+}  // namespace emb::scene

@@ -1,0 +1,139 @@
+#include "libemb/scene/yaml_reader.h"
+
+#include <cmath>
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/system.h"
+
+namespace emb::scene {
+
+std::string Where(const std::string& file, const YAML::Node& node) {
+  const YAML::Mark m = node.Mark();
+  if (m.line < 0) return file;
+  return file + ":" + std::to_string(m.line + 1);
+}
+
+MapReader::MapReader(const YAML::Node& node, std::string file, std::string what)
+    : node_(node), file_(std::move(file)), what_(std::move(what)) {
+  EMB_THROW_IF(!node_.IsMap(), Where(file_, node_)
+                                   << ": " << what_ << ": expected a map of key: value, got "
+                                   << (node_.IsSequence() ? "a list"
+                                       : node_.IsNull()   ? "nothing"
+                                                          : "a scalar"));
+}
+
+// Const lookups only: yaml-cpp's non-const operator[] would insert the key.
+bool MapReader::Has(const std::string& key) const {
+  const YAML::Node& n = node_;
+  return static_cast<bool>(n[key]);
+}
+
+YAML::Node MapReader::Require(const std::string& key) {
+  known_.insert(key);
+  const YAML::Node& map = node_;
+  const YAML::Node n = map[key];
+  if (!n) {
+    // A typo of the required key is more helpful to name than the missing key alone.
+    for (const auto& kv : node_) {
+      const std::string other = kv.first.Scalar();
+      if (!mbs::DidYouMean(other, {key}).empty())
+        EMB_THROW(InputError, Where(file_, kv.first) << ": " << what_ << ": unknown key '" << other
+                                                     << "'" << mbs::DidYouMean(other, {key}));
+    }
+    EMB_THROW(InputError, Where(file_, node_)
+                              << ": " << what_ << ": missing required key '" << key << "'");
+  }
+  return n;
+}
+
+YAML::Node MapReader::Optional(const std::string& key) {
+  known_.insert(key);
+  const YAML::Node& map = node_;
+  return map[key];
+}
+
+double AsDouble(const YAML::Node& n, const std::string& file, const std::string& what) {
+  double v = 0.0;
+  bool ok = n.IsScalar();
+  if (ok) {
+    try {
+      v = n.as<double>();
+    } catch (const YAML::Exception&) {
+      ok = false;
+    }
+  }
+  EMB_THROW_IF(!ok || !std::isfinite(v),
+               Where(file, n) << ": " << what << ": expected a number, got '"
+                              << (n.IsScalar() ? n.Scalar() : std::string("a non-scalar")) << "'");
+  return v;
+}
+
+std::vector<double> AsDoubles(const YAML::Node& n, const std::string& file,
+                              const std::string& what) {
+  EMB_THROW_IF(!n.IsSequence(), Where(file, n) << ": " << what << ": expected a list of numbers");
+  std::vector<double> v;
+  for (const auto& x : n) v.push_back(AsDouble(x, file, what));
+  return v;
+}
+
+double MapReader::GetDouble(const std::string& key) {
+  return AsDouble(Require(key), file_, what_ + " '" + key + "'");
+}
+double MapReader::GetDouble(const std::string& key, double fallback) {
+  const YAML::Node n = Optional(key);
+  return n ? AsDouble(n, file_, what_ + " '" + key + "'") : fallback;
+}
+int MapReader::GetInt(const std::string& key, int fallback) {
+  const YAML::Node n = Optional(key);
+  if (!n) return fallback;
+  const double v = AsDouble(n, file_, what_ + " '" + key + "'");
+  EMB_THROW_IF(v != std::floor(v), Where(file_, n) << ": " << what_ << " '" << key
+                                                   << "': expected an integer, got " << v);
+  return static_cast<int>(v);
+}
+bool MapReader::GetBool(const std::string& key, bool fallback) {
+  const YAML::Node n = Optional(key);
+  if (!n) return fallback;
+  try {
+    return n.as<bool>();
+  } catch (const YAML::Exception&) {
+    EMB_THROW(InputError, Where(file_, n)
+                              << ": " << what_ << " '" << key << "': expected true or false");
+  }
+}
+std::string MapReader::GetString(const std::string& key) {
+  const YAML::Node n = Require(key);
+  EMB_THROW_IF(!n.IsScalar(), Where(file_, n)
+                                  << ": " << what_ << " '" << key << "': expected a name or word");
+  return n.Scalar();
+}
+std::string MapReader::GetString(const std::string& key, const std::string& fallback) {
+  return Has(key) ? GetString(key) : (known_.insert(key), fallback);
+}
+Eigen::Vector3d MapReader::GetVector3(const std::string& key) {
+  const YAML::Node n = Require(key);
+  const std::vector<double> v = AsDoubles(n, file_, what_ + " '" + key + "'");
+  EMB_THROW_IF(v.size() != 3, Where(file_, n)
+                                  << ": " << what_ << " '" << key
+                                  << "': expected 3 numbers [x, y, z], got " << v.size());
+  return {v[0], v[1], v[2]};
+}
+Eigen::Vector3d MapReader::GetVector3(const std::string& key, const Eigen::Vector3d& fallback) {
+  return Has(key) ? GetVector3(key) : (known_.insert(key), fallback);
+}
+std::vector<double> MapReader::GetDoubles(const std::string& key) {
+  return AsDoubles(Require(key), file_, what_ + " '" + key + "'");
+}
+
+void MapReader::Finish() const {
+  for (const auto& kv : node_) {
+    const std::string key = kv.first.Scalar();
+    if (!known_.count(key)) {
+      const std::vector<std::string> cands(known_.begin(), known_.end());
+      EMB_THROW(InputError, Where(file_, kv.first) << ": " << what_ << ": unknown key '" << key
+                                                   << "'" << mbs::DidYouMean(key, cands));
+    }
+  }
+}
+
+}  // namespace emb::scene

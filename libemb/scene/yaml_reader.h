@@ -1,0 +1,60 @@
+#pragma once
+/// @file
+/// Strict reading of YAML scene nodes: every map is read through a MapReader that knows
+/// which keys the caller asked for, so an unknown key is an error with file:line and a
+/// did-you-mean; wrong types and missing keys name the key and the line.
+
+#include <yaml-cpp/yaml.h>
+
+#include <Eigen/Dense>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace emb::scene {
+
+/// "scene.yaml:12" for a node (line numbers 1-based).
+std::string Where(const std::string& file, const YAML::Node& node);
+
+/// Reads one YAML map. Call Finish() after the last Get to reject unknown keys.
+class MapReader {
+ public:
+  /// @throws InputError if `node` is not a map. `what` names it in messages ("body 'crank'").
+  MapReader(const YAML::Node& node, std::string file, std::string what);
+
+  bool Has(const std::string& key) const;
+  /// The child node (marks the key as known). @throws InputError if missing.
+  YAML::Node Require(const std::string& key);
+  /// The child node or an undefined node (marks the key as known).
+  YAML::Node Optional(const std::string& key);
+
+  double GetDouble(const std::string& key);
+  double GetDouble(const std::string& key, double fallback);
+  int GetInt(const std::string& key, int fallback);
+  bool GetBool(const std::string& key, bool fallback);
+  std::string GetString(const std::string& key);
+  std::string GetString(const std::string& key, const std::string& fallback);
+  Eigen::Vector3d GetVector3(const std::string& key);
+  Eigen::Vector3d GetVector3(const std::string& key, const Eigen::Vector3d& fallback);
+  std::vector<double> GetDoubles(const std::string& key);
+
+  /// @throws InputError naming the first key not asked for, with a did-you-mean among the
+  /// asked ones.
+  void Finish() const;
+
+  const std::string& file() const { return file_; }
+  const std::string& what() const { return what_; }
+  const YAML::Node& node() const { return node_; }
+
+ private:
+  YAML::Node node_;
+  std::string file_, what_;
+  std::set<std::string> known_;
+};
+
+/// Scalar conversions with file:line in the message.
+double AsDouble(const YAML::Node& n, const std::string& file, const std::string& what);
+std::vector<double> AsDoubles(const YAML::Node& n, const std::string& file,
+                              const std::string& what);
+
+}  // namespace emb::scene

@@ -1,0 +1,136 @@
+// The IDA wrapper on a small index-1 DAE with a closed-form solution:
+//   y0' = -k y0,   0 = y1 - y0^2   =>  y0 = exp(-k t), y1 = exp(-2 k t).
+// Checks accuracy against the closed form, an error that falls with the tolerance, the
+// analytic Jacobian path and the difference-quotient path, and failure/bad-input handling.
+
+#include "libemb/integrators/ida_solver.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "libemb/common/error.h"
+
+namespace emb {
+namespace {
+
+constexpr double kRate = 2.0;  // k [1/s]
+
+class DecayDae final : public DaeProblem {
+ public:
+  explicit DecayDae(bool analytic, bool throw_at_half = false)
+      : analytic_(analytic), throw_(throw_at_half) {}
+
+ protected:
+  int DoSize() const override { return 2; }
+  bool DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                      const Eigen::Ref<const Eigen::VectorXd>& yp,
+                      Eigen::Ref<Eigen::VectorXd> r) const override {
+    if (throw_ && t > 0.5) throw std::runtime_error("model broke at t > 0.5");
+    r[0] = yp[0] + kRate * y[0];
+    r[1] = y[1] - y[0] * y[0];
+    return true;
+  }
+  bool DoHasJacobian() const override { return analytic_; }
+  void DoCalcJacobian(double, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                      const Eigen::Ref<const Eigen::VectorXd>&,
+                      Eigen::Ref<Eigen::MatrixXd> J) const override {
+    J << cj + kRate, 0.0, -2.0 * y[0], 1.0;
+  }
+  Eigen::VectorXd DoDifferentialMask() const override { return Eigen::Vector2d(1.0, 0.0); }
+
+ private:
+  bool analytic_, throw_;
+};
+
+double ErrorAt(double rtol, bool analytic) {
+  const DecayDae dae(analytic);
+  IdaOptions o;
+  o.rtol = rtol;
+  o.atol = rtol * 1e-2;
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
+  const IdaReport r = ida.AdvanceTo(1.0);
+  EXPECT_TRUE(r.ok()) << r.message;
+  EXPECT_DOUBLE_EQ(ida.t(), 1.0);
+  return std::abs(ida.y()[0] - std::exp(-kRate));
+}
+
+TEST(IdaSolver, MatchesClosedFormAndErrorFallsWithTolerance) {
+  double previous = 1.0;
+  for (double rtol : {1e-4, 1e-6, 1e-8, 1e-10}) {
+    const double e = ErrorAt(rtol, true);
+    // Global error of a BDF run on a decaying exponential stays within ~10 rtol.
+    EXPECT_LT(e, 10.0 * rtol) << rtol;
+    EXPECT_LT(e, previous) << rtol;
+    previous = e;
+  }
+}
+
+TEST(IdaSolver, DifferenceQuotientJacobianAgrees) {
+  // Same tolerance, other Jacobian route: both within the tolerance of the closed form.
+  EXPECT_LT(ErrorAt(1e-8, false), 1e-7);
+}
+
+TEST(IdaSolver, KluLinearSolverAgreesWithDense) {
+  const DecayDae dae(true);
+  IdaOptions o;
+  o.rtol = 1e-8;
+  o.atol = 1e-10;
+  o.linear_solver = IdaLinearSolver::kKlu;
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
+  ASSERT_TRUE(ida.AdvanceTo(1.0).ok());
+  EXPECT_LT(std::abs(ida.y()[0] - std::exp(-kRate)), 1e-7);
+  // KLU needs the analytic Jacobian.
+  const DecayDae no_jacobian(false);
+  EXPECT_THROW(
+      IdaSolver(no_jacobian, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o),
+      InputError);
+}
+
+TEST(IdaSolver, AlgebraicComponentFollows) {
+  const DecayDae dae(true);
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), IdaOptions{});
+  ASSERT_TRUE(ida.AdvanceTo(0.7).ok());
+  // The algebraic equation holds to IDA's Newton tolerance, a fraction of rtol (1e-6).
+  EXPECT_NEAR(ida.y()[1], ida.y()[0] * ida.y()[0], 1e-6 * 0.1);
+  const IdaStats s = ida.stats();
+  EXPECT_GT(s.steps, 0);
+  EXPECT_GT(s.residual_evals, s.steps);
+}
+
+TEST(IdaSolver, TooMuchWorkIsAStatusWithTimeAndComponent) {
+  const DecayDae dae(true);
+  IdaOptions o;
+  o.max_num_steps = 3;
+  o.rtol = 1e-10;
+  o.atol = 1e-12;
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
+  const IdaReport r = ida.AdvanceTo(10.0);
+  EXPECT_EQ(r.status, IdaStatus::kTooMuchWork);
+  EXPECT_GT(r.t, 0.0);
+  EXPECT_LT(r.t, 10.0);
+  EXPECT_GT(r.last_step, 0.0);
+  EXPECT_EQ(r.worst_component, 0);  // the algebraic one is not error-tested
+  EXPECT_EQ(r.worst_component_name, "y[0]");
+  EXPECT_FALSE(r.message.empty());
+}
+
+TEST(IdaSolver, ExceptionInResidualIsRethrown) {
+  const DecayDae dae(true, /*throw_at_half=*/true);
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), IdaOptions{});
+  EXPECT_THROW(ida.AdvanceTo(1.0), std::runtime_error);
+}
+
+TEST(IdaSolver, BadArgumentsThrow) {
+  const DecayDae dae(true);
+  IdaOptions o;
+  EXPECT_THROW(IdaSolver(dae, 0.0, Eigen::Vector3d::Zero(), Eigen::Vector2d::Zero(), o),
+               InputError);
+  o.rtol = -1.0;
+  EXPECT_THROW(IdaSolver(dae, 0.0, Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero(), o),
+               InputError);
+}
+
+}  // namespace
+}  // namespace emb

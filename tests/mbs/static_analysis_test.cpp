@@ -1,0 +1,83 @@
+// Static and quasi-static analyses (kinematic_static.cpp): a pendulum finds its hanging
+// equilibrium with the weight as reaction; a spring-loaded slider-crank driven through a
+// sequence of crank angles needs the torque given by virtual work, T = -F dx/dtheta.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "libemb/mbs/analysis.h"
+#include "libemb/mbs/spring_damper.h"
+#include "tests/mbs/test_models.h"
+
+namespace emb::mbs {
+namespace {
+
+// Newton converges quadratically to the set tolerances; 1e-8 leaves margin for the
+// difference-quotient stiffness.
+constexpr double kStaticTolerance = 1e-8;
+
+TEST(StaticAnalysis, PendulumHangsWithItsWeightAsReaction) {
+  const double m = 1.0, l = 1.0, g = 9.81;
+  const System sys = testing::Pendulum(m, l, 0.5, g);
+  AnalysisSettings s;
+  s.type = AnalysisType::kStatic;
+  const PreparedRun run = PrepareRun(sys, s);
+  Sample out;
+  const RunResult r = RunAnalysis(run, s, [&](const Sample& smp) { out = smp; });
+  ASSERT_TRUE(r.ok()) << r.message;
+  const auto& L = sys.layout();
+  EXPECT_NEAR(out.q[L.position(1)], 0.0, kStaticTolerance);
+  EXPECT_NEAR(out.q[L.position(1) + 1], -0.5 * l, kStaticTolerance);
+  // The joint carries the weight: force on the rod from the ground, along +y (world y is
+  // the marker's y).
+  EXPECT_NEAR(out.reactions(0, 1), m * g, 1e-6);
+  EXPECT_NEAR(out.reactions(0, 0), 0.0, 1e-6);
+}
+
+TEST(QuasiStaticAnalysis, SpringLoadedSliderCrankTorqueFromVirtualWork) {
+  testing::SliderCrankData d;
+  d.omega = 1.0;  // rad/s of the motion: quasi-static, the rate does not matter
+  const System sys = [&] {
+    System s;
+    // Same as testing::SliderCrank, plus the spring, built before Finalize.
+    const System ref = testing::SliderCrank(d);
+    for (int b = 1; b < ref.num_bodies(); ++b) s.AddBody(ref.body(b));
+    for (const auto& mk : ref.markers())
+      s.AddMarker(mk.name, ref.body(mk.body).name, mk.p_BM, mk.R_BM);
+    s.AddJoint("main", JointType::kRevolute, "crank_o", "o");
+    s.AddJoint("big_end", JointType::kSpherical, "rod_big", "crank_pin");
+    s.AddJoint("small_end", JointType::kUniversal, "rod_small_cross", "piston_pin");
+    s.AddJoint("slider", JointType::kTranslational, "piston_slide", "bore");
+    s.AddMotion("drive", "main", JointCoordinate::kRotation, TimeFunction::Polynomial({0.0, 1.0}));
+    s.AddForceElement(std::make_shared<TranslationalSpringDamper>(
+        "spring", s.FindMarker("piston_pin"), s.FindMarker("o"), 1000.0, 0.0, 0.1));
+    s.Finalize();
+    return s;
+  }();
+  AnalysisSettings s;
+  s.type = AnalysisType::kQuasiStatic;
+  s.t_end = 3.0;  // crank angle 0 .. 3 rad
+  s.output_step = 0.25;
+  const PreparedRun run = PrepareRun(sys, s);
+  const int piston = sys.FindBody("piston");
+  const int drive = sys.FindElement("drive");
+  int n = 0;
+  const RunResult r = RunAnalysis(run, s, [&](const Sample& smp) {
+    const double a = smp.t, sa = std::sin(a), ca = std::cos(a);
+    const double root = std::sqrt(d.l * d.l - d.r * d.r * sa * sa);
+    const double x = d.r * ca + root;
+    const double dxda = -d.r * sa - d.r * d.r * sa * ca / root;
+    EXPECT_NEAR(smp.q[sys.layout().position(piston)], x, kStaticTolerance);
+    const double F = -1000.0 * (x - 0.1);  // spring force on the piston along x
+    // The motion's reaction torque about z on the crank balances the spring.
+    EXPECT_NEAR(smp.reactions(drive, 5), -F * dxda, 1e-6) << "angle " << a;
+    ++n;
+  });
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_EQ(n, 13);
+}
+
+}  // namespace
+}  // namespace emb::mbs

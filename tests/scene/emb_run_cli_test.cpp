@@ -1,0 +1,90 @@
+// `emb dof` and `emb run` as a user meets them: the DOF table and JSON, a run writing HDF5
+// and CSV, options documented in --help, and bad input giving a message and an exit code.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/support/cli_fixture.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using emb::test::CliResult;
+
+class EmbMbsCli : public emb::test::CliTest {
+ protected:
+  static std::string Scene(const std::string& name) {
+    return std::string(EMB_SOURCE_DIR) + "/tools/scenes/" + name;
+  }
+};
+
+TEST_F(EmbMbsCli, DofTableAndJson) {
+  const CliResult t = Run("dof " + Scene("four_bar.yaml"));
+  EXPECT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_NE(t.out.find("revolute 'B': parallel z_I.y_J"), std::string::npos) << t.out;
+  const CliResult j = Run("dof --json " + Scene("engine_c.yaml"));
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const auto doc = nlohmann::json::parse(j.out);
+  EXPECT_EQ(doc["summary"]["gruebler_dof"], 2);
+  EXPECT_EQ(doc["summary"]["true_dof"], 2);
+  EXPECT_EQ(doc["elements"].size(), 5u);
+}
+
+TEST_F(EmbMbsCli, RunWritesHdf5AndCsv) {
+  const CliResult r =
+      Run("run -q --json " + Scene("pendulum.yaml") + " --t-end 0.2 -o out.h5 --csv out.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["summary"]["status"], "success");
+  EXPECT_EQ(doc["summary"]["samples"], 21);
+  EXPECT_TRUE(fs::exists(dir_ / "out.h5"));
+  std::ifstream csv(dir_ / "out.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "t,rod.p.x,rod.p.y,hinge.F.x,hinge.F.y,energy.total");
+}
+
+TEST_F(EmbMbsCli, HelpDocumentsOptions) {
+  const CliResult r = Run("run --help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* opt : {"--output", "--csv", "--no-output", "--analysis", "--t-end", "--dt",
+                          "--rtol", "--atol", "--remove-redundant", "--json", "--quiet"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+  EXPECT_NE(Run("dof --help").out.find("--rank-tol"), std::string::npos);
+}
+
+TEST_F(EmbMbsCli, BadInputExitCodes) {
+  std::ofstream(dir_ / "bad.yaml")
+      << "bodies:\n  - {name: a, mass: 1, inertia: [1, 1, 1], colour: red}\n";
+  const CliResult bad = Run("dof bad.yaml");
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("bad.yaml:2"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("unknown key 'colour'"), std::string::npos) << bad.err;
+  const CliResult missing = Run("run nothing.yaml");
+  EXPECT_EQ(missing.exit_code, 1);
+  // Redundant constraints without remove_redundant: error listing them, no output file;
+  // --remove-redundant runs and says what it removed.
+  std::string four_bar = Slurp(Scene("four_bar.yaml"));
+  four_bar.replace(four_bar.rfind("remove_redundant: true"), 22, "remove_redundant: false");
+  std::ofstream(dir_ / "four_bar.yaml") << four_bar;
+  const CliResult red = Run("run -q four_bar.yaml --t-end 0.01 -o out.h5");
+  EXPECT_EQ(red.exit_code, 1) << red.err;
+  EXPECT_NE(red.err.find("revolute 'B': at-point z"), std::string::npos) << red.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.h5"));
+  const CliResult removed = Run("run -q four_bar.yaml --t-end 0.01 --remove-redundant -o out.h5");
+  EXPECT_EQ(removed.exit_code, 0) << removed.err;
+  EXPECT_NE(removed.err.find("removed 3 redundant"), std::string::npos) << removed.err;
+  // A kinematic analysis of a model with DOF: numerical outcome (exit 3).
+  const CliResult kin =
+      Run("run -q --analysis kinematic " + Scene("pendulum.yaml") + " --no-output");
+  EXPECT_EQ(kin.exit_code, 3) << kin.err;
+  EXPECT_NE(kin.err.find("0 degrees of freedom"), std::string::npos) << kin.err;
+}
+
+}  // namespace

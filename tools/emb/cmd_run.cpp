@@ -1,0 +1,142 @@
+// emb run SCENE: assemble a multibody scene and run its analysis (assemble, kinematic,
+// static, quasi-static or dynamic), writing results to HDF5 (and CSV) as it goes.
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "libemb/common/error.h"
+#include "libemb/common/timer.h"
+#include "libemb/mbs/analysis.h"
+#include "libemb/scene/results_writer.h"
+#include "libemb/scene/scene.h"
+#include "tools/emb/commands.h"
+#include "tools/emb/common_options.h"
+#include "tools/emb/progress_display.h"
+
+namespace emb::cli {
+namespace {
+
+struct RunCommand {
+  std::string scene_file;
+  OutputOptions out;
+  std::string output;
+  std::string csv;
+  std::string analysis;
+  double t_end{-1.0};
+  double rtol{-1.0};
+  double atol{-1.0};
+  double output_step{-1.0};
+  bool no_output{false};
+  bool remove_redundant{false};
+
+  void Run() const {
+    scene::Scene sc = scene::LoadScene(scene_file);
+    mbs::AnalysisSettings& st = sc.analysis;
+    if (!analysis.empty()) st.type = mbs::ParseAnalysisType(analysis);
+    if (t_end >= 0) st.t_end = t_end;
+    if (rtol > 0) st.ida.rtol = rtol;
+    if (atol > 0) st.ida.atol = atol;
+    if (output_step > 0) st.output_step = output_step;
+    if (remove_redundant) st.remove_redundant = true;
+    // Output paths: -o beats the scene; the scene's are relative to the working directory.
+    std::string h5 = no_output ? "" : (!output.empty() ? output : sc.output.file);
+    if (!no_output && h5.empty()) h5 = std::filesystem::path(scene_file).stem().string() + ".h5";
+    const std::string csv_path = !csv.empty() ? csv : (no_output ? "" : sc.output.csv);
+
+    const ProgressFn progress = MakeProgressDisplay(out.quiet);
+    Stopwatch sw;
+    ReportProgress(progress, "assembly", 0.0);
+    const mbs::PreparedRun run = mbs::PrepareRun(sc.system, st);
+    const double t_prepare = sw.seconds();
+    std::optional<scene::ResultsWriter> writer;
+    std::optional<scene::CsvWriter> csv_writer;
+    if (!h5.empty()) writer.emplace(h5, run.system, sc.source, mbs::Name(st.type));
+    if (!csv_path.empty()) csv_writer.emplace(csv_path, run.system, sc.output.channels);
+    mbs::Sample last;
+    sw.Restart();
+    const mbs::RunResult r = mbs::RunAnalysis(
+        run, st,
+        [&](const mbs::Sample& s) {
+          if (writer) writer->Write(s);
+          if (csv_writer) csv_writer->Write(s);
+          last = s;
+        },
+        progress);
+    const double t_run = sw.seconds();
+    if (writer) writer->Finish(r);
+    FinishProgressLine();
+    for (const auto& w : run.warnings) std::cerr << "emb: warning: " << w << "\n";
+
+    Summary s(std::string(mbs::Name(st.type)) + " analysis of " + sc.source);
+    s.Add("status", "status", std::string(mbs::Name(r.status)));
+    if (!r.message.empty()) s.Add("message", "message", r.message);
+    s.Add("bodies", "moving bodies", run.system.layout().num_moving());
+    s.Add("equations", "constraint equations", run.system.num_equations());
+    s.Add("gruebler_dof", "Gruebler-Kutzbach DOF", run.dof.gruebler_dof);
+    s.Add("true_dof", "true DOF", run.dof.true_dof);
+    if (!run.system.removed_equations().empty())
+      s.Add("removed_equations", "removed redundant equations", run.system.removed_equations());
+    s.Add("t_reached", "time reached [s]", r.t_reached);
+    s.Add("samples", "output samples", r.num_samples);
+    if (st.type == mbs::AnalysisType::kDynamic) {
+      s.Add("rtol", "rtol", st.ida.rtol);
+      s.Add("atol", "atol", st.ida.atol);
+      s.Add("steps", "IDA steps", r.ida_stats.steps);
+      s.Add("residual_evals", "residual evaluations", r.ida_stats.residual_evals);
+      s.Add("jacobian_evals", "Jacobian evaluations", r.ida_stats.jacobian_evals);
+      s.Add("error_test_failures", "error test failures", r.ida_stats.error_test_failures);
+      s.Add("newton_failures", "Newton convergence failures",
+            r.ida_stats.nonlinear_convergence_failures);
+    } else {
+      s.Add("newton_iterations", "Newton iterations", r.newton_iterations);
+    }
+    if (r.num_samples > 0) {
+      s.Add("energy_total", "final total energy [J]", last.energies.total());
+      s.Add("position_residual", "final max |Phi|", last.position_residual);
+      s.Add("velocity_residual", "final max |C v + Phi_t|", last.velocity_residual);
+    }
+    s.Add("seconds_assembly", "time assembly [s]", t_prepare);
+    s.Add("seconds_run", "time run [s]", t_run);
+    if (!h5.empty()) s.Add("output", "written", h5 + (csv_path.empty() ? "" : " and " + csv_path));
+    if (out.json)
+      PrintJson({{"summary", s.ToJson()}});
+    else
+      s.Print(std::cout);
+    if (!r.ok())
+      EMB_THROW(NumericalError,
+                r.message << (h5.empty() ? ""
+                                         : " (results up to t = " + std::to_string(r.t_reached) +
+                                               " s are in " + h5 + ")"));
+  }
+};
+
+}  // namespace
+
+void RegisterRunCommand(CLI::App& app) {
+  auto st = std::make_shared<RunCommand>();
+  CLI::App* cmd = app.add_subcommand(
+      "run",
+      "Run a multibody scene: assemble, then the scene's analysis (assemble, kinematic, "
+      "static, quasi-static or dynamic on SUNDIALS IDA, stabilised index-2); results to HDF5 "
+      "(and CSV), flushed as the run goes");
+  cmd->add_option("scene", st->scene_file, "Scene file (YAML), e.g. tools/scenes/slider_crank.yaml")
+      ->required();
+  cmd->add_option("-o,--output", st->output,
+                  "HDF5 results file (default: the scene's output.file, else SCENE-stem.h5)");
+  cmd->add_option("--csv", st->csv, "Also write the scene's output.channels to this CSV file");
+  cmd->add_flag("--no-output", st->no_output, "Do not write result files (summary only)");
+  cmd->add_option("--analysis", st->analysis,
+                  "Override the analysis type: assemble, kinematic, static, quasi-static, dynamic");
+  cmd->add_option("--t-end", st->t_end, "Override the end time [s]");
+  cmd->add_option("--dt", st->output_step, "Override the output step [s]");
+  cmd->add_option("--rtol", st->rtol, "Override IDA's relative tolerance");
+  cmd->add_option("--atol", st->atol, "Override IDA's absolute tolerance");
+  cmd->add_flag("--remove-redundant", st->remove_redundant,
+                "Remove redundant constraint equations (they are listed) instead of failing");
+  st->out.Register(*cmd);
+  cmd->callback([st] { st->Run(); });
+}
+
+}  // namespace emb::cli
