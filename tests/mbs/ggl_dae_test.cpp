@@ -49,22 +49,9 @@ TEST(GglDae, ConsistentInitialValuesHaveZeroResidual) {
 constexpr double kJacobianTolerance = 1e-8;
 
 System SliderCrankWithSpring() {
-  // The test slider-crank plus a spring-damper from the piston to the ground.
-  const System ref = testing::SliderCrank({});
-  System s;
-  for (int b = 1; b < ref.num_bodies(); ++b) s.AddBody(ref.body(b));
-  for (const auto& mk : ref.markers())
-    s.AddMarker(mk.name, ref.body(mk.body).name, mk.p_BM, mk.R_BM);
-  s.AddJoint("main", JointType::kRevolute, "crank_o", "o");
-  s.AddJoint("big_end", JointType::kSpherical, "rod_big", "crank_pin");
-  s.AddJoint("small_end", JointType::kUniversal, "rod_small_cross", "piston_pin");
-  s.AddJoint("slider", JointType::kTranslational, "piston_slide", "bore");
-  s.AddMotion("drive", "main", JointCoordinate::kRotation, TimeFunction::Polynomial({0.0, 60.0}));
-  s.AddForceElement(std::make_shared<TranslationalSpringDamper>(
-      "spring", s.FindMarker("piston_pin"), s.FindMarker("o"), 1000.0, 3.0, 0.1));
-  s.SetGravity(Eigen::Vector3d(0, -9.81, 0));
-  s.Finalize();
-  return s;
+  testing::SliderCrankData d;
+  d.omega = 60.0;
+  return testing::SliderCrankWithSpring(d, /*damping=*/3.0, /*g=*/9.81);
 }
 
 class GglJacobian : public ::testing::TestWithParam<int> {};

@@ -39,23 +39,7 @@ TEST(StaticAnalysis, PendulumHangsWithItsWeightAsReaction) {
 TEST(QuasiStaticAnalysis, SpringLoadedSliderCrankTorqueFromVirtualWork) {
   testing::SliderCrankData d;
   d.omega = 1.0;  // rad/s of the motion: quasi-static, the rate does not matter
-  const System sys = [&] {
-    System s;
-    // Same as testing::SliderCrank, plus the spring, built before Finalize.
-    const System ref = testing::SliderCrank(d);
-    for (int b = 1; b < ref.num_bodies(); ++b) s.AddBody(ref.body(b));
-    for (const auto& mk : ref.markers())
-      s.AddMarker(mk.name, ref.body(mk.body).name, mk.p_BM, mk.R_BM);
-    s.AddJoint("main", JointType::kRevolute, "crank_o", "o");
-    s.AddJoint("big_end", JointType::kSpherical, "rod_big", "crank_pin");
-    s.AddJoint("small_end", JointType::kUniversal, "rod_small_cross", "piston_pin");
-    s.AddJoint("slider", JointType::kTranslational, "piston_slide", "bore");
-    s.AddMotion("drive", "main", JointCoordinate::kRotation, TimeFunction::Polynomial({0.0, 1.0}));
-    s.AddForceElement(std::make_shared<TranslationalSpringDamper>(
-        "spring", s.FindMarker("piston_pin"), s.FindMarker("o"), 1000.0, 0.0, 0.1));
-    s.Finalize();
-    return s;
-  }();
+  const System sys = testing::SliderCrankWithSpring(d, /*damping=*/0.0, /*g=*/0.0);
   AnalysisSettings s;
   s.type = AnalysisType::kQuasiStatic;
   s.t_end = 3.0;  // crank angle 0 .. 3 rad

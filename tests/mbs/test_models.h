@@ -4,7 +4,10 @@
 #include <cmath>
 #include <numbers>
 
+#include <memory>
+
 #include "libemb/mbs/rotation.h"
+#include "libemb/mbs/spring_damper.h"
 #include "libemb/mbs/system.h"
 
 namespace emb::mbs::testing {
@@ -67,8 +70,8 @@ inline System DoublePendulum(double m, double l, double theta1, double theta2, d
 struct SliderCrankData {
   double r{0.05}, l{0.2}, omega{2 * std::numbers::pi * 10};
 };
-inline System SliderCrank(const SliderCrankData& d) {
-  System s;
+// Adds the slider-crank's bodies, markers, joints and motion to `s` (not finalized).
+inline void AddSliderCrank(System& s, const SliderCrankData& d) {
   RigidBody crank = Rod("crank", 2.0, d.r, Eigen::Vector3d(0.5 * d.r, 0, 0), 0.0);
   RigidBody rod = Rod("rod", 1.0, d.l, Eigen::Vector3d(d.r + 0.5 * d.l, 0, 0), 0.0);
   RigidBody piston;
@@ -99,6 +102,23 @@ inline System SliderCrank(const SliderCrankData& d) {
   s.AddJoint("slider", JointType::kTranslational, "piston_slide", "bore");
   s.AddMotion("drive", "main", JointCoordinate::kRotation,
               TimeFunction::Polynomial({0.0, d.omega}));
+}
+
+inline System SliderCrank(const SliderCrankData& d) {
+  System s;
+  AddSliderCrank(s, d);
+  s.Finalize();
+  return s;
+}
+
+// The slider-crank plus a spring-damper from the piston pin to the crank centre
+// (k = 1000 N/m, free length 0.1 m) and optional gravity along −y.
+inline System SliderCrankWithSpring(const SliderCrankData& d, double damping, double g) {
+  System s;
+  AddSliderCrank(s, d);
+  s.AddForceElement(std::make_shared<TranslationalSpringDamper>(
+      "spring", s.FindMarker("piston_pin"), s.FindMarker("o"), 1000.0, damping, 0.1));
+  if (g != 0.0) s.SetGravity(Eigen::Vector3d(0, -g, 0));
   s.Finalize();
   return s;
 }
