@@ -7,9 +7,11 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/linalg/kronecker_matrix.h"
 
 namespace emb {
 namespace {
@@ -76,11 +78,13 @@ class ShiftInvertOp {
 };
 
 // y = M x, remembering the last two products: Spectra asks for M·f more than once per step
-// (inner products and norms of the same residual vector).
+// (inner products and norms of the same residual vector). A consistent mass M = m ⊗ I₃ is
+// applied through its scalar factor m.
 class CachedMassProduct {
  public:
   using Scalar = double;
-  explicit CachedMassProduct(const SparseMatrix& M) : M_(M) {}
+  explicit CachedMassProduct(const SparseMatrix& M)
+      : M_(M), kron_(KroneckerIdentityMatrix::Detect(M, 3)) {}
   Eigen::Index rows() const { return M_.rows(); }
   Eigen::Index cols() const { return M_.cols(); }
   void perform_op(const double* x_in, double* y_out) const {
@@ -94,7 +98,12 @@ class CachedMassProduct {
     Entry& e = cache_[next_];
     next_ = 1 - next_;
     e.in = Eigen::Map<const Eigen::VectorXd>(x_in, n);
-    e.out.noalias() = M_ * e.in;
+    if (kron_) {
+      e.out.resize(n);
+      kron_->Multiply(e.in.data(), e.out.data());
+    } else {
+      e.out.noalias() = M_ * e.in;
+    }
     std::memcpy(y_out, e.out.data(), sizeof(double) * n);
   }
 
@@ -103,6 +112,7 @@ class CachedMassProduct {
     Eigen::VectorXd in, out;
   };
   const SparseMatrix& M_;
+  std::optional<KroneckerIdentityMatrix> kron_;  // M = m ⊗ I₃ (consistent mass): 9× fewer reads
   mutable Entry cache_[2];
   mutable int next_{0};
 };
