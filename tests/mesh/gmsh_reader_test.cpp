@@ -96,6 +96,24 @@ TEST_F(GmshReaderTest, SavedMeshReadsBackTheSame) {
   EXPECT_EQ(b.group("end_a").nodes, a.group("end_a").nodes);
 }
 
+TEST_F(GmshReaderTest, OtherFormatsGmshReadsJustWork) {
+  // Written by gmsh, read back through the same reader: .msh v2, Nastran .bdf, I-deas .unv.
+  const std::string geo = Write("cyl.geo", kCylinder);
+  MeshingOptions o;
+  o.size = 0.02;
+  const Mesh a = ReadMesh(geo, o);
+  for (const char* ext : {".msh2", ".bdf", ".unv"}) {
+    SCOPED_TRACE(ext);
+    o.save_as = (dir_ / (std::string("copy") + ext)).string();
+    ReadMesh(geo, o);
+    const Mesh b = ReadMesh(o.save_as);
+    ASSERT_EQ(b.blocks.size(), 1u);
+    EXPECT_EQ(b.blocks[0].type, CellType::kTet10);
+    EXPECT_EQ(b.num_cells(), a.num_cells());
+    EXPECT_EQ(b.num_nodes(), a.num_nodes());
+  }
+}
+
 TEST_F(GmshReaderTest, MissingFile) {
   ExpectError((dir_ / "nope.msh").string(), {}, {"nope.msh", "does not exist"});
 }
