@@ -29,6 +29,10 @@ struct ModalResult {
   Eigen::VectorXd frequencies_hz;  ///< f = sign(λ)·√|λ| / 2π [Hz], ascending
   int num_rigid_modes{0};          ///< modes with |λ| < rigid_threshold
   double rigid_threshold{0.0};     ///< 1e-10 · ‖K‖₁/‖M‖₁ [rad²/s²]
+  /// True when the highest mode returned has a (numerically) degenerate partner that was not
+  /// asked for — e.g. one of a bending pair of a tube. Checked for the lowest modes only, by
+  /// computing one mode more than asked; the extra mode is not returned.
+  bool splits_degenerate_group{false};
 };
 
 /// Signed frequency in Hz of an eigenvalue λ = ω² (negative λ → negative frequency).

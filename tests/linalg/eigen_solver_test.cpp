@@ -120,6 +120,18 @@ TEST(ModalAnalysis, FreeFreeHasSixRigidModesAndHertzUnits) {
     EXPECT_NEAR(r.frequencies_hz[i], std::sqrt(r.eig.eigenvalues[i]) / (2 * M_PI),
                 1e-12 * r.frequencies_hz[i]);
   EXPECT_NEAR(FrequencyHz(LambdaFromHz(123.0)), 123.0, 1e-12);
+  EXPECT_FALSE(r.splits_degenerate_group);  // modes 7 and 8 are a pair, both returned
+}
+
+TEST(ModalAnalysis, SaysWhenTheRequestCutsADegeneratePair) {
+  const SystemMatrices sys = Beam(1);
+  ModalOptions mo;
+  mo.num_modes = 7;  // the first bending pair is modes 7 and 8
+  const ModalResult r = ComputeModes(sys, mo);
+  ASSERT_TRUE(r.eig.ok()) << r.eig.message;
+  EXPECT_EQ(r.frequencies_hz.size(), 7);
+  EXPECT_EQ(r.eig.vectors.cols(), 7);
+  EXPECT_TRUE(r.splits_degenerate_group);
 }
 
 }  // namespace

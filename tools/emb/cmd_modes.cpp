@@ -97,6 +97,11 @@ struct ModesCommand {
     if (!modes.eig.message.empty()) s.Add("message", "message", modes.eig.message);
     s.Add("converged", "converged pairs", static_cast<long long>(modes.eig.num_converged));
     s.Add("rigid_modes", "rigid-body modes", static_cast<long long>(modes.num_rigid_modes));
+    if (modes.splits_degenerate_group)
+      s.Add("warning", "warning",
+            "mode " + std::to_string(num_modes) + " has a degenerate partner (mode " +
+                std::to_string(num_modes + 1) + ") that was not asked for: use --modes " +
+                std::to_string(num_modes + 1));
     s.Add("method", "eigen-solver", modes.eig.method);
     s.Add("shift", "shift sigma [rad^2/s^2]", modes.eig.shift);
     s.Add("iterations", "Lanczos restarts", static_cast<long long>(modes.eig.iterations));
