@@ -101,9 +101,7 @@ void AssembleBlock(const Mesh& mesh, const CellBlock& block, const NodeGraph& g,
     const double det_m = Element::CalcScalarMass(X, rho, me);
     const double size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
     CheckCellJacobian(mesh.source, T, block.tags[c], std::min(det_k, det_m), size);
-    Eigen::Vector3d first_unused = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d second_unused = Eigen::Matrix3d::Zero();
-    Element::AddGeometricMoments(X, volume, first_unused, second_unused);
+    volume += me.sum() / rho;  // Σ_ab m_ab = ρ ∫ dV (partition of unity)
     for (int b = 0; b < kN; ++b)
       for (int a = 0; a < kN; ++a) pos[a][b] = 3 * g.Find(nodes[b], nodes[a]);
     for (int b = 0; b < kN; ++b)

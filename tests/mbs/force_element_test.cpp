@@ -42,6 +42,20 @@ System SpringMass(double damping, double x0) {
   return s;
 }
 
+// A disc on a revolute axle about world z ("hub" on the disc, "frame" on the ground),
+// driven at `omega` [rad/s] by the motion "drive" (not finalized).
+void AddDrivenDisc(System& s, double omega) {
+  RigidBody b;
+  b.name = "disc";
+  b.mass = 1.0;
+  b.inertia_B = Eigen::Vector3d(0.01, 0.01, 0.02).asDiagonal();
+  s.AddBody(b);
+  s.AddMarker("frame", "ground", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
+  s.AddMarker("hub", "disc", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
+  s.AddJoint("axle", JointType::kRevolute, "hub", "frame");
+  s.AddMotion("drive", "axle", JointCoordinate::kRotation, TimeFunction::Polynomial({0, omega}));
+}
+
 TEST(TranslationalSpringDamper, OscillatesAtNaturalFrequencyAndConservesEnergy) {
   const double x0 = 0.01;
   const System sys = SpringMass(0.0, x0);
@@ -149,15 +163,7 @@ TEST(AppliedLoad, FunctionOfJointAngleFollowsTurns) {
   // the second turn, where a wrapped angle would restart from 0.
   const double omega = 2 * std::numbers::pi * 1.5;
   System s;
-  RigidBody b;
-  b.name = "disc";
-  b.mass = 1.0;
-  b.inertia_B = Eigen::Vector3d(0.01, 0.01, 0.02).asDiagonal();
-  s.AddBody(b);
-  s.AddMarker("frame", "ground", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  s.AddMarker("hub", "disc", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  s.AddJoint("axle", JointType::kRevolute, "hub", "frame");
-  s.AddMotion("drive", "axle", JointCoordinate::kRotation, TimeFunction::Polynomial({0, omega}));
+  AddDrivenDisc(s, omega);
   LoadArgument arg;
   arg.joint_angle = true;
   arg.marker_i = s.FindMarker("hub");
@@ -186,15 +192,7 @@ TEST(RotationalSpringDamper, WindsUpAcrossTurns) {
   // growing past pi (a wrapped angle would flip sign), and so does its energy k a^2 / 2.
   const double k = 2.0, omega = 2 * std::numbers::pi;
   System s;
-  RigidBody b;
-  b.name = "disc";
-  b.mass = 1.0;
-  b.inertia_B = Eigen::Vector3d(0.01, 0.01, 0.02).asDiagonal();
-  s.AddBody(b);
-  s.AddMarker("frame", "ground", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  s.AddMarker("hub", "disc", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  s.AddJoint("axle", JointType::kRevolute, "hub", "frame");
-  s.AddMotion("drive", "axle", JointCoordinate::kRotation, TimeFunction::Polynomial({0, omega}));
+  AddDrivenDisc(s, omega);
   s.AddForceElement(std::make_shared<RotationalSpringDamper>("clock", s.FindMarker("hub"),
                                                              s.FindMarker("frame"), k, 0.0, 0.0));
   s.Finalize();
