@@ -2,7 +2,9 @@
 
 #include <Spectra/SymGEigsShiftSolver.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -12,69 +14,36 @@
 
 #include "libemb/common/error.h"
 #include "libemb/linalg/kronecker_matrix.h"
+#include "libemb/linalg/shift_invert_solver.h"
 
 namespace emb {
 namespace {
 
-// y = (K − σM)⁻¹ x through a SparseCholesky; counts solves for the progress report.
+// y = (K − σM)⁻¹ x (on C y = 0 with constraints) for Spectra; reports progress.
 class ShiftInvertOp {
  public:
   using Scalar = double;
-  ShiftInvertOp(const SparseMatrix& K, const SparseMatrix& M, CholeskyBackend backend,
-                const ProgressFn& progress, int expected_solves)
-      : K_(K), M_(M), chol_(backend, 3), progress_(progress), expected_(expected_solves) {}
+  ShiftInvertOp(const ShiftInvertSolver& solver, const ProgressFn& progress, int expected_solves)
+      : solver_(solver), progress_(progress), expected_(expected_solves) {}
 
-  Eigen::Index rows() const { return K_.rows(); }
-  Eigen::Index cols() const { return K_.cols(); }
-
-  // Factorises K − σM and measures the backward error of one test solve: an LDLᵀ without
-  // pivoting can break down when σ sits almost on an eigenvalue.
-  void Prepare(double sigma) {
-    Stopwatch sw;
-    SparseMatrix A = K_ - sigma * M_;
-    A.makeCompressed();
-    info_ = chol_.Factorize(A);
-    prepared_sigma_ = sigma;
-    solve_backward_error_ = std::numeric_limits<double>::infinity();
-    if (info_.ok()) {
-      const Eigen::VectorXd b = Eigen::VectorXd::Ones(A.rows());
-      const Eigen::VectorXd x = chol_.Solve(b);
-      solve_backward_error_ = (A * x - b).norm() / (NormOne(A) * x.norm() + b.norm());
-    }
-    factor_seconds_ += sw.seconds();
-  }
+  Eigen::Index rows() const { return solver_.rows(); }
+  Eigen::Index cols() const { return solver_.rows(); }
   // Spectra calls this once, from the solver's constructor, with the prepared shift.
-  void set_shift(double sigma) {
-    if (sigma != prepared_sigma_) Prepare(sigma);
-  }
-  double solve_backward_error() const { return solve_backward_error_; }
+  void set_shift(double sigma) { EMB_CHECK(sigma == solver_.shift()); }
 
   void perform_op(const double* x_in, double* y_out) const {
-    if (!info_.ok()) {  // keep Spectra from using a failed factor; the caller reports it
-      std::fill(y_out, y_out + rows(), 0.0);
-      return;
-    }
-    chol_.Solve(x_in, y_out);
+    solver_.Solve(x_in, y_out);
     ++solves_;
     if (progress_ && expected_ > 0)
       progress_("eigen-solve", std::min(0.99, double(solves_) / double(expected_)));
   }
-
-  const FactorInfo& info() const { return info_; }
   int solves() const { return solves_; }
-  double factor_seconds() const { return factor_seconds_; }
 
  private:
-  const SparseMatrix& K_;
-  const SparseMatrix& M_;
-  SparseCholesky chol_;
-  FactorInfo info_;
+  const ShiftInvertSolver& solver_;
   ProgressFn progress_;
   int expected_;
   mutable int solves_{0};
-  double factor_seconds_{0.0};
-  double prepared_sigma_{std::numeric_limits<double>::quiet_NaN()};
-  double solve_backward_error_{0.0};
 };
 
 // y = M x, remembering the last two products: Spectra asks for M·f more than once per step
@@ -120,7 +89,10 @@ class CachedMassProduct {
 // Rayleigh–Ritz on span(Φ), then the checks of every pair: refines near-converged vectors,
 // makes them M-orthonormal to round-off, sorts them ascending, and measures the backward
 // errors and ‖ΦᵀMΦ − I‖. K·Φ and M·Φ are formed once and rotated with the Ritz vectors.
-void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, EigenResult& r) {
+// With constraints C φ = 0 the residual K φ − λ M φ is a constraint force Cᵀμ: the part of it
+// outside range(Cᵀ) is what is measured.
+void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
+                          EigenResult& r) {
   Eigen::MatrixXd& Phi = r.vectors;
   const int m = static_cast<int>(Phi.cols());
   Eigen::MatrixXd KPhi = K * Phi;
@@ -139,9 +111,13 @@ void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, EigenRes
   }
   r.backward_errors.resize(m);
   const double k1 = NormOne(K), m1 = NormOne(M);
+  Eigen::LLT<Eigen::MatrixXd> cct;
+  if (C.rows() > 0) cct.compute(Eigen::MatrixXd(C * C.transpose()));
   for (int i = 0; i < m; ++i) {
     const double lam = r.eigenvalues[i];
-    const double res = (KPhi.col(i) - lam * MPhi.col(i)).norm();
+    Eigen::VectorXd res_vec = KPhi.col(i) - lam * MPhi.col(i);
+    if (C.rows() > 0) res_vec -= C.transpose() * cct.solve(C * res_vec);
+    const double res = res_vec.norm();
     const double scale = (k1 + std::abs(lam) * m1) * Phi.col(i).norm();
     r.backward_errors[i] = scale > 0 ? res / scale : res;
   }
@@ -152,9 +128,29 @@ void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, EigenRes
   r.orthonormality_error = m == 0 ? 0.0 : G.hasNaN() ? kNaN : G.cwiseAbs().maxCoeff();
 }
 
-void SolveDense(const SparseMatrix& K, const SparseMatrix& M, const EigenSolverOptions& o,
-                EigenResult& r) {
-  const Eigen::MatrixXd Kd = Eigen::MatrixXd(K), Md = Eigen::MatrixXd(M);
+// Dense solve; with constraints, on an orthonormal basis Z of null(C) (from a full QR of Cᵀ).
+void SolveDense(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
+                const EigenSolverOptions& o, EigenResult& r) {
+  Eigen::MatrixXd Kd = Eigen::MatrixXd(K), Md = Eigen::MatrixXd(M);
+  Eigen::MatrixXd Z;
+  if (C.rows() > 0) {
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(Eigen::MatrixXd(C.transpose()));
+    const int rank = static_cast<int>(qr.rank());
+    if (rank < C.rows()) {
+      r.status = EigenStatus::kFactorizationFailed;
+      r.message = "the " + std::to_string(C.rows()) + " constraints are dependent (rank " +
+                  std::to_string(rank) + ")";
+      return;
+    }
+    Z = Eigen::MatrixXd(qr.householderQ()).rightCols(K.rows() - rank);
+    Kd = (Z.transpose() * Kd * Z).eval();
+    Md = (Z.transpose() * Md * Z).eval();
+    Kd = 0.5 * (Kd + Kd.transpose()).eval();
+    Md = 0.5 * (Md + Md.transpose()).eval();
+  }
+  EMB_THROW_IF(o.num_modes > Kd.rows(), "number of modes: " << o.num_modes
+                                            << " requested but the constrained model has only "
+                                            << Kd.rows() << " degrees of freedom");
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ges(Kd, Md);
   if (ges.info() != Eigen::Success) {
     r.status = EigenStatus::kFactorizationFailed;
@@ -171,11 +167,12 @@ void SolveDense(const SparseMatrix& K, const SparseMatrix& M, const EigenSolverO
   idx.resize(o.num_modes);
   std::sort(idx.begin(), idx.end());
   r.eigenvalues.resize(o.num_modes);
-  r.vectors.resize(K.rows(), o.num_modes);
+  r.vectors.resize(Kd.rows(), o.num_modes);
   for (int k = 0; k < o.num_modes; ++k) {
     r.eigenvalues[k] = all[idx[k]];
     r.vectors.col(k) = ges.eigenvectors().col(idx[k]);
   }
+  if (Z.size() > 0) r.vectors = (Z * r.vectors).eval();
   r.num_converged = o.num_modes;
   r.status = EigenStatus::kSuccess;
 }
@@ -185,44 +182,44 @@ void SolveDense(const SparseMatrix& K, const SparseMatrix& M, const EigenSolverO
 // inaccurate: it is moved by 0.1 %, 0.2 %, ... of |σ| (the Rayleigh–Ritz step recomputes every
 // eigenvalue from K and M, so the exact shift does not matter). False (with r's status and
 // message set) if no usable factorisation was found.
-bool PrepareShift(ShiftInvertOp& op, const EigenSolverOptions& o, EigenResult& r) {
+bool PrepareShift(ShiftInvertSolver& solver, const EigenSolverOptions& o, EigenResult& r) {
   double sigma = o.shift;
-  constexpr double kSolveAccuracy = 1e-10;  // backward error of a sound factorisation: ~1e-15
   for (int attempt = 0; attempt < 4; ++attempt) {
-    op.Prepare(sigma);
-    if (op.info().ok() && op.solve_backward_error() < kSolveAccuracy) break;
+    if (solver.Prepare(sigma)) break;
     if (o.backend == CholeskyBackend::kCholmodSupernodal || o.shift == 0.0) break;
     sigma = o.shift * (1.0 + 1e-3 * (attempt + 1));
   }
   r.shift = sigma;
-  r.factor = op.info();
-  r.times.Add("factorisation", op.factor_seconds());
-  if (r.factor.ok() && op.solve_backward_error() < kSolveAccuracy) return true;
+  r.factor = solver.factor();
+  r.times.Add("factorisation", solver.factor_seconds());
+  if (solver.ok()) return true;
   std::ostringstream m;
-  m << "K - sigma*M (sigma = " << sigma << ") could not be factorised";
-  if (r.factor.ok())
-    m << " accurately (test solve backward error " << op.solve_backward_error() << ")";
-  else
-    m << ": " << r.factor.message;
+  m << "K - sigma*M (sigma = " << sigma << ") could not be factorised: " << solver.message();
   r.status = EigenStatus::kFactorizationFailed;
   r.message = m.str();
   return false;
 }
 
-void SolveLanczos(const SparseMatrix& K, const SparseMatrix& M, const EigenSolverOptions& o,
+void SolveLanczos(ShiftInvertSolver& shift_solver, const EigenSolverOptions& o,
                   const ProgressFn& progress, EigenResult& r) {
-  const int n = static_cast<int>(K.rows());
+  const SparseMatrix& M = shift_solver.M();
+  const int n = static_cast<int>(shift_solver.rows() - shift_solver.num_constraints());
   const int nev = o.num_modes;
   int ncv = o.subspace > 0 ? o.subspace : std::max(2 * nev + 1, nev + 20);
   ncv = std::min(ncv, n);
   EMB_THROW_IF(ncv <= nev, "eigen-solver subspace: expected more than " << nev
                                                                         << " vectors, got " << ncv);
-  ShiftInvertOp op(K, M, o.backend, progress, 3 * ncv);
+  if (shift_solver.ok() && shift_solver.shift() == o.shift) {  // reuse the factorisation
+    r.shift = o.shift;
+    r.factor = shift_solver.factor();
+  } else if (!PrepareShift(shift_solver, o, r)) {
+    return;
+  }
+  ShiftInvertOp op(shift_solver, progress, 3 * ncv);
   CachedMassProduct bop(M);
   Stopwatch sw;
   using Solver =
       Spectra::SymGEigsShiftSolver<ShiftInvertOp, CachedMassProduct, Spectra::GEigsMode::ShiftInvert>;
-  if (!PrepareShift(op, o, r)) return;
   const double sigma = r.shift;
   Solver solver(op, bop, nev, ncv, sigma);  // the factorisation above is reused
   sw.Restart();
@@ -274,18 +271,56 @@ const char* Name(EigenStatus status) {
 
 EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
                                   const EigenSolverOptions& o, const ProgressFn& progress) {
+  return SolveGeneralizedEigen(K, M, SparseMatrix(0, K.cols()), o, progress);
+}
+
+int CountEigenvaluesBelow(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
+                          double sigma) {
+  SparseMatrix A = K - sigma * M;
+  A.makeCompressed();
+  SparseCholesky ldlt(CholeskyBackend::kCholmodLDLT, 3);
+  const FactorInfo fi = ldlt.Factorize(A);
+  if (!fi.ok()) return -1;
+  if (C.rows() == 0) return fi.num_negative_pivots;
+  // Haynsworth: In([A Cᵀ; C 0]) = In(A) + In(−C A⁻¹ Cᵀ), and the saddle-point matrix has m
+  // negative eigenvalues more than the constrained pencil has below σ.
+  const Eigen::MatrixXd Y = ldlt.Solve(Eigen::MatrixXd(C.transpose()));
+  Eigen::MatrixXd S = C * Y;
+  S = 0.5 * (S + S.transpose()).eval();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(S, Eigen::EigenvaluesOnly);
+  const int positive = static_cast<int>((es.eigenvalues().array() > 0.0).count());
+  return fi.num_negative_pivots + positive - static_cast<int>(C.rows());
+}
+
+EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
+                                  const SparseMatrix& C, const EigenSolverOptions& o,
+                                  const ProgressFn& progress) {
+  ShiftInvertSolver solver(K, M, C, o.backend);
+  return SolveGeneralizedEigen(solver, o, progress);
+}
+
+EigenResult SolveGeneralizedEigen(ShiftInvertSolver& solver, const EigenSolverOptions& o,
+                                  const ProgressFn& progress) {
+  const SparseMatrix& K = solver.K();
+  const SparseMatrix& M = solver.M();
+  const SparseMatrix& C = solver.C();
   EMB_THROW_IF(K.rows() != K.cols() || M.rows() != M.cols() || K.rows() != M.rows(),
                "eigenproblem: expected square K and M of one size, got K " << K.rows() << "x"
                                                                            << K.cols() << ", M "
                                                                            << M.rows() << "x"
                                                                            << M.cols());
-  const int n = static_cast<int>(K.rows());
+  EMB_THROW_IF(C.rows() > 0 && C.cols() != K.cols(),
+               "eigenproblem: expected constraints with " << K.cols() << " columns, got "
+                                                          << C.cols());
+  // Unknowns left once the constraints are imposed.
+  const int n = static_cast<int>(K.rows() - C.rows());
   EMB_THROW_IF(o.num_modes < 1, "number of modes: expected at least 1, got " << o.num_modes);
   const bool dense = o.method == EigenMethod::kDense || (o.method == EigenMethod::kAuto && n <= 300);
 
   EMB_THROW_IF(o.num_modes > n || (!dense && o.num_modes >= n),
                "number of modes: " << o.num_modes << " requested but the model has only " << n
                                    << " degrees of freedom"
+                                   << (C.rows() > 0 ? " once its constraints are imposed" : "")
                                    << (dense ? "" : " (the Lanczos solver needs fewer than that)"));
   EigenResult r;
   r.num_requested = o.num_modes;
@@ -293,15 +328,15 @@ EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
   r.method = dense ? "dense" : "lanczos";
   if (dense) {
     Stopwatch sw;
-    SolveDense(K, M, o, r);
+    SolveDense(K, M, C, o, r);
     r.times.Add("eigen-solve", sw.seconds());
   } else {
-    SolveLanczos(K, M, o, progress, r);
+    SolveLanczos(solver, o, progress, r);
   }
   if (r.vectors.cols() == 0) return r;
 
   Stopwatch sw;
-  RayleighRitzAndCheck(K, M, r);
+  RayleighRitzAndCheck(K, M, C, r);
   // Written so that NaN fails the check.
   if (r.status == EigenStatus::kSuccess && !(r.max_backward_error <= o.residual_tolerance &&
                                              r.orthonormality_error <= 1e-8)) {
@@ -319,21 +354,15 @@ EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
     const double top = r.eigenvalues.maxCoeff();
     const double sigma_c = top - 1e-6 * std::max(std::abs(top), std::abs(o.shift)) - 1e-12;
     const int expected = static_cast<int>((r.eigenvalues.array() < sigma_c).count());
-    SparseMatrix A = K - sigma_c * M;
-    A.makeCompressed();
-    SparseCholesky ldlt(CholeskyBackend::kCholmodLDLT, 3);
-    const FactorInfo fi = ldlt.Factorize(A);
-    if (fi.ok()) {
-      r.sturm_count = fi.num_negative_pivots;
-      // With σ below the spectrum of a PSD pencil nothing lies below the first mode returned;
-      // for an interior shift the count is reported but cannot be judged here.
-      if (o.shift < 0.0 && r.sturm_count != expected) {
-        std::ostringstream m;
-        m << "Sturm check: " << r.sturm_count << " eigenvalues lie below " << sigma_c << " but "
-          << expected << " were found there: modes were missed";
-        r.status = EigenStatus::kMissedModes;
-        r.message = m.str();
-      }
+    r.sturm_count = CountEigenvaluesBelow(K, M, C, sigma_c);
+    // With σ below the spectrum of a PSD pencil nothing lies below the first mode returned;
+    // for an interior shift the count is reported but cannot be judged here.
+    if (r.sturm_count >= 0 && o.shift < 0.0 && r.sturm_count != expected) {
+      std::ostringstream m;
+      m << "Sturm check: " << r.sturm_count << " eigenvalues lie below " << sigma_c << " but "
+        << expected << " were found there: modes were missed";
+      r.status = EigenStatus::kMissedModes;
+      r.message = m.str();
     }
   }
   r.times.Add("checks", sw.seconds());

@@ -18,6 +18,7 @@
 
 #include "libemb/common/progress.h"
 #include "libemb/common/timer.h"
+#include "libemb/linalg/shift_invert_solver.h"
 #include "libemb/linalg/sparse_cholesky.h"
 #include "libemb/linalg/sparse_types.h"
 
@@ -80,6 +81,28 @@ struct EigenResult {
 EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
                                   const EigenSolverOptions& options,
                                   const ProgressFn& progress = {});
+
+/// The same on the subspace C φ = 0 (C: m × n, full row rank, m ≪ n): the constrained pencil
+/// of e.g. a fixed-interface problem whose interfaces are weighted averages of surface motion.
+/// Lanczos runs on the constrained shift-invert operator (see ShiftInvertSolver); the residual
+/// checks measure K φ − λ M φ outside range(Cᵀ); the Sturm check counts by Haynsworth's
+/// inertia formula. Returned vectors satisfy C φ = 0 to round-off.
+EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
+                                  const SparseMatrix& C, const EigenSolverOptions& options,
+                                  const ProgressFn& progress = {});
+
+/// The same with a caller-owned solver of (K − σM) on C x = 0: a factorisation already
+/// prepared at options.shift is reused (e.g. for a second, larger solve, or by a Craig–Bampton
+/// reduction that also needs static solves); otherwise it is prepared here. Its backend must
+/// suit the shift.
+EigenResult SolveGeneralizedEigen(ShiftInvertSolver& solver, const EigenSolverOptions& options,
+                                  const ProgressFn& progress = {});
+
+/// Number of eigenvalues of K φ = λ M φ (on C φ = 0 if C has rows) below σ, by the inertia of
+/// an LDLᵀ factorisation of K − σM (and, with constraints, of C (K − σM)⁻¹ Cᵀ); -1 if the
+/// factorisation failed. Cost: one simplicial LDLᵀ (slow on big models).
+int CountEigenvaluesBelow(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
+                          double sigma);
 
 /// A readable name for a status ("success", "not converged", ...).
 const char* Name(EigenStatus status);

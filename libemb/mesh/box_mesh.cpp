@@ -50,6 +50,27 @@ double TetVolume6(const Eigen::Matrix3Xd& x, int a, int b, int c, int d) {
   return m.determinant();
 }
 
+// Tri3 → Tri6, Quad4 → Quad8 with the mid-edge nodes of `mid` (gmsh order: the edges
+// 0–1, 1–2, ... around the face). A face edge without a mid node (e.g. the diagonal of a split
+// brick face) is an internal error: faces are built on cell edges.
+CellBlock QuadraticFaces(const CellBlock& linear, const std::map<std::pair<int, int>, int>& mid) {
+  EMB_CHECK(linear.type == CellType::kTri3 || linear.type == CellType::kQuad4);
+  CellBlock q;
+  q.type = linear.type == CellType::kTri3 ? CellType::kTri6 : CellType::kQuad8;
+  q.tags = linear.tags;
+  const int nc = linear.nodes_per_cell();
+  for (int c = 0; c < linear.num_cells(); ++c) {
+    const int* v = linear.cell(c);
+    q.connectivity.insert(q.connectivity.end(), v, v + nc);
+    for (int e = 0; e < nc; ++e) {
+      auto it = mid.find(std::minmax(v[e], v[(e + 1) % nc]));
+      EMB_CHECK(it != mid.end());
+      q.connectivity.push_back(it->second);
+    }
+  }
+  return q;
+}
+
 }  // namespace
 
 Mesh MakeQuadratic(const Mesh& linear) {
@@ -93,6 +114,7 @@ Mesh MakeQuadratic(const Mesh& linear) {
     std::sort(q.nodes.begin(), q.nodes.end());
     q.nodes.erase(std::unique(q.nodes.begin(), q.nodes.end()), q.nodes.end());
     q.faces.clear();
+    for (const auto& fb : g.faces) q.faces.push_back(QuadraticFaces(fb, mid));
     out.groups.push_back(std::move(q));
   }
   return out;
@@ -155,6 +177,26 @@ Mesh MakeBoxMesh(const Eigen::Vector3d& size, const Eigen::Vector3i& cells, Cell
     const double value = (f % 2) ? size[axis] : 0.0;
     for (int i = 0; i < m.num_nodes(); ++i)
       if (m.nodes(axis, i) == value) g.nodes.push_back(i);
+    // Quad4 faces on the grid squares of the plane, numbered counter-clockwise seen from
+    // outside (their edges are brick edges, so every cell type has their mid nodes).
+    CellBlock faces;
+    faces.type = CellType::kQuad4;
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    for (int j = 0; j < cells[a2]; ++j)
+      for (int i = 0; i < cells[a1]; ++i) {
+        auto node = [&](int di, int dj) {
+          Eigen::Vector3i ijk;
+          ijk[axis] = (f % 2) ? cells[axis] : 0;
+          ijk[a1] = i + di;
+          ijk[a2] = j + dj;
+          return id(ijk.x(), ijk.y(), ijk.z());
+        };
+        int quad[4] = {node(0, 0), node(1, 0), node(1, 1), node(0, 1)};
+        if (f % 2 == 0) std::swap(quad[1], quad[3]);
+        faces.connectivity.insert(faces.connectivity.end(), quad, quad + 4);
+        faces.tags.push_back(faces.tags.size() + 1);
+      }
+    g.faces.push_back(std::move(faces));
     m.groups.push_back(std::move(g));
   }
   PhysicalGroup vol;

@@ -15,6 +15,9 @@ inline constexpr int kExitInternal = 4;
 
 void RegisterMeshCommand(CLI::App& app);
 void RegisterModesCommand(CLI::App& app);
+/// `emb reduce PART` (Craig–Bampton body file) and `emb inspect FILE`.
+void RegisterReduceCommand(CLI::App& app);
+void RegisterInspectCommand(CLI::App& app);
 /// `emb dof SCENE` and `emb run SCENE` (multibody scenes).
 void RegisterDofCommand(CLI::App& app);
 void RegisterRunCommand(CLI::App& app);

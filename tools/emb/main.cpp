@@ -3,6 +3,8 @@
 // One command with subcommands:
 //   emb mesh  PART            mesh a geometry (or read a mesh) and report what is in it
 //   emb modes PART            free-free (or constrained) natural frequencies and mode shapes
+//   emb reduce PART           Craig–Bampton reduction with a certificate -> body file (HDF5)
+//   emb inspect FILE          what is inside a body file
 //   emb dof SCENE             degrees of freedom and redundant constraints of a multibody scene
 //   emb run SCENE             run a multibody scene (kinematic/static/dynamic), results to HDF5
 // Sample run:
@@ -29,6 +31,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   RegisterMeshCommand(app);
   RegisterModesCommand(app);
+  RegisterReduceCommand(app);
+  RegisterInspectCommand(app);
   RegisterDofCommand(app);
   RegisterRunCommand(app);
   // Name an unknown subcommand (CLI11 would only say that one is required).

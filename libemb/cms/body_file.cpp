@@ -1,0 +1,360 @@
+#include "libemb/cms/body_file.h"
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+
+#include "libemb/common/error.h"
+#include "libemb/io/atomic_file.h"
+#include "libemb/io/hdf5_file.h"
+#include "libemb/io/mesh_io.h"
+#include "libemb/io/xdmf_writer.h"
+
+namespace emb {
+namespace {
+
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// FNV-1a (64 bit) over the bytes of the datasets, in the order they are written/read.
+class Digest {
+ public:
+  void Add(const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) {
+      h_ ^= p[i];
+      h_ *= 1099511628211ull;
+    }
+  }
+  std::string Hex() const {
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
+    return buf;
+  }
+
+ private:
+  std::uint64_t h_{14695981039346656037ull};
+};
+
+// Writes/reads the numeric datasets of a body through one code path, so the digest of the
+// writer and the reader cover the same bytes in the same order.
+class Codec {
+ public:
+  Codec(H5File& h5, bool writing) : h5_(h5), writing_(writing) {}
+
+  void Matrix(const std::string& path, Eigen::MatrixXd& A) {
+    if (writing_) {
+      const RowMajor r = A;
+      h5_.Write(path, r.data(), {std::uint64_t(A.rows()), std::uint64_t(A.cols())});
+      digest_.Add(r.data(), sizeof(double) * r.size());
+      return;
+    }
+    const auto shape = h5_.Shape(path);
+    EMB_THROW_IF(shape.size() != 2, "'" << h5_.path() << "': " << path
+                                        << ": expected a 2-D dataset, got " << shape.size()
+                                        << " dimensions");
+    const std::vector<double> v = h5_.ReadDoubles(path);
+    A = Eigen::Map<const RowMajor>(v.data(), shape[0], shape[1]);
+    digest_.Add(v.data(), sizeof(double) * v.size());
+  }
+  void Vector(const std::string& path, Eigen::VectorXd& x) {
+    if (writing_) {
+      h5_.Write(path, x.data(), {std::uint64_t(x.size())});
+      digest_.Add(x.data(), sizeof(double) * x.size());
+      return;
+    }
+    const std::vector<double> v = h5_.ReadDoubles(path);
+    x = Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
+    digest_.Add(v.data(), sizeof(double) * v.size());
+  }
+  void Ints(const std::string& path, std::vector<int>& v) {
+    if (writing_)
+      h5_.Write(path, v.data(), {std::uint64_t(v.size())});
+    else
+      v = h5_.ReadInts(path);
+    digest_.Add(v.data(), sizeof(int) * v.size());
+  }
+  void Scalar(const std::string& object, const std::string& name, double& x) {
+    if (writing_)
+      h5_.SetAttribute(object, name, x);
+    else
+      x = h5_.ReadDoubleAttribute(object, name);
+    digest_.Add(&x, sizeof x);
+  }
+  std::string Hex() const { return digest_.Hex(); }
+
+ private:
+  H5File& h5_;
+  bool writing_;
+  Digest digest_;
+};
+
+// The numeric content of a body, in one fixed order.
+void Transfer(Codec& c, ReducedBody& b) {
+  c.Matrix("/reduced/K", b.K);
+  c.Matrix("/reduced/M", b.M);
+  c.Matrix("/reduced/D", b.D);
+  Eigen::MatrixXd points(b.interfaces.size(), 3);
+  for (size_t j = 0; j < b.interfaces.size(); ++j) points.row(j) = b.interfaces[j].point.transpose();
+  c.Matrix("/interfaces/points", points);
+  for (size_t j = 0; j < b.interfaces.size(); ++j) {
+    Interface& itf = b.interfaces[j];
+    itf.point = points.row(j).transpose();
+    c.Ints("/interfaces/" + itf.name + "/nodes", itf.nodes);
+    c.Vector("/interfaces/" + itf.name + "/weights", itf.weights);
+  }
+  c.Vector("/fixed_interface/frequencies_hz", b.fixed_interface_hz);
+  c.Vector("/modes/frequencies_hz", b.modes.frequencies_hz);
+  c.Vector("/modes/eigenvalues", b.modes.eigenvalues);
+  c.Vector("/modes/damping_ratios", b.damping_ratios);
+  c.Matrix("/modes/X", b.modes.elastic);
+  c.Matrix("/modes/rigid", b.modes.rigid);
+  c.Matrix("/modes/interface_shapes", b.interface_shapes);
+  c.Vector("/modes/rigid_frequencies_hz", b.modes.rigid_frequencies_hz);
+  InertiaInvariants& inv = b.invariants;
+  c.Scalar("/invariants", "mass", inv.mass);
+  Eigen::VectorXd first = inv.first_moment;
+  c.Vector("/invariants/first_moment", first);
+  inv.first_moment = first;
+  Eigen::MatrixXd second = inv.second_moment;
+  c.Matrix("/invariants/second_moment", second);
+  inv.second_moment = second;
+  c.Matrix("/invariants/St", inv.St);
+  c.Matrix("/invariants/Ibar", inv.Ibar);
+  // Sbar as one (9, ne, ne) dataset: stack the 9 matrices row-wise into (9·ne, ne).
+  const int ne = static_cast<int>(b.modes.elastic.cols());
+  Eigen::MatrixXd stacked(9 * ne, ne);
+  for (int k = 0; k < 9; ++k)
+    if (inv.Sbar[k].size() == ne * ne) stacked.middleRows(k * ne, ne) = inv.Sbar[k];
+  c.Matrix("/invariants/Sbar", stacked);
+  for (int k = 0; k < 9; ++k) inv.Sbar[k] = stacked.middleRows(k * ne, ne);
+}
+
+std::string ElementTypes(const Mesh& mesh) {
+  std::string s;
+  for (const auto& b : mesh.blocks) s += (s.empty() ? "" : ", ") + std::string(Name(b.type));
+  return s;
+}
+
+}  // namespace
+
+void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const ReducedBody& body,
+                   const BodyFileInfo& info, const Mesh* mesh) {
+  AtomicFile out(path);
+  const bool shapes = mesh != nullptr && body.mesh_shapes.size() > 0;
+  {
+    H5File h5(out.temp_path(), H5File::Mode::kCreate);
+    h5.SetAttribute("/", "format", std::string(kBodyFormat));
+    h5.SetAttribute("/", "format_version", static_cast<long long>(kBodyFormatVersion));
+    h5.SetAttribute("/", "emb_version", std::string(EMB_VERSION));
+    h5.SetAttribute("/", "units",
+                    std::string("SI: m, kg, s, N, rad; frequencies in Hz; eigenvalues in "
+                                "rad^2/s^2; modes mass-normalised"));
+    WriteProvenance(h5, info.provenance);
+    h5.SetAttribute("/provenance", "element_types",
+                    mesh ? ElementTypes(*mesh) : info.element_types);
+    h5.SetAttribute("/provenance", "interfaces", info.interfaces);
+    h5.SetAttribute("/provenance", "selection", info.selection);
+    h5.SetAttribute("/provenance", "shift_hz", info.shift_hz);
+    h5.SetAttribute("/material", "name", info.material.name);
+    h5.SetAttribute("/material", "youngs_modulus", info.material.youngs_modulus);
+    h5.SetAttribute("/material", "poisson_ratio", info.material.poisson_ratio);
+    h5.SetAttribute("/material", "density", info.material.density);
+
+    std::vector<std::string> names, couplings, sources;
+    for (const auto& itf : body.interfaces) {
+      names.push_back(itf.name);
+      couplings.push_back(Name(itf.coupling));
+      sources.push_back(itf.point_source);
+    }
+    if (!names.empty()) {
+      h5.Write("/interfaces/names", names);
+      h5.Write("/interfaces/couplings", couplings);
+      h5.Write("/interfaces/point_sources", sources);
+    }
+    h5.SetAttribute("/reduced", "num_boundary", static_cast<long long>(body.num_boundary));
+    h5.SetAttribute("/reduced", "free_free", static_cast<long long>(body.free_free));
+    h5.SetAttribute("/reduced", "num_fe_dofs", static_cast<long long>(body.num_fe_dofs));
+    h5.SetAttribute("/fixed_interface", "selection_note", body.selection_note);
+    const ReductionCertificate& ct = body.certificate;
+    h5.SetAttribute("/fixed_interface", "eigen_log", ct.reduction_log);
+    h5.SetAttribute("/damping", "model",
+                    std::string(body.damping.kind == DampingModel::Kind::kModal ? "modal" : "rayleigh"));
+    if (body.damping.kind == DampingModel::Kind::kModal) {
+      h5.SetAttribute("/damping", "ratio", body.damping.ratio);
+    } else {
+      h5.SetAttribute("/damping", "alpha", body.damping.alpha);
+      h5.SetAttribute("/damping", "beta", body.damping.beta);
+    }
+    h5.SetAttribute("/invariants", "form", std::string("Shabana"));
+    h5.SetAttribute("/invariants", "frame", std::string("mesh"));
+
+    ReducedBody copy = body;  // Transfer reads through references
+    Codec codec(h5, true);
+    Transfer(codec, copy);
+    h5.SetAttribute("/", "content_digest", codec.Hex());
+
+    // Certificate.
+    const std::string c = "/certificate";
+    h5.SetAttribute(c, "passed", static_cast<long long>(ct.passed()));
+    h5.SetAttribute(c, "mass_error", ct.mass_error);
+    h5.SetAttribute(c, "com_error", ct.com_error);
+    h5.SetAttribute(c, "inertia_error", ct.inertia_error);
+    h5.SetAttribute(c, "quadrature_mass_error", ct.quadrature_mass_error);
+    h5.SetAttribute(c, "num_near_zero", static_cast<long long>(ct.num_near_zero));
+    h5.SetAttribute(c, "orthonormality_error", ct.orthonormality_error);
+    h5.SetAttribute(c, "k_diagonality_error", ct.k_diagonality_error);
+    h5.SetAttribute(c, "rigid_stiffness", ct.rigid_stiffness);
+    h5.SetAttribute(c, "fmax_hz", ct.fmax_hz);
+    h5.SetAttribute(c, "reference_run", static_cast<long long>(ct.reference_run));
+    h5.SetAttribute(c, "max_frequency_error", ct.max_frequency_error);
+    h5.SetAttribute(c, "min_mac", ct.min_mac);
+    h5.SetAttribute(c, "reference_log", ct.reference_log);
+    h5.SetAttribute(c, "static_run", static_cast<long long>(ct.static_run));
+    h5.SetAttribute(c, "static_note", ct.static_note);
+    h5.SetAttribute(c, "static_error", ct.static_error);
+    h5.SetAttribute(c, "reduction_log", ct.reduction_log);
+    h5.SetAttribute(c, "constraint_mode_residual", ct.constraint_mode_residual);
+    h5.SetAttribute(c, "constraint_mode_iterations", static_cast<long long>(ct.constraint_mode_iterations));
+    if (ct.rigid_hz.size() > 0) h5.Write(c + "/rigid_hz", ct.rigid_hz.data(), {std::uint64_t(ct.rigid_hz.size())});
+    if (!ct.pairs.empty()) {
+      RowMajor pairs(ct.pairs.size(), 6);
+      for (size_t i = 0; i < ct.pairs.size(); ++i) {
+        const ModePair& p = ct.pairs[i];
+        pairs.row(i) << p.full_mode, p.full_hz, p.reduced_mode, p.reduced_hz, p.relative_error, p.mac;
+      }
+      h5.Write(c + "/pairs", pairs.data(), {std::uint64_t(pairs.rows()), 6});
+    }
+    if (!ct.failures.empty()) h5.Write(c + "/failures", ct.failures);
+
+    if (shapes) {
+      WriteMesh(h5, *mesh);
+      const std::uint64_t ne = body.mesh_shapes.cols(), n = mesh->num_nodes();
+      h5.Write("/modes/mesh_shapes", body.mesh_shapes.data(), {ne, n, 3});
+    }
+  }
+  out.Commit();
+
+  if (shapes && !xdmf_path.empty()) {
+    std::vector<double> steps;
+    std::vector<std::string> names;
+    for (int k = 0; k < body.modes.frequencies_hz.size(); ++k) {
+      steps.push_back(k + 1);
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "elastic mode %d: %.6g Hz", k + 1, body.modes.frequencies_hz[k]);
+      names.emplace_back(buf);
+    }
+    const std::string h5_name = std::filesystem::path(path).filename().string();
+    WriteTextFileAtomic(xdmf_path,
+                        MakeXdmfSteps(h5_name, *mesh, "/modes/mesh_shapes", "mode_shape", steps, names));
+  }
+}
+
+ReducedBody ReadBodyFile(const std::string& path, BodyFileInfo* info_out) {
+  std::error_code ec;
+  EMB_THROW_IF(!std::filesystem::is_regular_file(path, ec),
+               "body file '" << path << "': no such file");
+  H5File h5(path, H5File::Mode::kRead);
+  auto attr = [&](const std::string& o, const std::string& n) {
+    EMB_THROW_IF(!h5.Exists(o), "body file '" << path << "': missing " << o);
+    return h5.ReadStringAttribute(o, n);
+  };
+  std::string format;
+  try {
+    format = h5.ReadStringAttribute("/", "format");
+  } catch (const InputError&) {
+    format = "(none)";
+  }
+  EMB_THROW_IF(format != kBodyFormat, "body file '" << path << "': expected format '" << kBodyFormat
+                                                    << "', got '" << format << "'");
+  BodyFileInfo info;
+  info.format_version = static_cast<int>(h5.ReadIntAttribute("/", "format_version"));
+  EMB_THROW_IF(info.format_version != kBodyFormatVersion,
+               "body file '" << path << "': expected format version " << kBodyFormatVersion
+                             << ", got " << info.format_version);
+  info.content_digest = h5.ReadStringAttribute("/", "content_digest");
+  info.provenance.command = attr("/provenance", "command");
+  info.provenance.source = attr("/provenance", "source");
+  info.provenance.mesh_hash = attr("/provenance", "mesh_hash");
+  info.provenance.options = attr("/provenance", "options");
+  info.element_types = attr("/provenance", "element_types");
+  info.interfaces = attr("/provenance", "interfaces");
+  info.selection = attr("/provenance", "selection");
+  info.shift_hz = h5.ReadDoubleAttribute("/provenance", "shift_hz");
+  info.material.name = attr("/material", "name");
+  info.material.youngs_modulus = h5.ReadDoubleAttribute("/material", "youngs_modulus");
+  info.material.poisson_ratio = h5.ReadDoubleAttribute("/material", "poisson_ratio");
+  info.material.density = h5.ReadDoubleAttribute("/material", "density");
+
+  ReducedBody b;
+  b.num_boundary = static_cast<int>(h5.ReadIntAttribute("/reduced", "num_boundary"));
+  b.free_free = h5.ReadIntAttribute("/reduced", "free_free") != 0;
+  b.num_fe_dofs = static_cast<int>(h5.ReadIntAttribute("/reduced", "num_fe_dofs"));
+  b.selection_note = attr("/fixed_interface", "selection_note");
+  if (h5.Exists("/interfaces/names")) {
+    const auto names = h5.ReadStrings("/interfaces/names");
+    const auto couplings = h5.ReadStrings("/interfaces/couplings");
+    const auto sources = h5.ReadStrings("/interfaces/point_sources");
+    EMB_THROW_IF(couplings.size() != names.size() || sources.size() != names.size(),
+                 "body file '" << path << "': /interfaces datasets of different lengths");
+    for (size_t j = 0; j < names.size(); ++j) {
+      Interface itf;
+      itf.name = names[j];
+      EMB_THROW_IF(couplings[j] != "rbe2" && couplings[j] != "rbe3",
+                   "body file '" << path << "': interface '" << names[j]
+                                 << "': expected coupling rbe2 or rbe3, got '" << couplings[j] << "'");
+      itf.coupling = couplings[j] == "rbe2" ? Coupling::kRbe2 : Coupling::kRbe3;
+      itf.point_source = sources[j];
+      b.interfaces.push_back(std::move(itf));
+    }
+  }
+  const std::string model = attr("/damping", "model");
+  if (model == "modal") {
+    b.damping.kind = DampingModel::Kind::kModal;
+    b.damping.ratio = h5.ReadDoubleAttribute("/damping", "ratio");
+  } else {
+    EMB_THROW_IF(model != "rayleigh", "body file '" << path << "': expected damping model modal or "
+                                                       "rayleigh, got '" << model << "'");
+    b.damping.kind = DampingModel::Kind::kRayleigh;
+    b.damping.alpha = h5.ReadDoubleAttribute("/damping", "alpha");
+    b.damping.beta = h5.ReadDoubleAttribute("/damping", "beta");
+  }
+  for (const auto& p : {"/reduced/K", "/modes/X", "/invariants/Sbar"})
+    EMB_THROW_IF(!h5.Exists(p), "body file '" << path << "': missing dataset " << p);
+  Codec codec(h5, false);
+  Transfer(codec, b);
+  EMB_THROW_IF(codec.Hex() != info.content_digest,
+               "body file '" << path << "': content digest " << codec.Hex()
+                             << " does not match the recorded " << info.content_digest
+                             << ": the file was modified after it was written; refusing it");
+  const int nr = static_cast<int>(b.K.rows());
+  const int ne = static_cast<int>(b.modes.elastic.cols());
+  EMB_THROW_IF(b.K.cols() != nr || b.M.rows() != nr || b.D.rows() != nr || b.modes.elastic.rows() != nr ||
+                   b.modes.frequencies_hz.size() != ne ||
+                   b.interface_shapes.rows() != 6 * static_cast<int>(b.interfaces.size()),
+               "body file '" << path << "': inconsistent dataset sizes");
+  if (info_out) *info_out = info;
+  return b;
+}
+
+void CheckBodyProvenance(const std::string& path, const BodyFileInfo& info,
+                         const std::string& expected_mesh_hash,
+                         const IsotropicMaterial* expected) {
+  EMB_THROW_IF(info.provenance.mesh_hash != expected_mesh_hash,
+               "body file '" << path << "' was reduced from mesh " << info.provenance.mesh_hash
+                             << " but the model uses mesh " << expected_mesh_hash
+                             << ": stale basis, run emb reduce again");
+  if (expected) {
+    const IsotropicMaterial& m = info.material;
+    EMB_THROW_IF(m.youngs_modulus != expected->youngs_modulus ||
+                     m.poisson_ratio != expected->poisson_ratio || m.density != expected->density,
+                 "body file '" << path << "' was reduced with E = " << m.youngs_modulus
+                               << " Pa, nu = " << m.poisson_ratio << ", rho = " << m.density
+                               << " kg/m^3 but the model uses E = " << expected->youngs_modulus
+                               << " Pa, nu = " << expected->poisson_ratio
+                               << ", rho = " << expected->density
+                               << " kg/m^3: stale basis, run emb reduce again");
+  }
+}
+
+}  // namespace emb

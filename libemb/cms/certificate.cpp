@@ -1,0 +1,177 @@
+#include "libemb/cms/certificate.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "libemb/cms/coupled_model.h"
+#include "libemb/cms/static_exactness.h"
+#include "libemb/common/error.h"
+#include "libemb/fe/modal_analysis.h"
+
+namespace emb {
+namespace {
+
+constexpr double kPairedMac = 0.5;
+
+double RelativeError(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return (a - b).norm() / b.norm();
+}
+
+std::string EigenLog(const EigenResult& r) {
+  std::ostringstream o;
+  o << r.method << ", shift " << r.shift << " rad^2/s^2, " << r.iterations << " restarts, "
+    << r.num_solves << " solves, " << r.num_converged << "/" << r.num_requested
+    << " converged, worst backward error " << r.max_backward_error;
+  return o.str();
+}
+
+// Free-free modes of the coupled model up to fmax (at least `min_modes` elastic ones),
+// growing the request until the highest one passes fmax.
+EigenResult ReferenceModes(const CoupledModel& model, double fmax, int min_modes,
+                           EigenSolverOptions solver, const ProgressFn& progress) {
+  solver.shift = LambdaFromHz(-1.0);  // below the spectrum: the lowest modes, rigid ones too
+  solver.num_modes = 6 + std::max(min_modes, 1) + 4;
+  const int limit = model.size() - 2;
+  for (;;) {
+    solver.num_modes = std::min(solver.num_modes, limit);
+    EigenResult r = SolveGeneralizedEigen(model.K, model.M, solver, progress);
+    if (!r.ok() || FrequencyHz(r.eigenvalues[r.eigenvalues.size() - 1]) > fmax ||
+        solver.num_modes == limit)
+      return r;
+    solver.num_modes *= 2;
+  }
+}
+
+}  // namespace
+
+ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sys, double density,
+                                      const ReductionBasis& basis, const Eigen::MatrixXd& Khat,
+                                      const Eigen::MatrixXd& Mhat, const OrthonormalModes& modes,
+                                      const CertificateOptions& options,
+                                      const ProgressFn& progress) {
+  ReductionCertificate cert;
+  auto fail = [&](const std::string& what) { cert.failures.push_back(what); };
+
+  // 1. Mass properties.
+  const Eigen::MatrixXd R = RigidBodyModes(mesh);
+  const Eigen::Matrix<double, 6, 6> full_rr = R.transpose() * (sys.M * R);
+  const Eigen::Matrix<double, 6, 6> red_rr = basis.rigid.transpose() * Mhat * basis.rigid;
+  cert.full = MassPropertiesFromRigidMass(full_rr);
+  cert.reduced = MassPropertiesFromRigidMass(red_rr);
+  cert.quadrature = CalcMassProperties(mesh, density);
+  cert.mass_error = std::abs(cert.reduced.mass - cert.full.mass) / cert.full.mass;
+  // Centre of mass relative to the radius of gyration (the centre may be at the origin).
+  const double gyration = std::sqrt(cert.full.inertia_about_com.trace() / (2.0 * cert.full.mass));
+  cert.com_error = (cert.reduced.center_of_mass - cert.full.center_of_mass).norm() / gyration;
+  cert.inertia_error = RelativeError(cert.reduced.inertia_about_com, cert.full.inertia_about_com);
+  cert.quadrature_mass_error = std::abs(cert.full.mass - cert.quadrature.mass) / cert.quadrature.mass;
+  constexpr double kMassLimit = CertificateLimits::kMassProperties;
+  if (!(cert.mass_error <= kMassLimit && cert.com_error <= kMassLimit &&
+        cert.inertia_error <= kMassLimit))
+    fail("mass properties of the reduced body differ from the full model");
+  // Two quadratures of the same mass integrals: round-off apart.
+  if (!(cert.quadrature_mass_error <= kMassLimit))
+    fail("the consistent mass matrix disagrees with the mesh's mass quadrature");
+
+  // 2. Rigid modes.
+  cert.rigid_hz = modes.rigid_frequencies_hz;
+  cert.num_near_zero = modes.num_near_zero;
+  if (cert.num_near_zero != 6)
+    fail("expected exactly 6 rigid-body modes, found " + std::to_string(cert.num_near_zero));
+
+  // 3. Orthonormality.
+  cert.orthonormality_error = modes.orthonormality_error;
+  cert.k_diagonality_error = modes.k_diagonality_error;
+  cert.rigid_stiffness = modes.rigid_stiffness;
+  if (!(cert.orthonormality_error <= CertificateLimits::kOrthonormality &&
+        cert.k_diagonality_error <= CertificateLimits::kOrthonormality))
+    fail("the orthonormalised basis is not M-orthonormal and K-diagonal");
+
+  // 4. Free-free frequencies vs the full model.
+  const int ne = static_cast<int>(modes.frequencies_hz.size());
+  // Default band: half the highest fixed-interface frequency kept (a CB basis is accurate well
+  // below its cut-off; see ModeSelection::band_factor); for a free-free basis all its modes.
+  const Eigen::VectorXd& kept = basis.mode_frequencies_hz;
+  if (options.fmax_hz > 0)
+    cert.fmax_hz = options.fmax_hz;
+  else if (basis.free_free)
+    cert.fmax_hz = ne > 0 ? modes.frequencies_hz[ne - 1] : 0.0;
+  else
+    cert.fmax_hz = kept.size() > 0 ? kept.maxCoeff() / ModeSelection().band_factor : 0.0;
+  if (options.reference && ne > 0) {
+    Stopwatch sw;
+    int in_band = 0;
+    while (in_band < ne && modes.frequencies_hz[in_band] <= cert.fmax_hz) ++in_band;
+    const CoupledModel model = BuildCoupledModel(mesh, sys, basis.interfaces);
+    const EigenResult ref = ReferenceModes(model, cert.fmax_hz, in_band, options.solver, progress);
+    cert.reference_log = EigenLog(ref);
+    if (!ref.ok()) {
+      fail("the full model's eigen-solve failed: " + ref.message);
+    } else {
+      cert.reference_run = true;
+      // Expanded modes, both M-orthonormal in the full model: the MAC of a pair is
+      // (φ_rᵀ M P φ_y)².
+      const Eigen::MatrixXd Phi_r = basis.T * modes.elastic;
+      const Eigen::MatrixXd MPphi = sys.M * (model.P * ref.vectors);
+      const Eigen::MatrixXd cross = (Phi_r.transpose() * MPphi).cwiseAbs2();
+      const double rigid_threshold = 1e-10 * NormOne(model.K) / NormOne(model.M);
+      int num_rigid = 0;
+      for (int i = 0; i < ref.eigenvalues.size(); ++i) {
+        const double f = FrequencyHz(ref.eigenvalues[i]);
+        if (std::abs(ref.eigenvalues[i]) < rigid_threshold) {
+          ++num_rigid;
+          continue;
+        }
+        if (f > cert.fmax_hz) break;
+        ModePair p;
+        p.full_mode = i + 1 - num_rigid;
+        p.full_hz = f;
+        int best;
+        cross.col(i).maxCoeff(&best);
+        p.reduced_mode = best + 1;
+        p.reduced_hz = modes.frequencies_hz[best];
+        p.relative_error = (p.reduced_hz - f) / f;
+        // A degenerate group shares one subspace: sum the MAC over it.
+        for (int j = 0; j < ne; ++j)
+          if (std::abs(modes.frequencies_hz[j] - p.reduced_hz) <= 1e-3 * p.reduced_hz)
+            p.mac += cross(j, i);
+        // A full mode the basis cannot represent (MAC < 0.5) is listed, not paired.
+        p.paired = p.mac >= kPairedMac;
+        if (p.paired) {
+          cert.max_frequency_error = std::max(cert.max_frequency_error, std::abs(p.relative_error));
+          cert.min_mac = std::min(cert.min_mac, p.mac);
+        } else {
+          ++cert.num_unrepresented;
+        }
+        cert.pairs.push_back(p);
+      }
+    }
+    cert.reference_seconds = sw.seconds();
+  }
+
+  // 5. Static exactness.
+  if (options.static_check) {
+    const StaticExactness st = CheckStaticExactness(mesh, sys, basis, Khat);
+    cert.static_run = st.run;
+    cert.static_note = st.note;
+    cert.static_loads = st.num_loads;
+    cert.static_error = st.max_error;
+    if (st.run && !(st.max_error <= CertificateLimits::kStatic))
+      fail("the reduced body is not statically exact at its interfaces");
+  } else {
+    cert.static_note = "not run (switched off)";
+  }
+
+  // 6. The reduction's eigen-solve.
+  cert.reduction_log = basis.eig.num_requested > 0 ? EigenLog(basis.eig) : "no eigen-solve";
+  cert.constraint_mode_iterations = basis.static_iterations;
+  cert.constraint_mode_residual = basis.static_residual;
+  if (!basis.free_free && !(basis.static_residual <= CertificateLimits::kConstraintModes))
+    fail("the constraint modes are inaccurate (relative residual " +
+         std::to_string(basis.static_residual) + ")");
+  return cert;
+}
+
+}  // namespace emb

@@ -1,0 +1,356 @@
+#include "libemb/cms/craig_bampton.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+#include "libemb/common/error.h"
+#include "libemb/cms/interface_partition.h"
+#include "libemb/fe/modal_analysis.h"
+#include "libemb/linalg/extended_product.h"
+#include "libemb/linalg/pinned_solver.h"
+#include "libemb/linalg/shift_invert_solver.h"
+#include "libemb/linalg/submatrix.h"
+
+namespace emb {
+namespace {
+
+int FindRoot(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// Pieces of the mesh (cells joined through shared nodes) that touch none of the interfaces,
+// described for an error message; empty if every piece touches one.
+std::string DescribeFloatingPieces(const Mesh& mesh, const std::vector<Interface>& interfaces) {
+  std::vector<int> parent(mesh.num_nodes());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& b : mesh.blocks)
+    for (int c = 0; c < b.num_cells(); ++c) {
+      const int* v = b.cell(c);
+      for (int k = 1; k < b.nodes_per_cell(); ++k) parent[FindRoot(parent, v[k])] = FindRoot(parent, v[0]);
+    }
+  std::vector<char> held(mesh.num_nodes(), 0);
+  for (const auto& itf : interfaces)
+    for (int s : itf.nodes) held[FindRoot(parent, s)] = 1;
+  std::vector<int> count(mesh.num_nodes(), 0);
+  std::vector<Eigen::Vector3d> sum(mesh.num_nodes(), Eigen::Vector3d::Zero());
+  for (const auto& b : mesh.blocks)
+    for (int c = 0; c < b.num_cells(); ++c)
+      for (int k = 0; k < b.nodes_per_cell(); ++k) {
+        const int v = b.cell(c)[k];
+        const int r = FindRoot(parent, v);
+        ++count[r];
+        sum[r] += mesh.nodes.col(v);
+      }
+  std::ostringstream o;
+  int pieces = 0;
+  for (int r = 0; r < mesh.num_nodes(); ++r) {
+    if (count[r] == 0 || held[r] || FindRoot(parent, r) != r) continue;
+    const Eigen::Vector3d c = sum[r] / count[r];
+    o << (pieces++ ? "; " : "") << "a piece around (" << c.x() << ", " << c.y() << ", " << c.z()
+      << ") m";
+  }
+  return o.str();
+}
+
+[[noreturn]] void ThrowUnrestrained(const Mesh& mesh, const std::vector<Interface>& interfaces,
+                                    const std::string& evidence) {
+  const std::string floating = DescribeFloatingPieces(mesh, interfaces);
+  if (!floating.empty())
+    EMB_THROW(InputError, "the interfaces do not restrain the part (" << evidence
+                                                                      << "): floating region: "
+                                                                      << floating
+                                                                      << " touches no interface");
+  EMB_THROW(InputError, "the interfaces do not restrain the part ("
+                            << evidence
+                            << "): they leave a mechanism; add or change interfaces, or reduce "
+                               "free-free (no interfaces)");
+}
+
+// Solves the eigenproblem for the selection, growing the request until the cut-off is passed.
+// A requested count that ends inside a degenerate group is extended to keep the group whole.
+EigenResult SolveSelected(ShiftInvertSolver& solver, int available, const ReductionOptions& o,
+                          std::string& note, const ProgressFn& progress) {
+  const ModeSelection& sel = o.selection;
+  EigenSolverOptions so = o.solver;
+  so.shift = LambdaFromHz(o.shift_hz);
+  const double cutoff = sel.CutoffHz();
+  const int limit = available - 1;  // Lanczos needs fewer than the problem size
+  int nev = sel.kind == ModeSelection::Kind::kCount ? sel.count + 1 : 20;
+  EigenResult r;
+  for (;;) {
+    so.num_modes = std::min(nev, limit);
+    r = SolveGeneralizedEigen(solver, so, progress);
+    if (!r.ok()) return r;
+    const double top = FrequencyHz(r.eigenvalues[r.eigenvalues.size() - 1]);
+    if (sel.kind == ModeSelection::Kind::kCount || top > cutoff || so.num_modes == limit) break;
+    nev = std::max(2 * nev, nev + 20);
+  }
+  const int found = static_cast<int>(r.eigenvalues.size());
+  int keep = 0;
+  if (sel.kind == ModeSelection::Kind::kCount) {
+    keep = std::min(sel.count, found);
+    // Keep a degenerate partner (to 1e-6 relative, far above solver accuracy and far below
+    // the splitting a mesh causes) with its mode: half a bending pair is a wrong model.
+    if (keep < found && keep > 0 &&
+        std::abs(r.eigenvalues[keep] - r.eigenvalues[keep - 1]) <=
+            1e-6 * std::abs(r.eigenvalues[keep - 1])) {
+      ++keep;
+      note += "; mode " + std::to_string(keep) + " kept too (degenerate partner of mode " +
+              std::to_string(keep - 1) + ")";
+    }
+  } else {
+    while (keep < found && FrequencyHz(r.eigenvalues[keep]) <= cutoff) ++keep;
+    if (keep == found && found == limit) note += "; every available mode is below the cut-off";
+  }
+  r.eigenvalues.conservativeResize(keep);
+  r.vectors.conservativeResize(Eigen::NoChange, keep);
+  r.backward_errors.conservativeResize(keep);
+  r.num_converged = std::min(r.num_converged, keep);
+  return r;
+}
+
+// Constraint modes by refinement with the shifted factorisation: ψ ← ψ + A_C⁻¹(b − K_II ψ; Q − C ψ)
+// contracts the error by |σ|/(λ₁ − σ) per step; with the residuals accumulated in extended
+// precision it converges to the correctly rounded solution (see extended_product.h).
+// `iterations` is set to the steps taken, or −1 if it did not converge.
+Eigen::MatrixXd SolveByShiftedRefinement(const ShiftInvertSolver& solver, const SparseMatrix& KII,
+                                         const SparseMatrix& C, const Eigen::MatrixXd& rhs,
+                                         const Eigen::MatrixXd& Q, int& iterations,
+                                         const ProgressFn& progress) {
+  const int nq = static_cast<int>(rhs.cols());
+  Eigen::MatrixXd Psi = solver.Solve(rhs, Q);
+  // The corrections fall by |σ|/(λ₁ − σ) per step until they reach the noise floor of the
+  // rounded solution, ~cond(A)·ε (~1e-12 with an RBE2 holding the part). Stop at 1e-13, or at
+  // the floor: once below 1e-7 a correction that no longer halves is noise. The accuracy
+  // reached is measured by the caller (static_residual) and by the certificate.
+  constexpr double kStaticTolerance = 1e-13;
+  constexpr double kNoiseCeiling = 1e-7;
+  constexpr int kMaxStaticIterations = 100;
+  double change = std::numeric_limits<double>::infinity();
+  int it = 0;
+  bool converged = false;
+  while (!converged && it < kMaxStaticIterations) {
+    const Eigen::MatrixXd r = ResidualExtended(KII, Psi, rhs);
+    const Eigen::MatrixXd rc = C.rows() > 0 ? ResidualExtended(C, Psi, Q) : Eigen::MatrixXd(0, nq);
+    const Eigen::MatrixXd delta = solver.Solve(r, rc);
+    Psi += delta;
+    const double previous = change;
+    change = delta.cwiseAbs().maxCoeff() / std::max(Psi.cwiseAbs().maxCoeff(), 1e-300);
+    converged = change <= kStaticTolerance || (change < kNoiseCeiling && change > 0.5 * previous);
+    ++it;
+    if (progress) progress("constraint modes", std::min(0.99, it / 5.0));
+  }
+  iterations = converged ? it : -1;
+  return Psi;
+}
+
+void CheckEigen(const EigenResult& r, const char* what) {
+  if (!r.ok())
+    EMB_THROW(NumericalError, what << " eigen-solve " << Name(r.status) << ": " << r.message);
+}
+
+ReductionBasis BuildFreeFree(const Mesh& mesh, const SystemMatrices& sys,
+                             const ReductionOptions& o, const ProgressFn& progress) {
+  ReductionBasis b;
+  b.free_free = true;
+  b.num_boundary = 6;
+  SparseMatrix none(0, sys.num_dofs());
+  ShiftInvertSolver solver(sys.K, sys.M, none, o.solver.backend);
+  ReductionOptions shifted = o;
+  // The six rigid modes come first; the selection counts elastic modes.
+  if (shifted.selection.kind == ModeSelection::Kind::kCount) shifted.selection.count += 6;
+  b.selection_note = "free-free (no interfaces): rigid-body motions + elastic modes, " +
+                     o.selection.Describe();
+  Stopwatch sw;
+  b.eig = SolveSelected(solver, sys.num_dofs(), shifted, b.selection_note, progress);
+  CheckEigen(b.eig, "free-free");
+  const double threshold = 1e-10 * NormOne(sys.K) / NormOne(sys.M);
+  const int rigid = static_cast<int>((b.eig.eigenvalues.array().abs() < threshold).count());
+  if (rigid != 6)
+    ThrowUnrestrained(mesh, {}, std::to_string(rigid) + " modes at 0 Hz instead of 6");
+  const int ne = static_cast<int>(b.eig.eigenvalues.size()) - 6;
+  b.T.resize(sys.num_dofs(), 6 + ne);
+  b.T.leftCols(6) = RigidBodyModes(mesh);
+  b.T.rightCols(ne) = b.eig.vectors.rightCols(ne);
+  b.mode_frequencies_hz.resize(ne);
+  for (int i = 0; i < ne; ++i) b.mode_frequencies_hz[i] = FrequencyHz(b.eig.eigenvalues[6 + i]);
+  b.eig.vectors.resize(0, 0);
+  b.rigid = Eigen::MatrixXd::Zero(6 + ne, 6);
+  b.rigid.topRows(6).setIdentity();
+  for (const auto& [name, s] : b.eig.times.phases) b.times.Add(name, s);
+  return b;
+}
+
+}  // namespace
+
+double ModeSelection::CutoffHz() const {
+  switch (kind) {
+    case Kind::kCount: return std::numeric_limits<double>::infinity();
+    case Kind::kCutoff: return fmax_hz;
+    case Kind::kBand: return band_factor * fmax_hz;
+  }
+  return 0.0;
+}
+
+std::string ModeSelection::Describe() const {
+  std::ostringstream o;
+  switch (kind) {
+    case Kind::kCount: o << count << " modes"; break;
+    case Kind::kCutoff: o << "modes up to " << fmax_hz << " Hz"; break;
+    case Kind::kBand:
+      o << "band " << fmax_hz << " Hz x " << band_factor << " = modes up to " << CutoffHz() << " Hz";
+      break;
+  }
+  return o.str();
+}
+
+Eigen::MatrixXd RigidBodyModes(const Mesh& mesh) {
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(3 * mesh.num_nodes(), 6);
+  for (int i = 0; i < mesh.num_nodes(); ++i) {
+    const Eigen::Vector3d x = mesh.nodes.col(i);
+    R.block<3, 3>(3 * i, 0).setIdentity();
+    // θ × x = −[x]× θ
+    R.block<3, 3>(3 * i, 3) << 0, x.z(), -x.y(), -x.z(), 0, x.x(), x.y(), -x.x(), 0;
+  }
+  return R;
+}
+
+ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
+                                   const std::vector<Interface>& interfaces,
+                                   const ReductionOptions& o, const ProgressFn& progress) {
+  const ModeSelection& sel = o.selection;
+  EMB_THROW_IF(sel.kind == ModeSelection::Kind::kCount && sel.count < 0,
+               "number of modes: expected 0 or more, got " << sel.count);
+  EMB_THROW_IF(sel.kind != ModeSelection::Kind::kCount && !(sel.fmax_hz > 0),
+               "frequency limit: expected a positive frequency, got " << sel.fmax_hz << " Hz");
+  EMB_THROW_IF(!(sel.band_factor >= 1.0),
+               "band factor: expected at least 1, got " << sel.band_factor);
+  EMB_THROW_IF(sys.num_dofs() != 3 * mesh.num_nodes(),
+               "reduction: the matrices (" << sys.num_dofs() << " unknowns) do not belong to the "
+                                           << "mesh (" << mesh.num_nodes() << " nodes)");
+  if (interfaces.empty()) return BuildFreeFree(mesh, sys, o, progress);
+
+  ReductionBasis b;
+  b.interfaces = interfaces;
+  const int N = sys.num_dofs();
+  const int nb = static_cast<int>(interfaces.size());
+  const int nq = 6 * nb;
+  b.num_boundary = nq;
+
+  const InterfacePartition part = PartitionByInterfaces(mesh, interfaces);
+  const std::vector<int>& slaved = part.slaved;
+  const std::vector<int>& interior = part.interior;
+  const int ni = static_cast<int>(interior.size());
+  const Eigen::MatrixXd& TS = part.TS;
+  const Eigen::MatrixXd& Q = part.Q;
+  const SparseMatrix& C = part.C;
+
+  Stopwatch sw;
+  const SparseMatrix KII = ExtractSubmatrix(sys.K, interior, interior);
+  const SparseMatrix MII = ExtractSubmatrix(sys.M, interior, interior);
+  const SparseMatrix KIS = ExtractSubmatrix(sys.K, interior, slaved);
+  b.times.Add("partition", sw.seconds());
+
+  const int available = ni - C.rows();
+  EMB_THROW_IF(sel.kind == ModeSelection::Kind::kCount && sel.count >= available,
+               "number of modes: " << sel.count << " requested but the interior has only "
+                                   << available << " degrees of freedom");
+  ShiftInvertSolver solver(KII, MII, C, o.solver.backend);
+  const double sigma = LambdaFromHz(o.shift_hz);
+  if (!solver.Prepare(sigma))
+    EMB_THROW(NumericalError, "fixed-interface matrix K_II - sigma M_II (sigma = "
+                                  << sigma << ") could not be factorised: " << solver.message());
+  b.times.Add("factorisation", solver.factor_seconds());
+  const double threshold = 1e-10 * NormOne(KII) / NormOne(MII);
+
+  // Fixed-interface modes.
+  b.selection_note = "fixed-interface modes: " + sel.Describe();
+  const bool want_modes = !(sel.kind == ModeSelection::Kind::kCount && sel.count == 0);
+  if (want_modes) {
+    b.eig = SolveSelected(solver, available, o, b.selection_note, progress);
+    CheckEigen(b.eig, "fixed-interface");
+    for (const auto& [name, s] : b.eig.times.phases)
+      if (name != "factorisation") b.times.Add(name, s);
+    const int rigid = static_cast<int>((b.eig.eigenvalues.array().abs() < threshold).count());
+    if (rigid > 0)
+      ThrowUnrestrained(mesh, interfaces,
+                        std::to_string(rigid) + " fixed-interface modes at 0 Hz");
+  }
+  const int nm = static_cast<int>(b.eig.eigenvalues.size());
+  b.mode_frequencies_hz.resize(nm);
+  for (int i = 0; i < nm; ++i) b.mode_frequencies_hz[i] = FrequencyHz(b.eig.eigenvalues[i]);
+
+  // Constraint modes: K_II ψ + Cᵀμ = −K_IS T_S, C ψ = Q.
+  sw.Restart();
+  if (progress) progress("constraint modes", 0.0);
+  const Eigen::MatrixXd rhs = -MultiplyExtended(KIS, TS);
+  Eigen::MatrixXd Psi;
+  if (slaved.empty()) {
+    // Only RBE3 averages hold the part: K_II is singular and K_II − σM nearly so in the rigid
+    // directions; pin it instead (pinned_solver.h: one more factorisation, unshifted).
+    const Eigen::MatrixXd R = RigidBodyModes(mesh);
+    const PinnedConstrainedSolver pinned(KII, R, PinUnknowns(mesh, part), C);
+    if (!pinned.ok()) ThrowUnrestrained(mesh, interfaces, pinned.message());
+    Psi = pinned.Solve(rhs, Q);
+    b.static_iterations = 3;
+  } else {
+    Psi = SolveByShiftedRefinement(solver, KII, C, rhs, Q, b.static_iterations, progress);
+    if (b.static_iterations < 0)
+      ThrowUnrestrained(mesh, interfaces,
+                        "the constraint modes did not converge: the interior stiffness is "
+                        "(nearly) singular");
+  }
+  // A rigid motion of the interfaces moves the part rigidly (K R = 0): that response is known
+  // exactly, so the solves' forward error (~cond(K)·ε, 1e-9 on a slender tube) is removed from
+  // it by a rank-6 correction Ψ ← Ψ + (R_I − Ψ P)(PᵀP)⁻¹Pᵀ, P = the rigid q-coordinates. The
+  // rigid-body mass properties of the reduced body are then exact to round-off.
+  {
+    Eigen::MatrixXd P(nq, 6);
+    for (int j = 0; j < nb; ++j) P.middleRows(6 * j, 6) = ReferenceRigidMotions(interfaces[j].point);
+    const Eigen::MatrixXd R = RigidBodyModes(mesh);
+    Eigen::MatrixXd RI(ni, 6);
+    for (int k = 0; k < ni; ++k) RI.row(k) = R.row(interior[k]);
+    const Eigen::MatrixXd E = RI - Psi * P;
+    b.rigid_correction = E.norm() / RI.norm();
+    Psi += E * (P.transpose() * P).ldlt().solve(P.transpose());
+  }
+  // Residual outside the constraint forces range(Cᵀ), relative to the load scale.
+  {
+    Eigen::MatrixXd res = KII * Psi - rhs;
+    if (C.rows() > 0) {
+      Eigen::LLT<Eigen::MatrixXd> cct(Eigen::MatrixXd(C * C.transpose()));
+      res -= C.transpose() * cct.solve(C * res);
+    }
+    const Eigen::MatrixXd KPsi = KII * Psi;
+    double worst = 0.0;
+    for (int k = 0; k < nq; ++k) {
+      const double scale = KPsi.col(k).norm() + rhs.col(k).norm();
+      worst = std::max(worst, res.col(k).norm() / std::max(scale, 1e-300));
+    }
+    b.static_residual = worst;
+  }
+  b.times.Add("constraint modes", sw.seconds());
+
+  // T in full unknowns.
+  sw.Restart();
+  b.T = Eigen::MatrixXd::Zero(N, nq + nm);
+  for (int k = 0; k < ni; ++k) {
+    b.T.row(interior[k]).head(nq) = Psi.row(k);
+    if (nm > 0) b.T.row(interior[k]).tail(nm) = b.eig.vectors.row(k);
+  }
+  for (size_t k = 0; k < slaved.size(); ++k) b.T.row(slaved[k]).head(nq) = TS.row(k);
+  b.eig.vectors.resize(0, 0);
+
+  // Rigid motion (t0, θ0) about the origin: q_j = (t0 + θ0 × p_j, θ0), η = 0.
+  b.rigid = Eigen::MatrixXd::Zero(nq + nm, 6);
+  for (int j = 0; j < nb; ++j) b.rigid.block<6, 6>(6 * j, 0) = ReferenceRigidMotions(interfaces[j].point);
+  b.times.Add("basis", sw.seconds());
+  return b;
+}
+
+}  // namespace emb

@@ -1,0 +1,97 @@
+#pragma once
+/// @file
+/// Craig–Bampton reduction of a solid part to its interfaces.
+///
+/// Unknowns: the full FE displacements u (3 per node). The boundary coordinates are the six
+/// reference-node motions q_j = (t_j, θ_j) of every interface j (see interface.h). Interior
+/// unknowns I are all FE unknowns except the RBE2 surface nodes (which are slaved,
+/// u_S = T_S q). RBE3 interfaces add constraints C u_I = q_RBE3 (their weighted averages).
+///
+/// Basis (columns of T, in full FE unknowns):
+///  - constraint modes Ψ: for each boundary coordinate k the static deformation with q = e_k,
+///        K_II ψ + Cᵀ μ = −K_IS T_S e_k,   C ψ = e_k (RBE3 rows),
+///    solved with the factorisation of A = K_II − σM_II (σ < 0, positive definite even when
+///    only RBE3 interfaces hold the part) and the iteration ψ ← A_C⁻¹(b − σ M_II ψ), which
+///    converges by the factor |σ|/(λ₁ − σ) per step (λ₁: lowest fixed-interface eigenvalue;
+///    ~1e-5 for a crankshaft), so a few block solves give it to round-off;
+///  - fixed-interface normal modes Φ: K_II φ = λ M_II φ on C φ = 0 with the RBE2 surfaces
+///    clamped, by shift-invert Lanczos on the same factorisation.
+/// CB is statically exact: for loads at the interfaces, T reproduces the full solution.
+///
+/// Without interfaces the basis is the six rigid-body motions plus free-free elastic modes.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "libemb/cms/interface.h"
+#include "libemb/common/progress.h"
+#include "libemb/common/timer.h"
+#include "libemb/fe/assembly.h"
+#include "libemb/linalg/eigen_solver.h"
+
+namespace emb {
+
+/// Which fixed-interface (or free-free) modes to keep.
+struct ModeSelection {
+  enum class Kind {
+    kCount,   ///< the `count` lowest
+    kCutoff,  ///< all up to `fmax_hz`
+    kBand,    ///< all up to band_factor × fmax_hz: fmax_hz is the highest frequency of interest
+  };
+  Kind kind{Kind::kCount};
+  int count{100};
+  double fmax_hz{0.0};
+  /// Multiple of the band up to which fixed-interface modes are kept (the usual 1.5–2×). How
+  /// accurate that makes the band is part-specific: the certificate of each run measures it
+  /// (benchmarks/README.md has the crankshaft's error against mode count).
+  double band_factor{2.0};
+
+  /// The frequency up to which modes are kept [Hz] (infinite for kCount).
+  double CutoffHz() const;
+  /// E.g. "20 modes", "modes up to 3000 Hz", "band 1500 Hz x 2 = modes up to 3000 Hz".
+  std::string Describe() const;
+};
+
+struct ReductionOptions {
+  ModeSelection selection;
+  double shift_hz{-1.0};       ///< Lanczos shift [Hz] (negative: lowest modes)
+  EigenSolverOptions solver;   ///< tolerance, subspace, backend; num_modes/shift are set here
+};
+
+/// A reduction basis in full FE unknowns, with what it took to make it.
+struct ReductionBasis {
+  std::vector<Interface> interfaces;
+  /// N × (6·interfaces + modes): constraint modes (6 per interface, order t_x t_y t_z θ_x θ_y
+  /// θ_z), then the kept fixed-interface modes (M-orthonormal). Free-free: 6 rigid motions
+  /// (translations, then rotations about the origin), then elastic modes.
+  Eigen::MatrixXd T;
+  int num_boundary{0};                 ///< 6 × interfaces (6 for the free-free basis)
+  bool free_free{false};
+  Eigen::VectorXd mode_frequencies_hz; ///< of the kept fixed-interface (free-free) modes
+  EigenResult eig;                     ///< the eigen-solve's log (vectors moved into T)
+  std::string selection_note;          ///< what was kept and why
+  int static_iterations{0};            ///< refinement steps of the constraint modes
+  double static_residual{0.0};         ///< max ‖K_II ψ + K_IS u_S − Cᵀμ‖ / ‖K_IS u_S‖-scale
+  double rigid_correction{0.0};        ///< ‖R_I − Ψ P‖/‖R_I‖ before the rigid correction
+  /// Reduced coordinates of the six rigid motions about the origin (translations x, y, z,
+  /// rotations x, y, z): (nr × 6), exact by construction.
+  Eigen::MatrixXd rigid;
+  PhaseTimes times;                    ///< "constraint modes", "factorisation", "eigen-solve", ...
+};
+
+/// The six rigid-body motions about the origin as full FE fields (N × 6): columns t_x, t_y,
+/// t_z, θ_x, θ_y, θ_z.
+Eigen::MatrixXd RigidBodyModes(const Mesh& mesh);
+
+/// Builds the Craig–Bampton basis of `sys` (assembled from `mesh`) for `interfaces` (empty:
+/// free-free basis).
+/// @throws InputError for more modes than interior unknowns, interfaces that leave part of
+///   the mesh unrestrained (naming the floating region), dependent interface constraints.
+/// @throws NumericalError when the eigen-solve or the constraint modes fail their checks.
+ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
+                                   const std::vector<Interface>& interfaces,
+                                   const ReductionOptions& options, const ProgressFn& progress = {});
+
+}  // namespace emb

@@ -1,0 +1,87 @@
+#include "libemb/cms/reduction.h"
+
+#include <sstream>
+
+#include "libemb/common/error.h"
+#include "libemb/linalg/extended_product.h"
+
+namespace emb {
+
+std::string DampingModel::Describe() const {
+  std::ostringstream o;
+  if (kind == Kind::kModal)
+    o << "modal, ratio " << ratio << " for every elastic mode";
+  else
+    o << "Rayleigh, alpha " << alpha << " 1/s, beta " << beta << " s";
+  return o.str();
+}
+
+ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
+                       const IsotropicMaterial& material, const ReductionJob& job,
+                       const ProgressFn& progress) {
+  EMB_THROW_IF(job.damping.kind == DampingModel::Kind::kModal && !(job.damping.ratio >= 0.0),
+               "damping ratio: expected 0 or more, got " << job.damping.ratio);
+  EMB_THROW_IF(job.damping.kind == DampingModel::Kind::kRayleigh &&
+                   !(job.damping.alpha >= 0.0 && job.damping.beta >= 0.0),
+               "Rayleigh damping: expected alpha, beta >= 0, got " << job.damping.alpha << ", "
+                                                                   << job.damping.beta);
+  ReducedBody body;
+  body.num_fe_dofs = sys.num_dofs();
+  Stopwatch sw;
+  const std::vector<Interface> interfaces = ResolveInterfaces(mesh, job.interfaces);
+  body.times.Add("interfaces", sw.seconds());
+
+  ReductionBasis basis = BuildReductionBasis(mesh, sys, interfaces, job.reduction, progress);
+  for (const auto& [name, s] : basis.times.phases) body.times.Add(name, s);
+  body.interfaces = basis.interfaces;
+  body.free_free = basis.free_free;
+  body.num_boundary = basis.num_boundary;
+  body.fixed_interface_hz = basis.mode_frequencies_hz;
+  body.selection_note = basis.selection_note;
+
+  sw.Restart();
+  if (progress) progress("reduced matrices", 0.0);
+  // K T in extended precision: rigid-like columns have K T ≈ 0 from cancelling large terms.
+  const Eigen::MatrixXd KT = MultiplyExtended(sys.K, basis.T), MT = sys.M * basis.T;
+  body.K = TransposeProductExtended(basis.T, KT);
+  body.M = basis.T.transpose() * MT;
+  body.K = 0.5 * (body.K + body.K.transpose()).eval();
+  body.M = 0.5 * (body.M + body.M.transpose()).eval();
+  body.times.Add("reduced matrices", sw.seconds());
+
+  sw.Restart();
+  body.modes = Orthonormalise(body.K, body.M, basis.rigid);
+  body.times.Add("orthonormalisation", sw.seconds());
+  const Eigen::MatrixXd& X = body.modes.elastic;
+  const int ne = static_cast<int>(X.cols());
+  body.interface_shapes = basis.free_free ? Eigen::MatrixXd(0, ne)
+                                          : Eigen::MatrixXd(X.topRows(basis.num_boundary));
+
+  sw.Restart();
+  if (progress) progress("invariants", 0.0);
+  const Eigen::MatrixXd Phi = basis.T * X;
+  body.invariants = CalcInertiaInvariants(mesh.nodes, sys.M, Phi);
+  body.times.Add("invariants", sw.seconds());
+
+  // Damping in z: modal D = M̂ X diag(2 ζ ω) Xᵀ M̂ (as XᵀM̂X = I), or Rayleigh α M̂ + β K̂.
+  body.damping = job.damping;
+  const Eigen::VectorXd omega = body.modes.eigenvalues.cwiseMax(0.0).cwiseSqrt();
+  if (job.damping.kind == DampingModel::Kind::kModal) {
+    body.damping_ratios = Eigen::VectorXd::Constant(ne, job.damping.ratio);
+    const Eigen::MatrixXd MX = body.M * X;
+    body.D = MX * (2.0 * body.damping_ratios.cwiseProduct(omega)).asDiagonal() * MX.transpose();
+  } else {
+    body.damping_ratios = (job.damping.alpha / omega.array().max(1e-300) +
+                           job.damping.beta * omega.array()) / 2.0;
+    body.D = job.damping.alpha * body.M + job.damping.beta * body.K;
+  }
+
+  sw.Restart();
+  body.certificate = CertifyReduction(mesh, sys, material.density, basis, body.K, body.M,
+                                      body.modes, job.certificate, progress);
+  body.times.Add("certificate", sw.seconds());
+  if (job.keep_mesh_shapes) body.mesh_shapes = Phi;
+  return body;
+}
+
+}  // namespace emb

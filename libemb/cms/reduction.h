@@ -1,0 +1,69 @@
+#pragma once
+/// @file
+/// The offline mode-reduction job: mesh + material + interfaces → a certified reduced body.
+///
+///     K, M (FE)  →  Craig–Bampton basis T  →  K̂ = TᵀKT, M̂ = TᵀMT  →  orthonormal modes X
+///     →  inertia invariants of Φ = T X  →  damping D̂  →  certificate
+///
+/// The reduced coordinates are z = (q_1, …, q_nb, η) (six per interface, then the kept
+/// fixed-interface modal coordinates); the elastic coordinates of the floating frame are
+/// ξ = Xᵀ M̂ z, i.e. z = X ξ for an elastic motion. Interface j moves by rows 6j..6j+5 of X.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "libemb/cms/certificate.h"
+#include "libemb/cms/craig_bampton.h"
+#include "libemb/cms/inertia_invariants.h"
+#include "libemb/cms/interface.h"
+#include "libemb/cms/orthonormal_modes.h"
+#include "libemb/fe/material.h"
+
+namespace emb {
+
+/// Damping of the elastic modes: a ratio per mode, or Rayleigh D = α M + β K.
+struct DampingModel {
+  enum class Kind { kModal, kRayleigh };
+  Kind kind{Kind::kModal};
+  double ratio{0.01};  ///< ζ of every elastic mode (kModal); 1 %, the seed's default
+  double alpha{0.0};   ///< [1/s] (kRayleigh)
+  double beta{0.0};    ///< [s]   (kRayleigh)
+  std::string Describe() const;
+};
+
+struct ReductionJob {
+  std::vector<InterfaceSpec> interfaces;  ///< empty: free-free basis
+  ReductionOptions reduction;
+  DampingModel damping;
+  CertificateOptions certificate;
+  bool keep_mesh_shapes{true};            ///< keep Φ = T X at all nodes (for animation)
+};
+
+/// A reduced flexible body: everything a multibody run (and Python) needs.
+struct ReducedBody {
+  std::vector<Interface> interfaces;
+  bool free_free{false};
+  int num_boundary{0};                 ///< 6 · interfaces (6 rigid coordinates if free-free)
+  Eigen::MatrixXd K, M, D;             ///< reduced (nr × nr) in coordinates z
+  Eigen::VectorXd fixed_interface_hz;  ///< kept fixed-interface (or free-free) modes [Hz]
+  std::string selection_note;
+  OrthonormalModes modes;
+  Eigen::VectorXd damping_ratios;      ///< ζ_i of the elastic modes (both models)
+  DampingModel damping;
+  Eigen::MatrixXd interface_shapes;    ///< 6·nb × ne: (t, θ) of every interface per mode
+  InertiaInvariants invariants;        ///< of the elastic modes Φ = T X
+  ReductionCertificate certificate;
+  Eigen::MatrixXd mesh_shapes;         ///< 3n × ne, empty unless kept
+  int num_fe_dofs{0};
+  PhaseTimes times;
+};
+
+/// Runs the job on an assembled part.
+/// @throws InputError / NumericalError as the steps do (see craig_bampton.h, interface.h).
+ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
+                       const IsotropicMaterial& material, const ReductionJob& job,
+                       const ProgressFn& progress = {});
+
+}  // namespace emb

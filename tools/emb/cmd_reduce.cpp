@@ -1,0 +1,281 @@
+// emb reduce PART: Craig–Bampton reduction of a solid part to its interfaces, orthonormalised,
+// with inertia invariants and a reduction certificate; the body file (HDF5) for multibody runs.
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "libemb/cms/body_file.h"
+#include "libemb/cms/reduction.h"
+#include "libemb/common/error.h"
+#include "libemb/common/timer.h"
+#include "libemb/fe/assembly.h"
+#include "libemb/mesh/gmsh_reader.h"
+#include "tools/emb/commands.h"
+#include "tools/emb/common_options.h"
+#include "tools/emb/progress_display.h"
+
+namespace emb::cli {
+namespace {
+
+struct ReduceCommand {
+  PartOptions part;
+  OutputOptions out;
+  std::vector<std::string> interfaces;
+  bool free_free{false};
+  int num_modes{-1};
+  double fmax_hz{0.0};
+  double band_hz{0.0};
+  double band_factor{2.0};
+  double shift_hz{-1.0};
+  double tolerance{1e-10};
+  int subspace{0};
+  double damping_ratio{0.01};
+  std::vector<double> rayleigh;
+  bool no_reference{false};
+  bool no_static_check{false};
+  bool no_mesh_shapes{false};
+  bool no_xdmf{false};
+  bool allow_failed_certificate{false};
+  std::string output;
+
+  std::string OutputPath() const {
+    if (!output.empty()) return output;
+    return std::filesystem::path(part.file).stem().string() + "_body.h5";
+  }
+
+  ReductionJob Job(const Mesh& mesh) const {
+    ReductionJob job;
+    const int selections = (num_modes >= 0) + (fmax_hz > 0) + (band_hz > 0);
+    EMB_THROW_IF(selections > 1, "give one of --modes, --fmax, --band, got " << selections);
+    ModeSelection& sel = job.reduction.selection;
+    if (fmax_hz > 0) {
+      sel.kind = ModeSelection::Kind::kCutoff;
+      sel.fmax_hz = fmax_hz;
+    } else if (band_hz > 0) {
+      sel.kind = ModeSelection::Kind::kBand;
+      sel.fmax_hz = band_hz;
+      sel.band_factor = band_factor;
+    } else {
+      sel.kind = ModeSelection::Kind::kCount;
+      sel.count = num_modes >= 0 ? num_modes : ModeSelection().count;
+    }
+    job.reduction.shift_hz = shift_hz;
+    job.reduction.solver.tolerance = tolerance;
+    job.reduction.solver.subspace = subspace;
+    job.certificate.solver.tolerance = tolerance;
+    job.certificate.reference = !no_reference;
+    job.certificate.static_check = !no_static_check;
+    if (sel.kind != ModeSelection::Kind::kCount) job.certificate.fmax_hz = sel.fmax_hz;
+    if (!rayleigh.empty()) {
+      EMB_THROW_IF(rayleigh.size() != 2, "--rayleigh: expected ALPHA,BETA, got "
+                                             << rayleigh.size() << " values");
+      job.damping.kind = DampingModel::Kind::kRayleigh;
+      job.damping.alpha = rayleigh[0];
+      job.damping.beta = rayleigh[1];
+    } else {
+      job.damping.ratio = damping_ratio;
+    }
+    job.keep_mesh_shapes = !no_mesh_shapes;
+    if (free_free) {
+      EMB_THROW_IF(!interfaces.empty(), "--free-free and --interface exclude each other");
+    } else if (!interfaces.empty()) {
+      for (const auto& s : interfaces) job.interfaces.push_back(InterfaceSpec::Parse(s));
+    } else {
+      job.interfaces = DefaultInterfaces(mesh);
+    }
+    return job;
+  }
+
+  void Run() const {
+    part.material.Validate();
+    EMB_THROW_IF(fmax_hz < 0 || band_hz < 0, "--fmax/--band: expected a positive frequency");
+    const std::string h5_path = OutputPath();
+    {
+      const auto dir = std::filesystem::path(h5_path).parent_path();
+      std::error_code ec;
+      EMB_THROW_IF(!dir.empty() && !std::filesystem::is_directory(dir, ec),
+                   "-o '" << h5_path << "': directory '" << dir.string() << "' does not exist");
+    }
+    const ProgressFn progress = MakeProgressDisplay(out.quiet);
+    PhaseTimes times;
+    Stopwatch sw;
+    const Mesh mesh = ReadMesh(part.file, part.Meshing(), progress);
+    times.Add("mesh", sw.seconds());
+    const ReductionJob job = Job(mesh);
+    // Resolve the interfaces before the expensive part: a wrong name fails at once.
+    ResolveInterfaces(mesh, job.interfaces);
+
+    sw.Restart();
+    const SystemMatrices sys = AssembleSystem(mesh, part.material, progress);
+    times.Add("assembly", sw.seconds());
+    const ReducedBody body = ReduceBody(mesh, sys, part.material, job, progress);
+    for (const auto& p : body.times.phases) times.Add(p.first, p.second);
+    FinishProgressLine();
+
+    const ReductionCertificate& ct = body.certificate;
+    Table itf_table("Interfaces", {"name", "coupling", "x", "y", "z", "point", "nodes"},
+                    {"interface", "coupling", "x [m]", "y [m]", "z [m]", "reference point", "nodes"});
+    for (const auto& itf : body.interfaces)
+      itf_table.AddRow({itf.name, std::string(Name(itf.coupling)), itf.point.x(), itf.point.y(),
+                        itf.point.z(), itf.point_source, static_cast<long long>(itf.nodes.size())});
+    Table freq("Free-free frequencies: reduced vs full FE (MAC-paired)",
+               {"mode", "full_hz", "reduced_mode", "reduced_hz", "error_percent", "mac"},
+               {"mode", "full FE [Hz]", "reduced mode", "reduced [Hz]", "error [%]", "MAC"});
+    for (const auto& p : ct.pairs) {
+      if (p.paired)
+        freq.AddRow({static_cast<long long>(p.full_mode), p.full_hz,
+                     static_cast<long long>(p.reduced_mode), p.reduced_hz,
+                     100.0 * p.relative_error, p.mac});
+      else
+        freq.AddRow({static_cast<long long>(p.full_mode), p.full_hz, std::string("-"),
+                     std::string("not represented"), std::string("-"), p.mac});
+    }
+    Table modes("Elastic modes of the reduced body", {"mode", "frequency_hz"},
+                {"mode", "frequency [Hz]"});
+    for (int i = 0; i < body.modes.frequencies_hz.size(); ++i)
+      modes.AddRow({static_cast<long long>(i + 1), body.modes.frequencies_hz[i]});
+
+    Summary cert("Reduction certificate");
+    cert.Add("passed", "passed", ct.passed());
+    for (size_t i = 0; i < ct.failures.size(); ++i)
+      cert.Add("failure_" + std::to_string(i + 1), "FAILED", ct.failures[i]);
+    cert.Add("mass_kg", "mass full / reduced [kg]",
+             std::to_string(ct.full.mass) + " / " + std::to_string(ct.reduced.mass));
+    cert.Add("mass_error", "mass rel. error (limit 1e-10)", ct.mass_error);
+    cert.Add("com_error", "centre of mass rel. error (limit 1e-10)", ct.com_error);
+    cert.Add("inertia_error", "inertia tensor rel. error (limit 1e-10)", ct.inertia_error);
+    cert.Add("quadrature_mass_error", "mass vs mesh quadrature rel. error", ct.quadrature_mass_error);
+    cert.Add("num_near_zero", "rigid-body modes (expected 6)", static_cast<long long>(ct.num_near_zero));
+    cert.Add("max_rigid_hz", "largest rigid-body frequency [Hz]",
+             ct.rigid_hz.size() ? ct.rigid_hz.cwiseAbs().maxCoeff() : 0.0);
+    cert.Add("orthonormality_error", "M-orthonormality error", ct.orthonormality_error);
+    cert.Add("k_diagonality_error", "K-diagonality error", ct.k_diagonality_error);
+    cert.Add("rigid_stiffness", "rigid-motion strain residual", ct.rigid_stiffness);
+    if (ct.reference_run) {
+      cert.Add("fmax_hz", "compared up to [Hz]", ct.fmax_hz);
+      cert.Add("max_frequency_error", "max frequency error [%]", 100.0 * ct.max_frequency_error);
+      cert.Add("min_mac", "min MAC (paired)", ct.min_mac);
+      cert.Add("unrepresented", "full modes not represented", static_cast<long long>(ct.num_unrepresented));
+      cert.Add("reference_log", "full FE eigen-solve", ct.reference_log);
+    } else {
+      cert.Add("reference", "full FE comparison", std::string("not run"));
+    }
+    cert.Add("static_note", "static check", ct.static_note);
+    if (ct.static_run) cert.Add("static_error", "static rel. error (limit 1e-8)", ct.static_error);
+    cert.Add("reduction_log", "fixed-interface eigen-solve", ct.reduction_log);
+    if (!body.free_free) {
+      cert.Add("constraint_mode_residual", "constraint-mode residual (limit 1e-10)",
+               ct.constraint_mode_residual);
+      cert.Add("constraint_mode_iterations", "constraint-mode refinement steps",
+               static_cast<long long>(ct.constraint_mode_iterations));
+    }
+
+    Summary s("Craig-Bampton reduction of " + mesh.source);
+    s.Add("mesh", "mesh", mesh.Summary());
+    s.Add("dofs", "FE degrees of freedom", sys.num_dofs());
+    s.Add("basis", "basis", body.free_free ? std::string("free-free (no interfaces)")
+                                           : std::string("Craig-Bampton"));
+    s.Add("selection", "selection", body.selection_note);
+    s.Add("boundary_coordinates", "interface coordinates", static_cast<long long>(body.num_boundary));
+    s.Add("fixed_interface_modes", "fixed-interface modes kept",
+          static_cast<long long>(body.fixed_interface_hz.size()));
+    s.Add("elastic_modes", "elastic modes", static_cast<long long>(body.modes.frequencies_hz.size()));
+    s.Add("dropped", "dependent vectors dropped", static_cast<long long>(body.modes.num_dropped));
+    s.Add("damping", "damping", body.damping.Describe());
+    for (const auto& [name, secs] : times.phases) s.Add("seconds_" + name, "time " + name + " [s]", secs);
+    s.Add("seconds_total", "time total [s]", times.Total());
+    s.Add("peak_memory_mb", "peak memory [MB]", PeakResidentBytes() / 1e6);
+
+    const bool write = ct.passed() || allow_failed_certificate;
+    if (write) {
+      const std::string xdmf =
+          no_xdmf || no_mesh_shapes ? "" : std::filesystem::path(h5_path).replace_extension(".xdmf").string();
+      BodyFileInfo info;
+      info.provenance = {CommandLine(), part.file, sys.mesh_hash, part.Describe()};
+      info.material = part.material;
+      for (const auto& spec : job.interfaces)
+        info.interfaces += (info.interfaces.empty() ? "" : "; ") + spec.ToString();
+      info.selection = job.reduction.selection.Describe();
+      info.shift_hz = shift_hz;
+      Stopwatch ws;
+      WriteBodyFile(h5_path, xdmf, body, info, &mesh);
+      s.Add("seconds_write", "time write [s]", ws.seconds());
+      s.Add("output", "written", h5_path + (xdmf.empty() ? "" : " and " + xdmf));
+    }
+    if (out.json) {
+      PrintJson({{"summary", s.ToJson()},
+                 {"interfaces", itf_table.ToJson()},
+                 {"modes", modes.ToJson()},
+                 {"comparison", freq.ToJson()},
+                 {"certificate", cert.ToJson()}});
+    } else {
+      itf_table.Print(std::cout);
+      std::cout << "\n";
+      modes.Print(std::cout);
+      std::cout << "\n";
+      if (ct.reference_run) {
+        freq.Print(std::cout);
+        std::cout << "\n";
+      }
+      cert.Print(std::cout);
+      std::cout << "\n";
+      s.Print(std::cout);
+    }
+    if (!ct.passed())
+      EMB_THROW(NumericalError, "the reduction certificate failed: "
+                                    << ct.failures.front()
+                                    << (write ? "" : " (no body file written; "
+                                                     "--allow-failed-certificate writes it anyway)"));
+  }
+};
+
+}  // namespace
+
+void RegisterReduceCommand(CLI::App& app) {
+  auto st = std::make_shared<ReduceCommand>();
+  CLI::App* cmd = app.add_subcommand(
+      "reduce",
+      "Craig-Bampton reduction of a part to its interfaces (RBE2/RBE3 reference nodes), "
+      "orthonormalised, with inertia invariants and a reduction certificate; writes the body "
+      "file (HDF5) that multibody runs use");
+  st->part.Register(*cmd);
+  cmd->add_option("-i,--interface", st->interfaces,
+                  "Interface NAME[:rbe2|rbe3][@x,y,z] (repeatable): a surface physical group "
+                  "condensed to one 6-DOF node; rbe3 (weighted average, default) or rbe2 (rigid "
+                  "spider); the point defaults to the cylinder axis at mid-width or the plane "
+                  "centroid. Default: main_journal_*, crankpin_* rbe3; flange, nose rbe2; "
+                  "tube end_a, end_b rbe2");
+  cmd->add_flag("--free-free", st->free_free,
+                "No interfaces: a basis of the six rigid motions and free-free elastic modes");
+  cmd->add_option("-n,--modes", st->num_modes,
+                  "Keep this many fixed-interface modes (default 100 unless --fmax/--band)");
+  cmd->add_option("--fmax", st->fmax_hz, "Keep all fixed-interface modes up to this frequency [Hz]");
+  cmd->add_option("--band", st->band_hz,
+                  "Highest frequency of interest [Hz]: keep fixed-interface modes up to "
+                  "band-factor x this, and compare free-free frequencies up to it");
+  cmd->add_option("--band-factor", st->band_factor, "Multiple of --band kept")->capture_default_str();
+  cmd->add_option("--shift-hz", st->shift_hz, "Lanczos shift [Hz] (negative: lowest modes)")
+      ->capture_default_str();
+  cmd->add_option("--tol", st->tolerance, "Lanczos relative tolerance")->capture_default_str();
+  cmd->add_option("--ncv", st->subspace, "Lanczos subspace size (0 = automatic)")->capture_default_str();
+  cmd->add_option("--damping-ratio", st->damping_ratio, "Modal damping ratio of every elastic mode")
+      ->capture_default_str();
+  cmd->add_option("--rayleigh", st->rayleigh, "Rayleigh damping ALPHA,BETA [1/s, s] instead of modal")
+      ->delimiter(',');
+  cmd->add_flag("--no-reference", st->no_reference,
+                "Skip the full FE free-free comparison in the certificate (saves one eigen-solve)");
+  cmd->add_flag("--no-static-check", st->no_static_check,
+                "Skip the static exactness check in the certificate (saves one factorisation)");
+  cmd->add_flag("--no-mesh-shapes", st->no_mesh_shapes,
+                "Do not store the mesh and the mode shapes at all nodes (smaller file, no animation)");
+  cmd->add_flag("--no-xdmf", st->no_xdmf, "Do not write the .xdmf file next to the .h5");
+  cmd->add_flag("--allow-failed-certificate", st->allow_failed_certificate,
+                "Write the body file even if the certificate fails (the exit code is still 3)");
+  cmd->add_option("-o,--output", st->output,
+                  "Body file (default: <part name>_body.h5 in the current directory)");
+  st->out.Register(*cmd);
+  cmd->callback([st] { st->Run(); });
+}
+
+}  // namespace emb::cli
