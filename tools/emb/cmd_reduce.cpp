@@ -30,6 +30,7 @@ struct ReduceCommand {
   double shift_hz{-1.0};
   double tolerance{1e-10};
   int subspace{0};
+  int max_restarts{1000};
   double damping_ratio{0.01};
   std::vector<double> rayleigh;
   bool no_reference{false};
@@ -63,6 +64,7 @@ struct ReduceCommand {
     job.reduction.shift_hz = shift_hz;
     job.reduction.solver.tolerance = tolerance;
     job.reduction.solver.subspace = subspace;
+    job.reduction.solver.max_restarts = max_restarts;
     job.certificate.solver.tolerance = tolerance;
     job.certificate.reference = !no_reference;
     job.certificate.static_check = !no_static_check;
@@ -259,6 +261,8 @@ void RegisterReduceCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--tol", st->tolerance, "Lanczos relative tolerance")->capture_default_str();
   cmd->add_option("--ncv", st->subspace, "Lanczos subspace size (0 = automatic)")->capture_default_str();
+  cmd->add_option("--max-restarts", st->max_restarts, "Spectra's Lanczos restart limit")
+      ->capture_default_str();
   cmd->add_option("--damping-ratio", st->damping_ratio, "Modal damping ratio of every elastic mode")
       ->capture_default_str();
   cmd->add_option("--rayleigh", st->rayleigh, "Rayleigh damping ALPHA,BETA [1/s, s] instead of modal")

@@ -1,0 +1,116 @@
+// Body file: HDF5 round trip bit for bit, a tampered file refused, a stale basis refused.
+
+#include "libemb/cms/body_file.h"
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <filesystem>
+
+#include "libemb/common/error.h"
+#include "libemb/fe/assembly.h"
+#include "libemb/mesh/box_mesh.h"
+
+namespace emb {
+namespace {
+
+struct Fixture {
+  Mesh mesh = MakeBoxMesh({0.6, 0.06, 0.04}, {6, 1, 1}, CellType::kHex20);
+  SystemMatrices sys = AssembleSystem(mesh, IsotropicMaterial{});
+  ReducedBody body;
+  BodyFileInfo info;
+  Fixture() {
+    ReductionJob job;
+    job.interfaces = {InterfaceSpec::Parse("x0:rbe2"), InterfaceSpec::Parse("x1:rbe3")};
+    job.reduction.selection.count = 4;
+    job.certificate.reference = false;
+    body = ReduceBody(mesh, sys, IsotropicMaterial{}, job);
+    info.provenance = {"test", "box", sys.mesh_hash, "order=2"};
+    info.interfaces = "x0:rbe2; x1:rbe3";
+    info.selection = job.reduction.selection.Describe();
+  }
+};
+
+std::string TempPath(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("emb_body_" + name)).string();
+}
+
+template <typename A, typename B>
+bool Identical(const A& a, const B& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * a.size()) == 0;
+}
+
+TEST(BodyFile, RoundTripsBitForBit) {
+  const Fixture f;
+  const std::string path = TempPath("roundtrip.h5");
+  WriteBodyFile(path, "", f.body, f.info, &f.mesh);
+  BodyFileInfo info;
+  const ReducedBody b = ReadBodyFile(path, &info);
+  EXPECT_TRUE(Identical(b.K, f.body.K));
+  EXPECT_TRUE(Identical(b.M, f.body.M));
+  EXPECT_TRUE(Identical(b.D, f.body.D));
+  EXPECT_TRUE(Identical(b.modes.elastic, f.body.modes.elastic));
+  EXPECT_TRUE(Identical(b.modes.frequencies_hz, f.body.modes.frequencies_hz));
+  EXPECT_TRUE(Identical(b.interface_shapes, f.body.interface_shapes));
+  EXPECT_TRUE(Identical(b.invariants.Ibar, f.body.invariants.Ibar));
+  for (int k = 0; k < 9; ++k) EXPECT_TRUE(Identical(b.invariants.Sbar[k], f.body.invariants.Sbar[k]));
+  EXPECT_EQ(b.invariants.mass, f.body.invariants.mass);
+  ASSERT_EQ(b.interfaces.size(), 2u);
+  EXPECT_EQ(b.interfaces[1].name, "x1");
+  EXPECT_EQ(b.interfaces[1].coupling, Coupling::kRbe3);
+  EXPECT_EQ(b.interfaces[1].point, f.body.interfaces[1].point);
+  EXPECT_EQ(b.interfaces[1].nodes, f.body.interfaces[1].nodes);
+  EXPECT_EQ(info.provenance.mesh_hash, f.sys.mesh_hash);
+  EXPECT_EQ(info.material.youngs_modulus, IsotropicMaterial{}.youngs_modulus);
+  EXPECT_EQ(b.damping.kind, DampingModel::Kind::kModal);
+  std::filesystem::remove(path);
+}
+
+TEST(BodyFile, RefusesATamperedFile) {
+  const Fixture f;
+  const std::string path = TempPath("tampered.h5");
+  WriteBodyFile(path, "", f.body, f.info, nullptr);
+  {  // Change one stiffness entry in place, as an editor (or a disk error) would.
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    const hid_t ds = H5Dopen2(file, "/reduced/K", H5P_DEFAULT);
+    const int n = static_cast<int>(f.body.K.rows());
+    std::vector<double> k(std::size_t(n) * n);
+    ASSERT_GE(H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, k.data()), 0);
+    k[n + 1] *= 1.0 + 1e-12;
+    ASSERT_GE(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, k.data()), 0);
+    H5Dclose(ds);
+    H5Fclose(file);
+  }
+  try {
+    ReadBodyFile(path);
+    FAIL() << "a tampered file was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("content digest"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}
+
+TEST(BodyFile, RefusesAStaleBasisAndOtherFiles) {
+  const Fixture f;
+  const std::string path = TempPath("stale.h5");
+  WriteBodyFile(path, "", f.body, f.info, nullptr);
+  BodyFileInfo info;
+  ReadBodyFile(path, &info);
+  EXPECT_NO_THROW(CheckBodyProvenance(path, info, f.sys.mesh_hash));
+  const Mesh other = MakeBoxMesh({0.6, 0.06, 0.05}, {6, 1, 1}, CellType::kHex20);
+  try {
+    CheckBodyProvenance(path, info, MeshHash(other));
+    FAIL() << "a stale basis was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("stale basis"), std::string::npos);
+  }
+  IsotropicMaterial aluminium{70e9, 0.33, 2700.0, "aluminium"};
+  EXPECT_THROW(CheckBodyProvenance(path, info, f.sys.mesh_hash, &aluminium), InputError);
+  EXPECT_THROW(ReadBodyFile(TempPath("missing.h5")), InputError);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace emb

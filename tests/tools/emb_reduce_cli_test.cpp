@@ -1,0 +1,111 @@
+// emb reduce and emb inspect as a user meets them: the body file and its certificate, JSON,
+// and for every kind of bad input a message naming the problem, a non-zero exit and no file.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/cli_fixture.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class ReduceCli : public emb::test::CliTest {
+ protected:
+  void SetUp() override {
+    CliTest::SetUp();
+    // OCC box faces: 1 x = 0, 2 x = L, 3 y = 0, ...
+    std::ofstream(dir_ / "bar.geo") << R"(SetFactory("OpenCASCADE");
+DefineConstant[ h = {0.05, Name "Parameters/h"}, L = {0.5, Name "Parameters/L"} ];
+Box(1) = {0, 0, 0, L, 0.05, 0.05};
+Physical Surface("x0") = {1};
+Physical Surface("x1") = {2};
+Physical Surface("y0") = {3};
+Physical Volume("bar") = {1};
+Mesh.MeshSizeMax = h;
+)";
+  }
+  void ExpectFailure(const std::string& args, int code, std::initializer_list<std::string> words) {
+    const emb::test::CliResult r = Run(args);
+    EXPECT_EQ(r.exit_code, code) << args << "\n" << r.err;
+    for (const auto& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << args << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out.h5")) << "partial output left by: " << args;
+    EXPECT_FALSE(fs::exists(dir_ / "out.xdmf")) << "partial output left by: " << args;
+  }
+};
+
+TEST_F(ReduceCli, WritesACertifiedBodyThatInspectReads) {
+  const emb::test::CliResult r =
+      Run("reduce bar.geo -i x0:rbe2 -i x1 --modes 6 -o out.h5 --json -q");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["certificate"]["passed"], true);
+  EXPECT_EQ(j["summary"]["boundary_coordinates"], 12);
+  EXPECT_EQ(j["summary"]["fixed_interface_modes"], 6);
+  EXPECT_EQ(j["interfaces"].size(), 2u);
+  EXPECT_EQ(j["interfaces"][1]["point"], "plane centroid");
+  EXPECT_LE(j["certificate"]["static_error"].get<double>(), 1e-8);
+  EXPECT_TRUE(fs::exists(dir_ / "out.h5"));
+  EXPECT_TRUE(fs::exists(dir_ / "out.xdmf"));
+
+  const emb::test::CliResult text = Run("inspect out.h5");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("content digest (verified)"), std::string::npos);
+  const emb::test::CliResult js = Run("inspect out.h5 --json");
+  ASSERT_EQ(js.exit_code, 0) << js.err;
+  const auto k = nlohmann::json::parse(js.out);
+  EXPECT_EQ(k["modes"].size(), 12u);  // 12 interface + 6 modal − 6 rigid coordinates
+  EXPECT_EQ(k["summary"]["reduced_coordinates"], 18);
+  const emb::test::CliResult stale = Run("inspect out.h5 --expect-mesh-hash 0123456789abcdef");
+  EXPECT_EQ(stale.exit_code, 1);
+  EXPECT_NE(stale.err.find("stale basis"), std::string::npos) << stale.err;
+}
+
+TEST_F(ReduceCli, WithoutInterfacesFallsBackToFreeFree) {
+  const emb::test::CliResult r = Run("reduce bar.geo --modes 5 -o out.h5 --json -q --no-mesh-shapes");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NE(j["summary"]["basis"].get<std::string>().find("free-free"), std::string::npos);
+  EXPECT_EQ(j["summary"]["elastic_modes"], 5);
+  EXPECT_TRUE(fs::exists(dir_ / "out.h5"));
+  EXPECT_FALSE(fs::exists(dir_ / "out.xdmf"));
+}
+
+TEST_F(ReduceCli, HelpDocumentsTheOptions) {
+  const emb::test::CliResult r = Run("reduce --help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* opt : {"--interface", "--modes", "--fmax", "--band", "--band-factor",
+                          "--damping-ratio", "--rayleigh", "--no-reference", "--free-free", "--json"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+TEST_F(ReduceCli, BadInputsFailCleanly) {
+  ExpectFailure("reduce bar.geo -i journal -o out.h5 -q", 1, {"journal", "x0", "x1"});
+  ExpectFailure("reduce bar.geo -i bar -o out.h5 -q", 1, {"expected a surface group"});
+  ExpectFailure("reduce bar.geo -i x0 -i y0 -o out.h5 -q", 1, {"overlap"});
+  ExpectFailure("reduce bar.geo -i x0:rbe5 -o out.h5 -q", 1, {"NAME[:rbe2|rbe3][@x,y,z]"});
+  ExpectFailure("reduce bar.geo -i x0 -i x0 -o out.h5 -q", 1, {"given twice"});
+  ExpectFailure("reduce bar.geo -i x0 --modes 5 --fmax 100 -o out.h5 -q", 1, {"one of --modes"});
+  ExpectFailure("reduce bar.geo -i x0 --modes 100000 -o out.h5 -q", 1, {"degrees of freedom"});
+  ExpectFailure("reduce bar.geo -i x0 --free-free -o out.h5 -q", 1, {"--free-free"});
+  ExpectFailure("reduce bar.geo -i x0 --rayleigh 1 -o out.h5 -q", 1, {"--rayleigh"});
+  ExpectFailure("reduce bar.geo -i x0 --damping-ratio -1 -o out.h5 -q", 1, {"damping ratio"});
+  ExpectFailure("reduce bar.geo -i x0 -o nodir/out.h5 -q", 1, {"nodir"});
+  ExpectFailure("reduce missing.msh -o out.h5 -q", 1, {"missing.msh"});
+  ExpectFailure("inspect out.h5", 1, {"out.h5", "no such file"});
+  // A non-converged eigen-solve is a numerical failure (exit 3) with the counts.
+  ExpectFailure("reduce bar.geo -i x0 --modes 30 --ncv 33 --max-restarts 1 --tol 1e-15 -o out.h5 -q",
+                3, {"converged", "of"});
+}
+
+TEST_F(ReduceCli, InspectRefusesOtherFiles) {
+  ASSERT_EQ(Run("modes bar.geo --modes 7 -o modes.h5 -q").exit_code, 0);
+  const emb::test::CliResult r = Run("inspect modes.h5");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("expected format 'emb.body'"), std::string::npos) << r.err;
+}
+
+}  // namespace
