@@ -41,10 +41,20 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
 
   sw.Restart();
   if (progress) progress("reduced matrices", 0.0);
-  // K T in extended precision: rigid-like columns have K T ≈ 0 from cancelling large terms.
-  const Eigen::MatrixXd KT = MultiplyExtended(sys.K, basis.T), MT = sys.M * basis.T;
-  body.K = TransposeProductExtended(basis.T, KT);
-  body.M = basis.T.transpose() * MT;
+  // The constraint-mode block Ψᵀ K Ψ in extended precision: rigid-like columns have K ψ ≈ 0
+  // from cancelling large terms. The blocks with the fixed-interface modes (Ψᵀ K Φ = 0 and
+  // Φᵀ K Φ = Λ in exact arithmetic) carry no such cancellation and are formed in double.
+  const int nb = basis.num_boundary, nr = static_cast<int>(basis.T.cols());
+  const auto Tb = basis.T.leftCols(nb);
+  const auto Tm = basis.T.rightCols(nr - nb);
+  const Eigen::MatrixXd KTb = MultiplyExtended(sys.K, Tb);
+  const Eigen::MatrixXd KTm = sys.K * Tm;
+  body.K.resize(nr, nr);
+  body.K.topLeftCorner(nb, nb) = TransposeProductExtended(Tb, KTb);
+  body.K.topRightCorner(nb, nr - nb) = Tb.transpose() * KTm;
+  body.K.bottomLeftCorner(nr - nb, nb) = body.K.topRightCorner(nb, nr - nb).transpose();
+  body.K.bottomRightCorner(nr - nb, nr - nb) = Tm.transpose() * KTm;
+  body.M = basis.T.transpose() * (sys.M * basis.T);
   body.K = 0.5 * (body.K + body.K.transpose()).eval();
   body.M = 0.5 * (body.M + body.M.transpose()).eval();
   body.times.Add("reduced matrices", sw.seconds());
