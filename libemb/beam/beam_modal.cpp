@@ -61,10 +61,20 @@ BeamModes CalcBeamModes(const BeamSystem& sys, const BeamModalOptions& o) {
   const int m = o.num_modes > 0 ? std::min<int>(o.num_modes, finite.size()) : finite.size();
   r.eigenvalues.resize(m);
   Eigen::MatrixXd Phi(n, m);
+  const Eigen::MatrixXd K_abs = K.cwiseAbs(), M_abs = M.cwiseAbs();
   for (int k = 0; k < m; ++k) {
-    r.eigenvalues[k] = sigma + 1.0 / mu[finite[k]];
+    double lambda = sigma + 1.0 / mu[finite[k]];
     Eigen::VectorXd v = ges.eigenvectors().col(finite[k]);
-    Phi.col(k) = v / std::sqrt(v.dot(M * v));
+    v /= std::sqrt(v.dot(M * v));
+    // σ + 1/μ is accurate to ~ε(λ+|σ|)²/|σ| (good near σ); the Rayleigh quotient φᵀKφ to
+    // its rounding error ~ε(|φ|ᵀ|K||φ| + |λ||φ|ᵀ|M||φ|) (good far above σ, where the first
+    // loses digits). Take the better of the two.
+    const Eigen::VectorXd va = v.cwiseAbs();
+    const double err_shift = (lambda - sigma) * (lambda - sigma) / std::abs(sigma);
+    const double err_rayleigh = va.dot(K_abs * va) + std::abs(lambda) * va.dot(M_abs * va);
+    if (err_rayleigh < err_shift) lambda = v.dot(K * v);
+    r.eigenvalues[k] = lambda;
+    Phi.col(k) = v;
   }
   r.frequencies_hz = r.eigenvalues.unaryExpr([](double l) { return FrequencyHz(l); });
   r.num_rigid_modes = static_cast<int>((r.eigenvalues.array().abs() < r.rigid_threshold).count());

@@ -7,10 +7,11 @@
 /// singular M (an unknown without inertia) is factorised: with σ < 0, A = K − σM is positive
 /// definite whenever every unknown has stiffness or mass, and
 ///   M φ = μ A φ,   λ = σ + 1/μ
-/// is solved by Eigen's GeneralizedSelfAdjointEigenSolver (Cholesky of A). Eigenvalues near σ
-/// come out with relative accuracy ~ε(λ+|σ|)²/(|σ|λ), so |σ| of the order of the lowest
-/// elastic eigenvalue is best (default: 10 Hz). μ = 0 (massless directions, λ = ∞) is dropped
-/// and counted. Exactly degenerate pairs (bending in two planes) are kept, never merged.
+/// is solved by Eigen's GeneralizedSelfAdjointEigenSolver (Cholesky of A). σ + 1/μ is accurate
+/// to ~ε(λ+|σ|)²/|σ| — to round-off near σ (default 10 Hz) but not far above it, where the
+/// Rayleigh quotient φᵀKφ/φᵀMφ (rounding error ~ε|φ|ᵀ(|K| + |λ||M|)|φ|) is better: each
+/// eigenvalue is taken from whichever is more accurate. μ = 0 (massless directions, λ = ∞) is
+/// dropped and counted. Exactly degenerate pairs (bending in two planes) are kept, never merged.
 /// Every pair is checked: backward error η = ‖Kφ − λMφ‖ / ((‖K‖₁ + |λ|‖M‖₁)‖φ‖) and
 /// ‖ΦᵀMΦ − I‖_max.
 

@@ -71,6 +71,40 @@ double BrentRoot(F&& f, double a, double b, double fa, double fb) {
   return b;
 }
 
+// A root of multiplicity k (or one without a sign change) in the tiny bracket [a, b]: the
+// k-th smallest singular value of the scaled B(λ) vanishes there and grows linearly away
+// from it (a V, unlike det B which only touches zero), so a golden-section search for its
+// minimum finds the root to round-off. The scaling is frozen at the midpoint.
+double SingularValueMinimum(const TmmChain& chain, double a, double b, int k, TmmResult& r) {
+  const TmmChain::Scaling s = chain.CalcScaling(chain.CalcBoundaryMatrix(0.5 * (a + b)));
+  auto sigma_k = [&](double lambda) {
+    ++r.num_determinant_evaluations;
+    const Eigen::MatrixXd Bs = s.row.asDiagonal() * chain.CalcBoundaryMatrix(lambda) *
+                               s.col.asDiagonal();
+    const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(Bs).singularValues();
+    return sv[std::max<Eigen::Index>(sv.size() - k, 0)];
+  };
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = b - g * (b - a), x2 = a + g * (b - a);
+  double f1 = sigma_k(x1), f2 = sigma_k(x2);
+  for (int it = 0; it < 100 && b - a > 4.0 * kEps * b; ++it) {
+    if (f1 <= f2) {
+      b = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = b - g * (b - a);
+      f1 = sigma_k(x1);
+    } else {
+      a = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = a + g * (b - a);
+      f2 = sigma_k(x2);
+    }
+  }
+  return f1 <= f2 ? x1 : x2;
+}
+
 struct Interval {
   double a, b;  // λ
   int na, nb;   // counts
@@ -111,6 +145,9 @@ TmmResult CalcTmmModes(const TmmChain& chain, const TmmOptions& o) {
                "TMM band end: expected > band start " << o.min_hz << " Hz, got " << o.max_hz);
   EMB_THROW_IF(o.scan_intervals < 1,
                "TMM scan intervals: expected >= 1, got " << o.scan_intervals);
+  EMB_THROW_IF(!(o.cluster_tolerance >= 1e-14 && o.cluster_tolerance < 1e-2),
+               "TMM cluster tolerance: expected 1e-14 <= tol < 1e-2 (relative), got "
+                   << o.cluster_tolerance);
   EMB_THROW_IF(!(std::isfinite(o.zero_frequency_hz) && o.zero_frequency_hz >= 0.0 &&
                  o.zero_frequency_hz < o.max_hz),
                "TMM zero-frequency threshold: expected 0 <= f < band end " << o.max_hz
@@ -177,8 +214,8 @@ TmmResult CalcTmmModes(const TmmChain& chain, const TmmOptions& o) {
                  << ", " << HzOf(iv.b) << "] Hz; ";
       continue;
     }
-    if (iv.da == 0.0) {  // a root exactly at the left end (the count excludes it below a)
-      roots.push_back({iv.a, k, k == 1 ? "brent" : "multiple root"});
+    if (iv.da == 0.0 && k == 1) {  // a root exactly at the left end (not counted below a)
+      roots.push_back({iv.a, k, "brent"});
       continue;
     }
     if (k == 1 && OppositeSigns(iv.da, iv.db)) {
@@ -194,8 +231,8 @@ TmmResult CalcTmmModes(const TmmChain& chain, const TmmOptions& o) {
         continue;
       }
     }
-    if (iv.b - iv.a <= 8.0 * kEps * iv.b) {
-      roots.push_back({0.5 * (iv.a + iv.b), k, k == 1 ? "count bisection" : "multiple root"});
+    if (iv.b - iv.a <= o.cluster_tolerance * iv.b) {
+      roots.push_back({SingularValueMinimum(chain, iv.a, iv.b, k, r), k, "singular-value minimum"});
       continue;
     }
     const double mid = 0.5 * (iv.a + iv.b);

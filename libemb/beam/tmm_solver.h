@@ -10,7 +10,9 @@
 /// interval's midpoint (so it is a polynomial in λ). An interval whose count rises by k ≥ 2
 /// (close or degenerate roots, e.g. the two bending planes of a round shaft, where det B has
 /// a double root and no sign change) is bisected on the count until its pieces hold one
-/// root each, or until it is a few ulps wide: then it is one root of multiplicity k.
+/// root each, or until it is narrower than `cluster_tolerance`·λ: then it is one root of
+/// multiplicity k, located to round-off as the minimum of the k-th smallest singular value
+/// of the scaled B(λ) (which vanishes linearly there, where det B only touches zero).
 /// A root's mode shapes are the right singular vectors of the scaled B(λ) for its k smallest
 /// singular values, propagated along the chain and made M-orthonormal with the lumped mass.
 /// The count makes the search exhaustive: the number of roots returned is N(λ_hi) − N(λ_lo)
@@ -33,6 +35,9 @@ struct TmmOptions {
   double max_hz{0.0};              ///< band end [Hz], > min_hz
   int scan_intervals{200};         ///< grid intervals over the band (uniform in f), ≥ 1
   double zero_frequency_hz{1e-2};  ///< modes below are rigid-body modes, counted only [Hz]
+  /// Roots closer than this (relative, in λ) are one root of higher multiplicity. The count
+  /// is exact well below it (its pivots are ~1e-9 of their scale there, far above round-off).
+  double cluster_tolerance{1e-9};
 };
 
 enum class TmmStatus {
@@ -50,7 +55,7 @@ struct TmmMode {
   double lambda{0.0};      ///< ω² [rad²/s²]
   double frequency_hz{0.0};
   int multiplicity{1};     ///< of the root this mode belongs to
-  std::string refinement;  ///< "brent", "count bisection" or "multiple root"
+  std::string refinement;  ///< "brent" or "singular-value minimum"
   Eigen::MatrixXd motion;  ///< node motions 6 × num_nodes (W), M-orthonormal (lumped M)
   double boundary_residual{0.0};  ///< σ_min/σ_max of the scaled B at the root
 };
