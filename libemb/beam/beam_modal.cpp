@@ -10,14 +10,6 @@
 namespace emb {
 namespace {
 
-Eigen::MatrixXd Select(const Eigen::MatrixXd& A, const std::vector<int>& idx) {
-  const int n = static_cast<int>(idx.size());
-  Eigen::MatrixXd S(n, n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) S(i, j) = A(idx[i], idx[j]);
-  return S;
-}
-
 double NormOne(const Eigen::MatrixXd& A) {
   return A.size() == 0 ? 0.0 : A.cwiseAbs().colwise().sum().maxCoeff();
 }
@@ -35,7 +27,7 @@ BeamModes CalcBeamModes(const BeamSystem& sys, const BeamModalOptions& o) {
   const std::vector<int>& free = sys.free_dofs;
   const int n = static_cast<int>(free.size());
   EMB_THROW_IF(n == 0, "beam modes: every unknown is held by a support; expected free ones");
-  const Eigen::MatrixXd K = Select(sys.K, free), M = Select(sys.M, free);
+  const Eigen::MatrixXd K = sys.K(free, free), M = sys.M(free, free);
   const double sigma = -std::pow(2.0 * M_PI * o.shift_hz, 2);
   r.rigid_threshold = 1e-8 * std::abs(sigma);
 

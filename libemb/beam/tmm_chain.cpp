@@ -24,22 +24,6 @@ std::vector<int> Components(TmmMotion motion) {
   return {};
 }
 
-Eigen::MatrixXd Restrict(const Eigen::MatrixXd& A, const std::vector<int>& idx) {
-  const int n = static_cast<int>(idx.size());
-  Eigen::MatrixXd S(n, n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) S(i, j) = A(idx[i], idx[j]);
-  return S;
-}
-
-Eigen::MatrixXd Restrict(const Eigen::MatrixXd& A, const std::vector<int>& rows,
-                         const std::vector<int>& cols) {
-  Eigen::MatrixXd S(rows.size(), cols.size());
-  for (size_t j = 0; j < cols.size(); ++j)
-    for (size_t i = 0; i < rows.size(); ++i) S(i, j) = A(rows[i], cols[j]);
-  return S;
-}
-
 // Coupling of a symmetric PSD matrix A (blocks of 6 per node) between the components `in`
 // and the others, |A_ij| / √(A_ii A_jj) ≤ 1. Returns the largest and where it is.
 struct Coupling {
@@ -193,15 +177,15 @@ void TmmChain::CheckDecoupled(const BeamModel& model) const {
 void TmmChain::AddPoint(const Matrix6d& stiffness, const Matrix6d& mass) {
   Step s;
   s.kind = Step::kPoint;
-  s.stiffness = Restrict(stiffness, components_);
-  s.mass = Restrict(mass, components_);
+  s.stiffness = stiffness(components_, components_);
+  s.mass = mass(components_, components_);
   steps_.push_back(std::move(s));
 }
 
 void TmmChain::AddField(const TransferMatrix& field) {
   Step s;
   s.kind = Step::kField;
-  s.field = Restrict(field, states_);
+  s.field = field(states_, states_);
   steps_.push_back(std::move(s));
 }
 
@@ -331,11 +315,9 @@ int TmmChain::CountEigenvaluesBelow(double lambda) const {
       prev = nullptr;
       continue;
     }
-    Eigen::MatrixXd S =
-        Restrict(lumped_.K, dofs) - lambda * Restrict(lumped_.M, dofs);
+    Eigen::MatrixXd S = lumped_.K(dofs, dofs) - lambda * lumped_.M(dofs, dofs);
     if (prev) {
-      const Eigen::MatrixXd C = Restrict(lumped_.K, dofs, *prev) -
-                                lambda * Restrict(lumped_.M, dofs, *prev);
+      const Eigen::MatrixXd C = lumped_.K(dofs, *prev) - lambda * lumped_.M(dofs, *prev);
       S -= C * S_inv * C.transpose();
     }
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (S + S.transpose()));

@@ -14,6 +14,7 @@
 #include "libemb/beam/beam_assembly.h"
 #include "libemb/beam/beam_model.h"
 #include "libemb/common/error.h"
+#include "tests/support/beam_models.h"
 
 namespace emb {
 namespace {
@@ -158,21 +159,7 @@ TEST(BeamElement, FrameIsRightHandedAndFollowsTheReference) {
 // load `f_tip` (6 components, W) from K u = f on the free unknowns.
 Vector6d CantileverTip(const BeamSection& section, double L, int n, bool shear,
                        const Vector6d& f_tip) {
-  BeamModel model("cantilever");
-  for (int i = 0; i <= n; ++i)
-    model.AddNode("n" + std::to_string(i), Eigen::Vector3d(L * i / n, 0, 0));
-  for (int i = 0; i < n; ++i) {
-    BeamElement e;
-    e.name = "e" + std::to_string(i);
-    e.node_a = i;
-    e.node_b = i + 1;
-    e.section = section;
-    e.material = kSteel;
-    e.shear_deformable = shear;
-    model.AddElement(e);
-  }
-  Support clamp{"clamp", 0, {true, true, true, true, true, true}};
-  model.AddSupport(clamp);
+  const BeamModel model = test::MakeUniformShaft(L, section, n, shear, /*clamped=*/true);
   const BeamSystem sys = AssembleBeamSystem(model, BeamMassType::kConsistent);
   const int nf = static_cast<int>(sys.free_dofs.size());
   Eigen::MatrixXd K(nf, nf);

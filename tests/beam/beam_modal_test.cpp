@@ -13,6 +13,7 @@
 
 #include "libemb/beam/beam_assembly.h"
 #include "libemb/beam/beam_model.h"
+#include "tests/support/beam_models.h"
 #include "tests/support/timoshenko_beam.h"
 
 namespace emb {
@@ -20,23 +21,8 @@ namespace {
 
 const IsotropicMaterial kSteel{};
 
-// A straight shaft along x of n equal elements, optionally clamped at x = 0.
 BeamModel MakeShaft(double L, const BeamSection& s, int n, bool shear, bool clamped) {
-  BeamModel model("shaft");
-  for (int i = 0; i <= n; ++i)
-    model.AddNode("n" + std::to_string(i), Eigen::Vector3d(L * i / n, 0, 0));
-  for (int i = 0; i < n; ++i) {
-    BeamElement e;
-    e.name = "e" + std::to_string(i);
-    e.node_a = i;
-    e.node_b = i + 1;
-    e.section = s;
-    e.material = kSteel;
-    e.shear_deformable = shear;
-    model.AddElement(e);
-  }
-  if (clamped) model.AddSupport({"clamp", 0, {true, true, true, true, true, true}});
-  return model;
+  return test::MakeUniformShaft(L, s, n, shear, clamped);
 }
 
 // Rayleigh beam (Euler–Bernoulli with rotary inertia ρI), clamped at x = 0 and free at L:
