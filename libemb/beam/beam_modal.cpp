@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "libemb/common/error.h"
@@ -28,7 +29,7 @@ BeamModes CalcBeamModes(const BeamSystem& sys, const BeamModalOptions& o) {
   const int n = static_cast<int>(free.size());
   EMB_THROW_IF(n == 0, "beam modes: every unknown is held by a support; expected free ones");
   const Eigen::MatrixXd K = sys.K(free, free), M = sys.M(free, free);
-  const double sigma = -std::pow(2.0 * M_PI * o.shift_hz, 2);
+  const double sigma = -std::pow(2.0 * std::numbers::pi * o.shift_hz, 2);
   r.rigid_threshold = 1e-8 * std::abs(sigma);
 
   const Eigen::MatrixXd A = K - sigma * M;

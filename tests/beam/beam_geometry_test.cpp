@@ -13,12 +13,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 
 #include "libemb/beam/beam_assembly.h"
 #include "libemb/beam/beam_modal.h"
 #include "libemb/beam/tmm_solver.h"
 #include "libemb/common/error.h"
+#include "tests/support/beam_models.h"
 #include "libemb/fe/mass_properties.h"
 #include "libemb/mesh/gmsh_reader.h"
 #include "tests/support/timoshenko_beam.h"
@@ -186,18 +186,11 @@ std::string WriteGeo(const std::string& name, const std::string& body) {
   return path;
 }
 
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
+using test::InputErrorMessage;
 
 TEST(BeamGeometry, BadGeometryIsNamed) {
   // No beam groups: the solid-only geometry of the single-cylinder crank.
-  std::string m = ErrorOf([] {
+  std::string m = InputErrorMessage([] {
     MakeBeamModelFromGeometry(std::string(EMB_SOURCE_DIR) + "/meshes/crankshaft_1cyl.geo");
   });
   EXPECT_NE(m.find("expected physical volumes named 'beam_segment_*'"), std::string::npos) << m;
@@ -206,7 +199,7 @@ TEST(BeamGeometry, BadGeometryIsNamed) {
   // A parameter the file does not have.
   BeamGenerationOptions o;
   o.parameters = {{"strok", 0.09}};
-  m = ErrorOf([&] { MakeBeamModelFromGeometry(kCrank, o); });
+  m = InputErrorMessage([&] { MakeBeamModelFromGeometry(kCrank, o); });
   EXPECT_NE(m.find("has no parameter 'strok'"), std::string::npos) << m;
 
   // Two shafts with a gap between them.
@@ -215,20 +208,20 @@ TEST(BeamGeometry, BadGeometryIsNamed) {
                                    "Cylinder(2) = {0.12, 0, 0, 0.1, 0, 0, 0.02};\n"
                                    "Physical Volume(\"beam_segment_a\") = {1};\n"
                                    "Physical Volume(\"beam_segment_b\") = {2};\n");
-  m = ErrorOf([&] { MakeBeamModelFromGeometry(gap); });
+  m = InputErrorMessage([&] { MakeBeamModelFromGeometry(gap); });
   EXPECT_NE(m.find("parts 'a' and 'b' do not touch"), std::string::npos) << m;
 
   // A square bar is not a circular beam segment.
   const std::string box = WriteGeo("beam_box.geo",
                                    "Box(1) = {0, 0, 0, 0.2, 0.03, 0.02};\n"
                                    "Physical Volume(\"beam_segment_bar\") = {1};\n");
-  m = ErrorOf([&] { MakeBeamModelFromGeometry(box); });
+  m = InputErrorMessage([&] { MakeBeamModelFromGeometry(box); });
   EXPECT_NE(m.find("segment 'bar': expected a circular prism along x"), std::string::npos) << m;
 
   // The beam-parts geometry is not a solid to mesh.
   MeshingOptions mo;
   mo.parameters = {{"beam_parts", 1.0}};
-  m = ErrorOf([&] { ReadMesh(kCrank, mo); });
+  m = InputErrorMessage([&] { ReadMesh(kCrank, mo); });
   EXPECT_NE(m.find("beam_parts = 1 is for the beam generator"), std::string::npos) << m;
 }
 

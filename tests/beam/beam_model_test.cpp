@@ -9,11 +9,11 @@
 
 #include <Eigen/Dense>
 #include <cmath>
-#include <functional>
 #include <numbers>
 
 #include "libemb/beam/beam_assembly.h"
 #include "libemb/common/error.h"
+#include "tests/support/beam_models.h"
 
 namespace emb {
 namespace {
@@ -30,14 +30,7 @@ BeamElement Element(const std::string& name, int a, int b) {
   return e;
 }
 
-std::string ErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
+using test::InputErrorMessage;
 
 TEST(BeamModel, RigidPartMassGivesTheKineticEnergyOfTheBody) {
   BeamModel model("body");
@@ -130,54 +123,54 @@ TEST(BeamModel, BadInputIsNamed) {
   model.AddNode("a", Eigen::Vector3d::Zero());
   model.AddNode("b", Eigen::Vector3d::Zero());
   model.AddNode("c", Eigen::Vector3d(0.1, 0, 0));
-  std::string m = ErrorOf([&] { model.AddNode("a", Eigen::Vector3d(1, 0, 0)); });
+  std::string m = InputErrorMessage([&] { model.AddNode("a", Eigen::Vector3d(1, 0, 0)); });
   EXPECT_NE(m.find("node 'a' is defined twice"), std::string::npos) << m;
 
   // Zero-length segment.
-  m = ErrorOf([&] { model.AddElement(Element("stub", 0, 1)); });
+  m = InputErrorMessage([&] { model.AddElement(Element("stub", 0, 1)); });
   EXPECT_NE(m.find("beam element 'stub' between nodes 'a' and 'b': length: expected > 0 m, got 0"),
             std::string::npos)
       << m;
   // Offsets that bring the elastic ends together are a zero length too.
   BeamElement folded = Element("folded", 0, 2);
   folded.offset_b_W = Eigen::Vector3d(-0.1, 0, 0);
-  m = ErrorOf([&] { model.AddElement(folded); });
+  m = InputErrorMessage([&] { model.AddElement(folded); });
   EXPECT_NE(m.find("beam element 'folded'"), std::string::npos) << m;
 
   // Non-positive section properties and material.
   BeamElement e = Element("shaft", 0, 2);
   e.section.second_moment_y = -1e-9;
-  m = ErrorOf([&] { model.AddElement(e); });
+  m = InputErrorMessage([&] { model.AddElement(e); });
   EXPECT_NE(m.find("beam element 'shaft': section second moment Iy: expected > 0 m^4, got -1e-09"),
             std::string::npos)
       << m;
   e = Element("shaft", 0, 2);
   e.section.area = 0.0;
-  m = ErrorOf([&] { model.AddElement(e); });
+  m = InputErrorMessage([&] { model.AddElement(e); });
   EXPECT_NE(m.find("section area A: expected > 0 m^2, got 0"), std::string::npos) << m;
   e = Element("shaft", 0, 2);
   e.material.youngs_modulus = -1.0;
   EXPECT_THROW(model.AddElement(e), InputError);
   e = Element("shaft", 0, 7);
-  m = ErrorOf([&] { model.AddElement(e); });
+  m = InputErrorMessage([&] { model.AddElement(e); });
   EXPECT_NE(m.find("beam element 'shaft' end b: node index: expected 0..2, got 7"),
             std::string::npos)
       << m;
   EXPECT_EQ(model.num_elements(), 0);  // nothing half-added
 
   RigidPart p{"web", 0, 0.0};
-  m = ErrorOf([&] { model.AddRigidPart(p); });
+  m = InputErrorMessage([&] { model.AddRigidPart(p); });
   EXPECT_NE(m.find("rigid part 'web': mass: expected > 0 kg, got 0"), std::string::npos) << m;
   p.mass = 1.0;
   p.I_C_W = Eigen::Vector3d(1e-3, -1e-3, 1e-3).asDiagonal();
-  m = ErrorOf([&] { model.AddRigidPart(p); });
+  m = InputErrorMessage([&] { model.AddRigidPart(p); });
   EXPECT_NE(m.find("expected positive semi-definite"), std::string::npos) << m;
   PointSpring k{"bearing", 0};
   k.stiffness[kUy] = -1.0;
   EXPECT_THROW(model.AddSpring(k), InputError);
-  m = ErrorOf([&] { model.AddSupport({"nothing", 0, {}}); });
+  m = InputErrorMessage([&] { model.AddSupport({"nothing", 0, {}}); });
   EXPECT_NE(m.find("support 'nothing': expected at least one fixed unknown"), std::string::npos) << m;
-  m = ErrorOf([&] { model.FindNode("z"); });
+  m = InputErrorMessage([&] { model.FindNode("z"); });
   EXPECT_NE(m.find("has no node 'z'; expected one of: a, b, c"), std::string::npos) << m;
   EXPECT_THROW(BeamModel("negative damping", -0.1), InputError);
   EXPECT_THROW(StiffnessDampingForRatio(0.01, 0.0), InputError);
