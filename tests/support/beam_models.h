@@ -13,12 +13,17 @@ namespace emb::test {
 // elements "e0".., optionally clamped (all six unknowns) at x = 0.
 inline BeamModel MakeUniformShaft(double length, const BeamSection& section, int n,
                                   bool shear_deformable, bool clamped) {
+  // (Built by appending: GCC 12 warns falsely (-Wrestrict) on "literal" + std::to_string().)
+  auto name = [](char prefix, int i) {
+    std::string s(1, prefix);
+    s += std::to_string(i);
+    return s;
+  };
   BeamModel model("shaft");
-  for (int i = 0; i <= n; ++i)
-    model.AddNode("n" + std::to_string(i), Eigen::Vector3d(length * i / n, 0, 0));
+  for (int i = 0; i <= n; ++i) model.AddNode(name('n', i), Eigen::Vector3d(length * i / n, 0, 0));
   for (int i = 0; i < n; ++i) {
     BeamElement e;
-    e.name = "e" + std::to_string(i);
+    e.name = name('e', i);
     e.node_a = i;
     e.node_b = i + 1;
     e.section = section;
