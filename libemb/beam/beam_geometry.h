@@ -60,7 +60,7 @@ struct GeometryPart {
   // Segments only:
   BeamSection section;             ///< fitted circle (solid or hollow)
   double length{0.0};              ///< [m]
-  Eigen::Vector3d axis_point_W{Eigen::Vector3d::Zero()};  ///< (·, y, z) of the segment's axis
+  Eigen::Vector3d axis_point_W{Eigen::Vector3d::Zero()};  ///< mid-length point on its axis [m]
   std::vector<int> elements;       ///< indices into the model's elements
   // Rigid parts only:
   int node{-1};                    ///< the part's node
