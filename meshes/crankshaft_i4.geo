@@ -90,6 +90,12 @@
 //                       not needed with HXT; 1 can end in an error
 //                       "Failed to reach critical value", avoid)     -
 //   order_linear 0      Mesh.SecondOrderLinear (0: mid-nodes on geometry) -
+//   beam_parts  0       1: geometry for the beam generator (libemb/beam):
+//                       the parts are NOT fused and NOT meshable as one
+//                       solid; each part is a named Physical Volume (see
+//                       BEAM PARTS below) and the surface groups and the
+//                       volume "crankshaft" are not defined.  0 (default):
+//                       the fused solid described here, unchanged.    -
 //
 // MESH SIZE vs h (Tet10, measured with HXT, gmsh 4.8.4, 1 thread; Delaunay
 // gives counts within a few % of these, e.g. h = 0.008: 46.2 k nodes):
@@ -112,6 +118,20 @@
 //   Surface "nose"       tag 301: cylindrical surface of the nose stub
 //   Surface "flange"     tag 302: rear face of the flange (plane x = x_end)
 //   Volume  "crankshaft" tag 1  : the single volume
+//
+// BEAM PARTS (only with beam_parts = 1; names exact, tags fixed)
+//   Volume "beam_segment_nose"              1001      nose stub
+//   Volume "beam_segment_main_journal_k"    1010 + k  journal k bearing length
+//   Volume "beam_segment_neck_k_front"      1020 + k  neck in front of journal k
+//   Volume "beam_segment_neck_k_rear"       1030 + k  neck behind journal k
+//   Volume "beam_segment_crankpin_i"        1040 + i  crankpin i (between its webs)
+//   Volume "beam_segment_flange"            1002      flywheel flange
+//   Volume "beam_rigid_web_i_front"         2010 + i  web in front of pin i (with
+//                                                     its counterweight)
+//   Volume "beam_rigid_web_i_rear"          2020 + i  web behind pin i
+//   "beam_segment_*" are prismatic parts along x (beams); "beam_rigid_*"
+//   are rigid lumped parts ("dummy parts", seed section 1.6).  Together they
+//   are exactly the parts the fused solid is made of (they do not overlap).
 // ============================================================================
 
 SetFactory("OpenCASCADE");
@@ -149,7 +169,9 @@ DefineConstant[
   ho_opt     = {0,  Name "Parameters/Mesh/ho_opt",
                 Help "Mesh.HighOrderOptimize: 0 none, 2 elastic+optimization"},
   order_linear = {0, Name "Parameters/Mesh/order_linear", Choices{0, 1},
-                Help "Mesh.SecondOrderLinear: 0 = high-order nodes on the geometry"}
+                Help "Mesh.SecondOrderLinear: 0 = high-order nodes on the geometry"},
+  beam_parts = {0, Name "Parameters/Beam/beam_parts", Choices{0, 1},
+                Help "1: keep the parts separate (no union, no surface groups) and name them for the beam generator"}
 ];
 
 n_cyl = 4;                                   // number of throws
@@ -220,20 +242,32 @@ parts[] = {};
 // nose
 v = newv; Cylinder(v) = {0, 0, 0, nose_l, 0, 0, nose_d / 2};
 parts[] += {v};
+If (beam_parts)
+  Physical Volume("beam_segment_nose", 1001) = {v};
+EndIf
 
 // main journals (bearing length) and their necks towards the webs
 For k In {1 : n_cyl + 1}
   xj = xj1 + (k - 1) * pitch;
   v = newv; Cylinder(v) = {xj - main_l / 2, 0, 0, main_l, 0, 0, Rj};
   parts[] += {v};
+  If (beam_parts)
+    Physical Volume(Sprintf("beam_segment_main_journal_%g", k), 1010 + k) = {v};
+  EndIf
   If (g > 1e-9)
     If (k > 1)          // neck on the front side (towards the nose)
       v = newv; Cylinder(v) = {xj - main_l / 2 - g, 0, 0, g, 0, 0, Rj};
       parts[] += {v};
+      If (beam_parts)
+        Physical Volume(Sprintf("beam_segment_neck_%g_front", k), 1020 + k) = {v};
+      EndIf
     EndIf
     If (k < n_cyl + 1)  // neck on the rear side
       v = newv; Cylinder(v) = {xj + main_l / 2, 0, 0, g, 0, 0, Rj};
       parts[] += {v};
+      If (beam_parts)
+        Physical Volume(Sprintf("beam_segment_neck_%g_rear", k), 1030 + k) = {v};
+      EndIf
     EndIf
   EndIf
 EndFor
@@ -253,22 +287,20 @@ For i In {1 : n_cyl}
   throw_vols[] += {web_vol};
   Rotate {{1, 0, 0}, {0, 0, 0}, phi} { Volume{throw_vols[]}; }
   parts[] += {throw_vols[]};
+  If (beam_parts)
+    Physical Volume(Sprintf("beam_segment_crankpin_%g", i), 1040 + i) = {throw_vols[0]};
+    Physical Volume(Sprintf("beam_rigid_web_%g_front", i), 2010 + i) = {throw_vols[1]};
+    Physical Volume(Sprintf("beam_rigid_web_%g_rear", i), 2020 + i) = {throw_vols[2]};
+  EndIf
 EndFor
 
 // flywheel flange
 v = newv; Cylinder(v) = {x_end - flange_l, 0, 0, flange_l, 0, 0, flange_d / 2};
 parts[] += {v};
-
-// fuse everything into one volume.  Same-domain faces are NOT unified, so
-// the bearing face of a journal stays separate from the faces of its necks.
-Geometry.OCCUnionUnify = 0;
-np = #parts[];
-crank[] = BooleanUnion{ Volume{parts[0]}; Delete; }{ Volume{parts[{1 : np - 1}]}; Delete; };
-If (#crank[] != 1)
-  Error("crankshaft: boolean union gave %g volumes instead of 1", #crank[]);
+If (beam_parts)
+  Physical Volume("beam_segment_flange", 1002) = {v};
 EndIf
 
-// ---------------------------------------------------------------- groups
 // Faces lying in a box; keep only those extending along x (cylindrical
 // faces), dropping planar faces normal to x.  Input cand[], output sel[].
 Macro KeepAxial
@@ -281,6 +313,19 @@ Macro KeepAxial
   EndFor
 Return
 
+// The rest (union, groups) only for the solid: with beam_parts = 1 the parts stay apart.
+If (!beam_parts)
+
+// fuse everything into one volume.  Same-domain faces are NOT unified, so
+// the bearing face of a journal stays separate from the faces of its necks.
+Geometry.OCCUnionUnify = 0;
+np = #parts[];
+crank[] = BooleanUnion{ Volume{parts[0]}; Delete; }{ Volume{parts[{1 : np - 1}]}; Delete; };
+If (#crank[] != 1)
+  Error("crankshaft: boolean union gave %g volumes instead of 1", #crank[]);
+EndIf
+
+// ---------------------------------------------------------------- groups
 For k In {1 : n_cyl + 1}
   xj = xj1 + (k - 1) * pitch;
   cand[] = Surface In BoundingBox{xj - main_l / 2 - eps, -Rj - eps, -Rj - eps,
@@ -322,6 +367,7 @@ EndIf
 Physical Surface("flange", 302) = {sel[]};
 
 Physical Volume("crankshaft", 1) = {crank[]};
+EndIf  // !beam_parts
 
 // ---------------------------------------------------------------- mesh
 Mesh.MeshSizeMax = h;

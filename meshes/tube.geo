@@ -50,6 +50,10 @@
 //                     it.  Costs ~10-30 s of meshing.             -
 //   incomplete 1      Mesh.SecondOrderIncomplete (1: Hex20, 0: Hex27) -
 //   order_linear 0    Mesh.SecondOrderLinear (0: mid-nodes on geometry) -
+//   beam_parts 0      1: also define Physical Volume "beam_segment_tube"
+//                     (tag 1001, the same volumes as "tube") for the beam
+//                     generator (libemb/beam): one prismatic segment along
+//                     x.  Nothing else changes.                      -
 //
 // PHYSICAL GROUPS (names exact, tags fixed; in hex mode the groups hold the
 // four sector faces of each surface)
@@ -82,7 +86,9 @@ DefineConstant[
   incomplete = {1,  Name "Parameters/Mesh/incomplete", Choices{0, 1},
              Help "Mesh.SecondOrderIncomplete: 1 = Hex20, 0 = Hex27"},
   order_linear = {0, Name "Parameters/Mesh/order_linear", Choices{0, 1},
-             Help "Mesh.SecondOrderLinear: 0 = high-order nodes on the geometry"}
+             Help "Mesh.SecondOrderLinear: 0 = high-order nodes on the geometry"},
+  beam_parts = {0,  Name "Parameters/Beam/beam_parts", Choices{0, 1},
+             Help "1: also name the tube volume(s) for the beam generator"}
 ];
 
 Ro = D / 2;
@@ -161,6 +167,9 @@ Physical Surface("end_b", 2) = {end_b[]};
 Physical Surface("outer", 3) = {outer[]};
 Physical Surface("inner", 4) = {inner[]};
 Physical Volume("tube", 1) = {vols[]};
+If (beam_parts)
+  Physical Volume("beam_segment_tube", 1001) = {vols[]};
+EndIf
 
 // ---------------------------------------------------------------- mesh
 If (!hex)

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "libemb/common/error.h"
+#include "libemb/mesh/gmsh_session.h"
 
 namespace emb {
 namespace {
@@ -21,70 +22,6 @@ std::string Lower(std::string s) {
 
 std::string Extension(const std::string& path) {
   return Lower(std::filesystem::path(path).extension().string());
-}
-
-// gmsh is a process-wide singleton: one session at a time, always finalized.
-class GmshSession {
- public:
-  explicit GmshSession(const std::vector<std::string>& args) {
-    std::vector<std::string> all{"emb"};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& a : all) argv.push_back(a.data());
-    gmsh::initialize(static_cast<int>(argv.size()), argv.data(), /*readConfigFiles=*/false);
-    gmsh::option::setNumber("General.Terminal", 0);
-    // Errors are logged, not thrown: gmsh 4.8 throwing from inside its .geo parser leaves the
-    // lexer's state behind, and every later file in the process then misparses. We check the
-    // log after each call instead (GmshCall).
-    gmsh::option::setNumber("General.AbortOnError", 0);
-    // One thread, so that meshing is as reproducible as gmsh allows (the same geometry and
-    // parameters should give the same mesh: its hash is provenance). Known exception in 4.8:
-    // Mesh.HighOrderOptimize moves curved high-order nodes differently from run to run.
-    gmsh::option::setNumber("General.NumThreads", 1);
-    gmsh::logger::start();
-  }
-  ~GmshSession() {
-    try {
-      gmsh::logger::stop();
-      gmsh::finalize();
-    } catch (...) {
-    }
-  }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
-
-  // The last error gmsh logged, or the last few messages if it logged no error.
-  static std::string LastError() {
-    std::string err;
-    try {
-      gmsh::logger::getLastError(err);
-    } catch (...) {
-    }
-    if (!err.empty()) return err;
-    std::vector<std::string> log;
-    try {
-      gmsh::logger::get(log);
-    } catch (...) {
-    }
-    std::string tail;
-    for (size_t i = log.size() > 3 ? log.size() - 3 : 0; i < log.size(); ++i) tail += log[i] + "; ";
-    return tail.empty() ? "(gmsh gave no message)" : tail;
-  }
-};
-
-// Runs a gmsh call and turns an exception or a logged error into an InputError.
-template <typename F>
-void GmshCall(const std::string& what, const std::string& path, F&& f) {
-  std::string error;
-  try {
-    f();
-    gmsh::logger::getLastError(error);
-  } catch (const std::exception& e) {
-    error = e.what();
-  } catch (...) {
-    error = GmshSession::LastError();
-  }
-  if (!error.empty()) EMB_THROW(InputError, "gmsh failed to " << what << " '" << path << "': " << error);
 }
 
 CellBlock MakeBlock(int gmsh_type, const std::vector<std::size_t>& tags,
@@ -179,26 +116,19 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
   std::vector<std::string> args;
   if (geometry && Extension(path) == ".geo") {
     const auto known = GeoParameters(path);
-    auto is_known = [&](const std::string& name) {
-      return std::any_of(known.begin(), known.end(), [&](const auto& k) { return k.first == name; });
-    };
     auto overrides = options.parameters;
     if (options.size > 0.0) overrides.emplace_back("h", options.size);
     // `order` is passed only if the file declares it; the option is set after opening anyway.
-    if (is_known("order")) overrides.emplace_back("order", options.order);
-    for (const auto& [name, value] : overrides) {
-      if (!is_known(name)) {
-        std::string list;
-        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k.first;
-        EMB_THROW(InputError, "geometry '" << path << "' has no parameter '" << name
-                                           << "'; expected one of: "
-                                           << (list.empty() ? "(none)" : list));
-      }
-      std::ostringstream v;
-      v.precision(17);
-      v << value;
-      args.insert(args.end(), {"-setnumber", name, v.str()});
-    }
+    if (std::any_of(known.begin(), known.end(), [](const auto& k) { return k.first == "order"; }))
+      overrides.emplace_back("order", options.order);
+    // beam_parts = 1 (crankshaft_i4.geo, tube.geo) leaves the parts unfused: geometry for the
+    // beam generator, not a solid to mesh.
+    for (const auto& [name, value] : overrides)
+      EMB_THROW_IF(name == "beam_parts" && value != 0.0,
+                   "geometry '" << path << "': parameter beam_parts = " << value
+                                << " is for the beam generator (libemb/beam); expected 0 when "
+                                   "meshing the solid");
+    args = GeoParameterArgs(path, overrides);
   } else {
     EMB_THROW_IF(!options.parameters.empty(),
                  "parameters can only be set for .geo geometry files, not '" << path << "'");
