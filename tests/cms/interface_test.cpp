@@ -146,6 +146,11 @@ TEST(Interface, BadInputIsNamed) {
   two.groups.push_back(ends);
   const std::string pieces = resolve(two, {"ends"});
   EXPECT_NE(pieces.find("2 disconnected pieces"), std::string::npos) << pieces;
+  // An empty group.
+  Mesh empty = m;
+  empty.groups[0].nodes.clear();
+  empty.groups[0].faces.clear();
+  EXPECT_NE(resolve(empty, {"x0"}).find("has no nodes"), std::string::npos);
   // A group with nodes only (no faces for the weights).
   Mesh bare = m;
   bare.groups[0].faces.clear();

@@ -43,6 +43,28 @@ class CliTest : public ::testing::Test {
     s << in.rdbuf();
     return s.str();
   }
+  // Runs `emb ARGS` expecting exit code `code`, every word in stderr, and no output file
+  // (out.h5, out.xdmf) left behind.
+  void ExpectFailure(const std::string& args, int code, std::initializer_list<std::string> words) {
+    const CliResult r = Run(args);
+    EXPECT_EQ(r.exit_code, code) << args << "\n" << r.err;
+    for (const auto& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << args << "\n" << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "out.h5")) << "partial output left by: " << args;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "out.xdmf")) << "partial output left by: " << args;
+  }
+  // A parametric bar (OCC box L × 0.05 × 0.05, parameters h and L) with the surface groups x0,
+  // x1, y0 (faces x = 0, x = L, y = 0) and the volume "bar", as bar.geo.
+  void WriteBarGeo() const {
+    std::ofstream(dir_ / "bar.geo") << R"(SetFactory("OpenCASCADE");
+DefineConstant[ h = {0.05, Name "Parameters/h"}, L = {0.5, Name "Parameters/L"} ];
+Box(1) = {0, 0, 0, L, 0.05, 0.05};
+Physical Surface("x0") = {1};
+Physical Surface("x1") = {2};
+Physical Surface("y0") = {3};
+Physical Volume("bar") = {1};
+Mesh.MeshSizeMax = h;
+)";
+  }
   std::filesystem::path dir_;
 };
 

@@ -19,20 +19,7 @@ class EmbCli : public emb::test::CliTest {
  protected:
   void SetUp() override {
     CliTest::SetUp();
-    std::ofstream(dir_ / "bar.geo") << R"(SetFactory("OpenCASCADE");
-DefineConstant[ h = {0.05, Name "Parameters/h"}, L = {0.5, Name "Parameters/L"} ];
-Box(1) = {0, 0, 0, L, 0.05, 0.05};
-Physical Surface("x0") = {1};
-Physical Volume("bar") = {1};
-Mesh.MeshSizeMax = h;
-)";
-  }
-  void ExpectFailure(const std::string& args, int code, std::initializer_list<std::string> words) {
-    const emb::test::CliResult r = Run(args);
-    EXPECT_EQ(r.exit_code, code) << args << "\n" << r.err;
-    for (const auto& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << args << "\n" << r.err;
-    EXPECT_FALSE(fs::exists(dir_ / "out.h5")) << "partial output left by: " << args;
-    EXPECT_FALSE(fs::exists(dir_ / "out.xdmf")) << "partial output left by: " << args;
+    WriteBarGeo();
   }
 };
 
