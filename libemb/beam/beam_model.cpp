@@ -6,15 +6,11 @@
 #include <numbers>
 
 #include "libemb/common/error.h"
+#include "libemb/linalg/cross_matrix.h"
 
 namespace emb {
 namespace {
 
-Eigen::Matrix3d Skew(const Eigen::Vector3d& r) {
-  Eigen::Matrix3d S;
-  S << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
-  return S;
-}
 
 bool AllFinite(const Eigen::MatrixXd& a) { return a.allFinite(); }
 
@@ -138,7 +134,7 @@ Eigen::Matrix3d BeamModel::ElementFrame(int e) const {
 
 Matrix6d BeamModel::RigidPartMass(int r) const {
   const RigidPart& p = rigid_parts_.at(r);
-  const Eigen::Matrix3d S = Skew(p.p_NC_W);
+  const Eigen::Matrix3d S = CrossMatrix(p.p_NC_W);
   Matrix6d M;
   M << p.mass * Eigen::Matrix3d::Identity(), -p.mass * S,  //
       p.mass * S, p.I_C_W - p.mass * S * S;

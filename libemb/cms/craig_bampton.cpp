@@ -213,9 +213,7 @@ Eigen::MatrixXd RigidBodyModes(const Mesh& mesh) {
   Eigen::MatrixXd R = Eigen::MatrixXd::Zero(3 * mesh.num_nodes(), 6);
   for (int i = 0; i < mesh.num_nodes(); ++i) {
     const Eigen::Vector3d x = mesh.nodes.col(i);
-    R.block<3, 3>(3 * i, 0).setIdentity();
-    // θ × x = −[x]× θ
-    R.block<3, 3>(3 * i, 3) << 0, x.z(), -x.y(), -x.z(), 0, x.x(), x.y(), -x.x(), 0;
+    R.block<3, 6>(3 * i, 0) = ReferenceRigidMotions(x).topRows<3>();  // t0 + θ0 × x
   }
   return R;
 }

@@ -8,15 +8,10 @@
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/linalg/cross_matrix.h"
 
 namespace emb {
 namespace {
-
-Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d S;
-  S << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return S;
-}
 
 // Corners of a face cell (the first 3 or 4 nodes of a gmsh triangle or quadrangle).
 int NumCorners(CellType t) {
@@ -281,7 +276,7 @@ std::string InterfaceSpec::ToString() const {
 
 Eigen::Matrix<double, 3, 6> Interface::RigidMap(const Eigen::Vector3d& x_s) const {
   Eigen::Matrix<double, 3, 6> B;
-  B << Eigen::Matrix3d::Identity(), -Skew(x_s - point);
+  B << Eigen::Matrix3d::Identity(), -CrossMatrix(x_s - point);
   return B;
 }
 
