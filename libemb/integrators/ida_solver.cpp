@@ -27,6 +27,12 @@ const char* Name(IdaLinearSolver solver) {
   return "unknown";
 }
 
+IdaLinearSolver ParseIdaLinearSolver(const std::string& name) {
+  for (IdaLinearSolver k : {IdaLinearSolver::kAuto, IdaLinearSolver::kDense, IdaLinearSolver::kKlu})
+    if (name == Name(k)) return k;
+  EMB_THROW(InputError, "linear solver: expected 'auto', 'dense' or 'klu', got '" << name << "'");
+}
+
 const char* Name(IdaStatus status) {
   switch (status) {
     case IdaStatus::kSuccess:

@@ -29,6 +29,8 @@ enum class IdaLinearSolver {
 
 /// "auto", "dense" or "klu".
 const char* Name(IdaLinearSolver solver);
+/// The solver of that name. @throws InputError listing the valid names.
+IdaLinearSolver ParseIdaLinearSolver(const std::string& name);
 
 /// Settings of one IDA run.
 struct IdaOptions {

@@ -199,9 +199,9 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
   IdaOptions options = settings.ida;
   EMB_THROW_IF(!(settings.atol_floor_relative >= 0.0) ||
                    !(settings.multiplier_atol_relative > 0.0) ||
-                   !(settings.initial_step_fraction > 0.0),
+                   !(settings.initial_step_fraction >= 0.0),
                "analysis: expected atol_floor_relative >= 0, multiplier_atol_relative > 0 and "
-               "initial_step_fraction > 0, got "
+               "initial_step_fraction >= 0, got "
                    << settings.atol_floor_relative << ", " << settings.multiplier_atol_relative
                    << " and " << settings.initial_step_fraction);
   const double atol_floor = settings.atol_floor_relative * std::max(1.0, ModelSize(sys, run.q0));
@@ -223,7 +223,7 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     if (f0.size()) force_scale = std::max(force_scale, f0.cwiseAbs().maxCoeff());
     options.algebraic_atol = settings.multiplier_atol_relative * force_scale;
   }
-  if (options.initial_step <= 0.0)
+  if (options.initial_step <= 0.0 && settings.initial_step_fraction > 0.0)
     options.initial_step = settings.initial_step_fraction *
                            std::min(settings.output_step, settings.t_end - settings.t_start);
   r.atol = options.atol;

@@ -65,7 +65,8 @@ struct AnalysisSettings {
   double multiplier_atol_relative{1e-4};
   /// If > 0, the multipliers' atol as given [N, N m], instead of the relative rule.
   double multiplier_atol{0.0};
-  /// IDA's first step as a fraction of the output step (used when ida.initial_step is 0).
+  /// IDA's first step as a fraction of the output step (used when ida.initial_step is 0;
+  /// 0 leaves the first step to IDA's own estimate).
   /// IDA's own estimate keeps h |y'| below atol for every component, which for a model
   /// released from rest (velocities exactly 0, accelerations ~1e4 rad/s^2) gives h ~ 1e-15 s,
   /// far below the O(h^2) first-step error it guards against; at such h the multipliers'

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <numbers>
@@ -151,14 +152,11 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
       r.GetDouble("multiplier_atol_relative", s->multiplier_atol_relative);
   s->ida.max_step = r.GetDouble("max_step", s->ida.max_step);
   s->ida.max_num_steps = r.GetInt("max_steps", static_cast<int>(s->ida.max_num_steps));
-  const std::string ls = r.GetString("linear_solver", "auto");
-  bool known_solver = false;
-  for (IdaLinearSolver k : {IdaLinearSolver::kAuto, IdaLinearSolver::kDense, IdaLinearSolver::kKlu})
-    if (ls == Name(k)) s->ida.linear_solver = k, known_solver = true;
-  EMB_THROW_IF(!known_solver, Where(file, node)
-                                  << ": analysis linear_solver: expected 'auto', 'dense' or "
-                                     "'klu', got '"
-                                  << ls << "'");
+  try {
+    s->ida.linear_solver = ParseIdaLinearSolver(r.GetString("linear_solver", "auto"));
+  } catch (const InputError& e) {
+    EMB_THROW(InputError, Where(file, node) << ": analysis " << e.what());
+  }
   s->remove_redundant = r.GetBool("remove_redundant", s->remove_redundant);
   s->assembly.tolerance = r.GetDouble("assembly_tolerance", s->assembly.tolerance);
   s->assembly.max_iterations = r.GetInt("assembly_iterations", s->assembly.max_iterations);
@@ -172,10 +170,10 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
                Where(file, node) << ": analysis: expected rtol > 0 and atol > 0, got "
                                  << s->ida.rtol << " and " << s->ida.atol);
   EMB_THROW_IF(!(s->atol_floor_relative >= 0 && s->multiplier_atol >= 0 &&
-                 s->multiplier_atol_relative > 0 && s->initial_step_fraction > 0),
+                 s->multiplier_atol_relative > 0 && s->initial_step_fraction >= 0),
                Where(file, node) << ": analysis: expected atol_floor_relative >= 0, "
                                     "multiplier_atol >= 0, multiplier_atol_relative > 0 and "
-                                    "initial_step_fraction > 0, got "
+                                    "initial_step_fraction >= 0, got "
                                  << s->atol_floor_relative << ", " << s->multiplier_atol << ", "
                                  << s->multiplier_atol_relative << " and "
                                  << s->initial_step_fraction);
@@ -231,7 +229,12 @@ Scene LoadScene(const std::string& path) {
   EMB_THROW_IF(!in, "scene file '" << path << "' cannot be read (does it exist?)");
   std::ostringstream text;
   text << in.rdbuf();
-  return ParseScene(text.str(), path);
+  Scene scene = ParseScene(text.str(), path);
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  for (std::string* p : {&scene.output.file, &scene.output.csv})
+    if (!p->empty() && std::filesystem::path(*p).is_relative())
+      *p = (dir / *p).lexically_normal().string();
+  return scene;
 }
 
 }  // namespace emb::scene

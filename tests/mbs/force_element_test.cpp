@@ -351,6 +351,28 @@ TEST(Bushing, AnisotropicLargeRotationConservesEnergy) {
   EXPECT_LT(e.drift, kRelativeEnergyDrift * e.initial);
 }
 
+TEST(Bushing, ReleasedFromRestStartsWithTheFirstStepRule) {
+  // Released from rest, IDA's own first-step estimate keeps h |y'| below atol on velocities
+  // that are exactly 0: h ~ 1e-15 s here, where the unit-quaternion multiplier's Newton
+  // correction is round-off amplified by 1/h (~0.1) and the corrector fails at t0 for every
+  // smaller step. The analysis' first step, 1e-3 of the output step, starts fine.
+  Bushing::Matrix6d K = Bushing::Matrix6d::Zero();
+  K.diagonal() << 1e4, 2e4, 3e4, 20.0, 50.0, 120.0;
+  System s = BlockOnBushing(
+      K, Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, -1, 2).normalized()).toRotationMatrix());
+  s.Finalize();
+  AnalysisSettings st;
+  st.type = AnalysisType::kDynamic;
+  st.t_end = 0.02;
+  st.ida.atol = 1e-11;
+  EXPECT_TRUE(RunAnalysis(PrepareRun(s, st), st, [](const Sample&) {}).ok());
+  st.initial_step_fraction = 0.0;  // IDA's own estimate
+  const RunResult r = RunAnalysis(PrepareRun(s, st), st, [](const Sample&) {});
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.ida.status, IdaStatus::kConvergenceFailure);
+  EXPECT_NE(r.message.find("initial_step_fraction"), std::string::npos) << r.message;
+}
+
 TEST(RotationalSpringDamper, ConservesEnergyBetweenTiltedAxes) {
   // A bob on a spherical joint, tumbling, with a torsion spring whose axes are not aligned
   // (x_I leaves J's xy-plane): the load is the gradient of k (a - a0)^2 / 2, so the energy
