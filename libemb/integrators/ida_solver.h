@@ -54,9 +54,10 @@ struct IdaOptions {
   /// Use the problem's analytic Jacobian when it has one (otherwise difference quotients).
   bool use_analytic_jacobian{true};
   IdaLinearSolver linear_solver{IdaLinearSolver::kAuto};
-  /// kAuto picks KLU from this many unknowns on. Measured on planar chains of rods
-  /// (benchmarks/README.md, "Dense vs KLU"): below ~50 unknowns the dense LU of LAPACK size
-  /// is as fast as KLU's symbolic bookkeeping; above, KLU wins and the gap grows ~n^2.
+  /// kAuto picks KLU from this many unknowns on. Measured with the GGL multibody DAE
+  /// (benchmarks/README.md, "Dense vs KLU"): at 24 and 48 unknowns (1-2 rods) dense LU and
+  /// KLU cost the same, from 72 (3 rods; the 74-78-unknown slider-crank and engine (c))
+  /// KLU is as fast or faster, and the gap grows ~n^2.
   int sparse_min_size{50};
 };
 

@@ -1,11 +1,9 @@
 #include "libemb/mbs/ggl_dae.h"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
+#include <vector>
 
 #include "libemb/mbs/dynamics.h"
-#include "libemb/mbs/primitive.h"
+#include "libemb/mbs/force_jacobian.h"
 #include "libemb/mbs/rotation.h"
 #include "libemb/mbs/system.h"
 
