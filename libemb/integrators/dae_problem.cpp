@@ -1,5 +1,7 @@
 #include "libemb/integrators/dae_problem.h"
 
+#include <algorithm>
+
 #include "libemb/common/error.h"
 
 namespace emb {
@@ -19,6 +21,37 @@ void DaeProblem::CalcJacobian(double t, double cj, const Eigen::Ref<const Eigen:
   EMB_CHECK(has_jacobian());
   EMB_CHECK(y.size() == n && yp.size() == n && jacobian.rows() == n && jacobian.cols() == n);
   DoCalcJacobian(t, cj, y, yp, jacobian);
+}
+
+void DaeProblem::CalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                    const Eigen::Ref<const Eigen::VectorXd>& yp,
+                                    SparseMatrixd* jacobian) const {
+  const int n = size();
+  EMB_CHECK(has_jacobian() && jacobian != nullptr);
+  EMB_CHECK(y.size() == n && yp.size() == n);
+  const Eigen::Index nnz_before = jacobian->nonZeros();
+  const bool first = jacobian->rows() == 0;
+  DoCalcSparseJacobian(t, cj, y, yp, jacobian);
+  EMB_CHECK(jacobian->rows() == n && jacobian->cols() == n && jacobian->isCompressed());
+  EMB_CHECK(first || jacobian->nonZeros() == nnz_before);  // the structure is fixed
+}
+
+void DaeProblem::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                      const Eigen::Ref<const Eigen::VectorXd>& yp,
+                                      SparseMatrixd* jacobian) const {
+  const int n = size();
+  Eigen::MatrixXd dense(n, n);
+  DoCalcJacobian(t, cj, y, yp, dense);
+  if (jacobian->rows() != n || jacobian->nonZeros() != static_cast<Eigen::Index>(n) * n) {
+    // Full structure: no entry may appear later that was missing now.
+    jacobian->resize(n, n);
+    jacobian->reserve(Eigen::VectorXi::Constant(n, n));
+    for (int c = 0; c < n; ++c)
+      for (int r = 0; r < n; ++r) jacobian->insert(r, c) = 0.0;
+    jacobian->makeCompressed();
+  }
+  // Column-major dense and a full compressed-column structure share the value order.
+  std::copy(dense.data(), dense.data() + dense.size(), jacobian->valuePtr());
 }
 
 Eigen::VectorXd DaeProblem::DifferentialMask() const {

@@ -6,13 +6,13 @@
 
 #include <Eigen/Dense>
 #include <string>
-#include <utility>
-#include <vector>
+
+#include "libemb/integrators/matrix_assembler.h"
 
 namespace emb {
 
 /// Residual form F(t, y, y') = 0 of size n, with the iteration matrix
-///   J = dF/dy + c_j dF/dy'   (n x n, dense),
+///   J = dF/dy + c_j dF/dy'   (n x n, dense or compressed-column sparse),
 /// and a mask telling which components are differential (appear in y') and which are
 /// algebraic (Lagrange multipliers, ...). Algebraic components are the ones an index-2
 /// integrator may exclude from its local error test.
@@ -44,10 +44,16 @@ class DaeProblem {
                     const Eigen::Ref<const Eigen::VectorXd>& yp,
                     Eigen::Ref<Eigen::MatrixXd> jacobian) const;
 
-  /// Structurally non-zero entries (row, column) of the iteration matrix, for sparse
-  /// linear solvers; empty means "treat as dense". Entries outside the pattern must be zero
-  /// in every CalcJacobian result.
-  std::vector<std::pair<int, int>> JacobianPattern() const { return DoJacobianPattern(); }
+  /// True if CalcSparseJacobian() assembles a genuinely sparse matrix. Otherwise
+  /// CalcSparseJacobian() stores the dense CalcJacobian() result with all n^2 entries.
+  bool has_sparse_jacobian() const { return DoHasSparseJacobian(); }
+
+  /// J = dF/dy + cj dF/dy' as a compressed-column matrix. On the first call (J empty,
+  /// 0 x 0) the problem builds the structure: every entry that can be non-zero at any
+  /// state. Later calls with the same matrix keep that structure and refill only the values
+  /// (see MatrixAssembler). Same values as CalcJacobian(). @pre has_jacobian().
+  void CalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                          const Eigen::Ref<const Eigen::VectorXd>& yp, SparseMatrixd* jacobian) const;
 
   /// 1 for a differential component, 0 for an algebraic one (size n).
   Eigen::VectorXd DifferentialMask() const;
@@ -65,7 +71,11 @@ class DaeProblem {
   virtual void DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                               const Eigen::Ref<const Eigen::VectorXd>& yp,
                               Eigen::Ref<Eigen::MatrixXd> jacobian) const;
-  virtual std::vector<std::pair<int, int>> DoJacobianPattern() const { return {}; }
+  virtual bool DoHasSparseJacobian() const { return false; }
+  /// Default: the dense DoCalcJacobian() stored with a full structure (for small problems).
+  virtual void DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                    const Eigen::Ref<const Eigen::VectorXd>& yp,
+                                    SparseMatrixd* jacobian) const;
   virtual Eigen::VectorXd DoDifferentialMask() const = 0;
   virtual std::string DoComponentName(int i) const;
 };

@@ -15,6 +15,24 @@
 
 namespace emb {
 
+const char* Name(IdaLinearSolver solver) {
+  switch (solver) {
+    case IdaLinearSolver::kAuto:
+      return "auto";
+    case IdaLinearSolver::kDense:
+      return "dense";
+    case IdaLinearSolver::kKlu:
+      return "klu";
+  }
+  return "unknown";
+}
+
+IdaLinearSolver ParseIdaLinearSolver(const std::string& name) {
+  for (IdaLinearSolver k : {IdaLinearSolver::kAuto, IdaLinearSolver::kDense, IdaLinearSolver::kKlu})
+    if (name == Name(k)) return k;
+  EMB_THROW(InputError, "linear solver: expected 'auto', 'dense' or 'klu', got '" << name << "'");
+}
+
 const char* Name(IdaStatus status) {
   switch (status) {
     case IdaStatus::kSuccess:
@@ -90,9 +108,8 @@ struct IdaSolver::Impl {
   SUNLinearSolver ls{nullptr};
   std::exception_ptr pending;  // an exception thrown inside a callback, re-thrown later
   std::string last_message;
-  // KLU: the fixed compressed-column pattern and a dense scratch the problem fills.
-  std::vector<sunindextype> col_ptr, row_ind;
-  Eigen::MatrixXd dense;
+  // KLU: the problem's compressed-column iteration matrix (structure fixed at set-up).
+  SparseMatrixd sparse;
 
   ~Impl() {
     if (mem) IDAFree(&mem);
@@ -130,24 +147,23 @@ struct IdaSolver::Impl {
     }
   }
 
-  // Sparse variant: the problem's dense iteration matrix gathered on the fixed pattern
-  // (IDA zeroes the structure before every call, so it is written in full each time).
+  // Sparse variant: the problem refills the values of its fixed structure, which is copied
+  // in full because SUNDIALS zeroes the index arrays together with the values before every
+  // call. O(nnz).
   static int SparseJacobian(realtype t, realtype cj, N_Vector y, N_Vector yp, N_Vector,
                             SUNMatrix jac, void* user, N_Vector, N_Vector, N_Vector) {
     auto* self = static_cast<Impl*>(user);
     try {
-      self->problem->CalcJacobian(t, cj, View(y), View(yp), self->dense);
-      sunindextype* cp = SUNSparseMatrix_IndexPointers(jac);
-      sunindextype* ri = SUNSparseMatrix_IndexValues(jac);
-      realtype* data = SUNSparseMatrix_Data(jac);
-      const auto n = static_cast<sunindextype>(self->col_ptr.size()) - 1;
-      for (sunindextype c = 0; c <= n; ++c) cp[c] = self->col_ptr[c];
-      for (sunindextype c = 0; c < n; ++c)
-        for (sunindextype k = self->col_ptr[c]; k < self->col_ptr[c + 1]; ++k) {
-          ri[k] = self->row_ind[k];
-          data[k] = self->dense(self->row_ind[k], c);
-        }
-      return self->dense.allFinite() ? 0 : 1;
+      SparseMatrixd& A = self->sparse;
+      self->problem->CalcSparseJacobian(t, cj, View(y), View(yp), &A);
+      EMB_CHECK(static_cast<sunindextype>(A.nonZeros()) <= SUNSparseMatrix_NNZ(jac));
+      std::copy(A.outerIndexPtr(), A.outerIndexPtr() + A.cols() + 1,
+                SUNSparseMatrix_IndexPointers(jac));
+      std::copy(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(),
+                SUNSparseMatrix_IndexValues(jac));
+      std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), SUNSparseMatrix_Data(jac));
+      const Eigen::Map<const Eigen::VectorXd> values(A.valuePtr(), A.nonZeros());
+      return values.allFinite() ? 0 : 1;
     } catch (...) {
       self->pending = std::current_exception();
       return -1;
@@ -186,11 +202,18 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
   m.mem = CheckPtr(IDACreate(m.ctx), "IDACreate");
   CheckSetup(IDASetErrHandlerFn(m.mem, &Impl::ErrorHandler, &m), "IDASetErrHandlerFn");
   CheckSetup(IDAInit(m.mem, &Impl::Residual, t0, m.y, m.yp), "IDAInit");
-  if (options.algebraic_atol > 0.0) {
+  EMB_THROW_IF(options.component_atol.size() != 0 &&
+                   (options.component_atol.size() != n || !(options.component_atol.minCoeff() > 0)),
+               "IDA: expected " << n << " positive per-component absolute tolerances, got "
+                                << options.component_atol.size());
+  if (options.component_atol.size() != 0 || options.algebraic_atol > 0.0) {
     N_Vector atol = CheckPtr(N_VClone(m.id), "N_VClone");
     const Eigen::VectorXd mask = View(m.id);
-    View(atol) = (mask.array() > 0.5)
-                     .select(options.atol, Eigen::VectorXd::Constant(n, options.algebraic_atol));
+    if (options.component_atol.size() != 0)
+      View(atol) = options.component_atol;
+    else
+      View(atol) = (mask.array() > 0.5)
+                       .select(options.atol, Eigen::VectorXd::Constant(n, options.algebraic_atol));
     const int flag = IDASVtolerances(m.mem, options.rtol, atol);
     N_VDestroy(atol);
     CheckSetup(flag, "IDASVtolerances");
@@ -206,33 +229,25 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
   if (options.initial_step > 0.0)
     CheckSetup(IDASetInitStep(m.mem, options.initial_step), "IDASetInitStep");
   if (options.max_step > 0.0) CheckSetup(IDASetMaxStep(m.mem, options.max_step), "IDASetMaxStep");
-  if (options.linear_solver == IdaLinearSolver::kKlu) {
+  linear_solver_ = options.linear_solver;
+  if (linear_solver_ == IdaLinearSolver::kAuto)
+    linear_solver_ = problem.has_jacobian() && options.use_analytic_jacobian &&
+                             problem.has_sparse_jacobian() && n >= options.sparse_min_size
+                         ? IdaLinearSolver::kKlu
+                         : IdaLinearSolver::kDense;
+  if (linear_solver_ == IdaLinearSolver::kKlu) {
     EMB_THROW_IF(!problem.has_jacobian() || !options.use_analytic_jacobian,
                  "IDA: the KLU linear solver needs the problem's analytic Jacobian");
-    // Pattern (with the diagonal) sorted into compressed columns.
-    std::vector<std::pair<int, int>> pattern = problem.JacobianPattern();
-    if (pattern.empty())
-      for (int c = 0; c < n; ++c)
-        for (int r = 0; r < n; ++r) pattern.emplace_back(r, c);
-    for (int i = 0; i < n; ++i) pattern.emplace_back(i, i);
-    std::sort(pattern.begin(), pattern.end(), [](const auto& a, const auto& b) {
-      return a.second != b.second ? a.second < b.second : a.first < b.first;
-    });
-    pattern.erase(std::unique(pattern.begin(), pattern.end()), pattern.end());
-    m.col_ptr.assign(n + 1, 0);
-    for (const auto& [r, c] : pattern) {
-      EMB_CHECK(r >= 0 && r < n && c >= 0 && c < n);
-      ++m.col_ptr[c + 1];
-      m.row_ind.push_back(r);
-    }
-    for (int c = 0; c < n; ++c) m.col_ptr[c + 1] += m.col_ptr[c];
-    m.dense.setZero(n, n);
-    const auto nnz = static_cast<sunindextype>(pattern.size());
+    // The structure, built once; the values at t0 are overwritten before the first solve.
+    problem.CalcSparseJacobian(t0, 1.0, y0, yp0, &m.sparse);
+    jacobian_nonzeros_ = static_cast<long>(m.sparse.nonZeros());
+    const auto nnz = static_cast<sunindextype>(std::max<Eigen::Index>(1, m.sparse.nonZeros()));
     m.a = CheckPtr(SUNSparseMatrix(n, n, nnz, CSC_MAT, m.ctx), "SUNSparseMatrix");
     m.ls = CheckPtr(SUNLinSol_KLU(m.y, m.a, m.ctx), "SUNLinSol_KLU");
     CheckSetup(IDASetLinearSolver(m.mem, m.ls, m.a), "IDASetLinearSolver");
     CheckSetup(IDASetJacFn(m.mem, &Impl::SparseJacobian), "IDASetJacFn");
   } else {
+    jacobian_nonzeros_ = static_cast<long>(n) * n;
     m.a = CheckPtr(SUNDenseMatrix(n, n, m.ctx), "SUNDenseMatrix");
     m.ls = CheckPtr(SUNLinSol_Dense(m.y, m.a, m.ctx), "SUNLinSol_Dense");
     CheckSetup(IDASetLinearSolver(m.mem, m.ls, m.a), "IDASetLinearSolver");

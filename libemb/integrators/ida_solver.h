@@ -1,9 +1,10 @@
 #pragma once
 /// @file
 /// RAII wrapper of SUNDIALS IDA (variable-order, variable-step BDF for F(t, y, y') = 0)
-/// with the dense direct linear solver or KLU (sparse direct, on the problem's pattern). Every
-/// SUNDIALS flag is checked; a failure to advance is a status (IdaStatus) with the time, the step
-/// size and the component with the largest weighted local error, never a print or an exit.
+/// with the dense direct linear solver or KLU (sparse direct, on the problem's compressed-column
+/// iteration matrix). Every SUNDIALS flag is checked; a failure to advance is a status
+/// (IdaStatus) with the time, the step size and the component with the largest weighted local
+/// error, never a print or an exit.
 
 #include <Eigen/Dense>
 #include <exception>
@@ -16,9 +17,20 @@ namespace emb {
 
 /// Linear solver for IDA's Newton iterations.
 enum class IdaLinearSolver {
-  kDense,  ///< SUNDIALS dense LU: small systems
-  kKlu,    ///< SuiteSparse KLU on the problem's JacobianPattern(); needs an analytic Jacobian
+  /// kKlu when the problem assembles a sparse Jacobian (DaeProblem::has_sparse_jacobian)
+  /// and has at least IdaOptions::sparse_min_size unknowns, else kDense.
+  kAuto,
+  kDense,  ///< SUNDIALS dense LU on the dense iteration matrix: small systems
+  /// SuiteSparse KLU on the problem's compressed-column iteration matrix
+  /// (DaeProblem::CalcSparseJacobian, structure fixed at construction); needs an analytic
+  /// Jacobian.
+  kKlu,
 };
+
+/// "auto", "dense" or "klu".
+const char* Name(IdaLinearSolver solver);
+/// The solver of that name. @throws InputError listing the valid names.
+IdaLinearSolver ParseIdaLinearSolver(const std::string& name);
 
 /// Settings of one IDA run.
 struct IdaOptions {
@@ -29,6 +41,9 @@ struct IdaOptions {
   /// weighs them: Lagrange multipliers of an index-2 system are only determined to
   /// O(eps / h) and a tight atol on them makes the corrector fail at t0 for any h.
   double algebraic_atol{0.0};
+  /// Per-component absolute tolerances (size n, > 0) when not empty; then atol and
+  /// algebraic_atol are not used. For unknowns of different units and scales.
+  Eigen::VectorXd component_atol;
   double initial_step{0.0};    ///< first step [s]; 0 lets IDA choose
   double max_step{0.0};        ///< largest step [s]; 0 = unlimited
   long max_num_steps{500000};  ///< internal steps allowed between two output times
@@ -38,7 +53,12 @@ struct IdaOptions {
   bool suppress_algebraic{true};
   /// Use the problem's analytic Jacobian when it has one (otherwise difference quotients).
   bool use_analytic_jacobian{true};
-  IdaLinearSolver linear_solver{IdaLinearSolver::kDense};
+  IdaLinearSolver linear_solver{IdaLinearSolver::kAuto};
+  /// kAuto picks KLU from this many unknowns on. Measured with the GGL multibody DAE
+  /// (benchmarks/README.md, "Dense vs KLU"): at 24 and 48 unknowns (1-2 rods) dense LU and
+  /// KLU cost the same, from 72 (3 rods; the 74-78-unknown slider-crank and engine (c))
+  /// KLU is as fast or faster, and the gap grows ~n^2.
+  int sparse_min_size{50};
 };
 
 /// Outcome of IdaSolver::AdvanceTo.
@@ -101,6 +121,11 @@ class IdaSolver {
   /// Restarts from new values at t0 (after a discontinuity or a projection).
   void Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0);
 
+  /// The linear solver in use (kAuto resolved at construction).
+  IdaLinearSolver linear_solver() const { return linear_solver_; }
+  /// Structural non-zeros of the iteration matrix (n^2 for the dense solver).
+  long jacobian_nonzeros() const { return jacobian_nonzeros_; }
+
   double t() const { return t_; }
   const Eigen::VectorXd& y() const { return y_; }
   const Eigen::VectorXd& yp() const { return yp_; }
@@ -114,6 +139,8 @@ class IdaSolver {
   const DaeProblem& problem_;
   IdaOptions options_;
   std::unique_ptr<Impl> impl_;
+  IdaLinearSolver linear_solver_{IdaLinearSolver::kDense};
+  long jacobian_nonzeros_{0};
   double t_{0.0};
   Eigen::VectorXd y_, yp_;
 };

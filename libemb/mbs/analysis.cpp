@@ -53,6 +53,20 @@ const char* Name(RunStatus status) {
   return "unknown";
 }
 
+const char* Name(NewtonStatus status) {
+  switch (status) {
+    case NewtonStatus::kConverged:
+      return "converged";
+    case NewtonStatus::kMaxIterations:
+      return "max-iterations";
+    case NewtonStatus::kLineSearchFailed:
+      return "line-search-failed";
+    case NewtonStatus::kNonFinite:
+      return "non-finite";
+  }
+  return "unknown";
+}
+
 PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
   EMB_CHECK(system.finalized());
   EMB_THROW_IF(!(settings.t_end >= settings.t_start), "analysis: expected t_end >= t_start, got "
@@ -114,7 +128,7 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
   s.lambda = lambda;
   const auto bodies = CalcBodyKinematics(system, q, v);
   const ConstraintEval c = CalcConstraints(system, bodies, t, workspace);
-  s.reactions = CalcJointReactions(system, bodies, c.jacobian, lambda);
+  s.reactions = CalcJointReactions(system, bodies, lambda);
   s.energies = CalcEnergies(system, bodies, t, workspace);
   if (c.phi.size()) {
     s.position_residual = c.phi.cwiseAbs().maxCoeff();
@@ -151,6 +165,15 @@ RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
 
 namespace internal {
 
+double ModelSize(const System& system, const Eigen::VectorXd& q) {
+  const StateLayout& L = system.layout();
+  double size = 0.0;
+  for (int b = 1; b < system.num_bodies(); ++b)
+    size = std::max(size, q.segment<3>(L.position(b)).norm());
+  for (const Marker& m : system.markers()) size = std::max(size, m.p_BM.norm());
+  return size;
+}
+
 std::vector<double> OutputTimes(const AnalysisSettings& s) {
   std::vector<double> t;
   const double span = s.t_end - s.t_start;
@@ -172,8 +195,42 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
   const AccelerationSolution acc = SolveAccelerations(sys, run.q0, run.v0, settings.t_start, &ws);
   Eigen::VectorXd y, yp;
   dae.MakeInitialValues(run.q0, run.v0, acc.vdot, acc.lambda, &y, &yp);
-  IdaSolver ida(dae, settings.t_start, y, yp, settings.ida);
   RunResult r;
+  IdaOptions options = settings.ida;
+  EMB_THROW_IF(!(settings.atol_floor_relative >= 0.0) ||
+                   !(settings.multiplier_atol_relative > 0.0) ||
+                   !(settings.initial_step_fraction >= 0.0),
+               "analysis: expected atol_floor_relative >= 0, multiplier_atol_relative > 0 and "
+               "initial_step_fraction >= 0, got "
+                   << settings.atol_floor_relative << ", " << settings.multiplier_atol_relative
+                   << " and " << settings.initial_step_fraction);
+  const double atol_floor = settings.atol_floor_relative * std::max(1.0, ModelSize(sys, run.q0));
+  if (options.atol < atol_floor) {
+    std::ostringstream o;
+    o << "atol " << options.atol << " is below the round-off floor of this model and was "
+      << "raised to " << atol_floor << " (atol_floor_relative " << settings.atol_floor_relative
+      << " x the model size)";
+    r.warnings.push_back(o.str());
+    options.atol = atol_floor;
+  }
+  if (settings.multiplier_atol > 0.0) {
+    options.algebraic_atol = settings.multiplier_atol;
+  } else {
+    const Eigen::VectorXd f0 = CalcGeneralizedForces(
+        sys, CalcBodyKinematics(sys, run.q0, run.v0), settings.t_start, &ws);
+    double force_scale = 1.0;
+    if (acc.lambda.size()) force_scale = std::max(force_scale, acc.lambda.cwiseAbs().maxCoeff());
+    if (f0.size()) force_scale = std::max(force_scale, f0.cwiseAbs().maxCoeff());
+    options.algebraic_atol = settings.multiplier_atol_relative * force_scale;
+  }
+  if (options.initial_step <= 0.0 && settings.initial_step_fraction > 0.0)
+    options.initial_step = settings.initial_step_fraction *
+                           std::min(settings.output_step, settings.t_end - settings.t_start);
+  r.atol = options.atol;
+  r.multiplier_atol = options.algebraic_atol;
+  IdaSolver ida(dae, settings.t_start, y, yp, options);
+  r.linear_solver = ida.linear_solver();
+  r.jacobian_nonzeros = ida.jacobian_nonzeros();
   const std::vector<double> times = OutputTimes(settings);
   sink(MakeSample(sys, times[0], run.q0, run.v0, acc.vdot, acc.lambda, &ws));
   r.num_samples = 1;
@@ -201,8 +258,12 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
           << sys.EquationName(we.equation);
       if (rep.t <= settings.t_start && rep.status == IdaStatus::kConvergenceFailure)
         o << "; the corrector failed at the start for every step size, which means the "
-             "tolerances are below the round-off floor of this model: raise atol (e.g. to "
-             "1e-11) or rtol";
+             "tolerances are below the round-off floor of this model: raise atol (now "
+          << options.atol << ", atol_floor_relative " << settings.atol_floor_relative
+          << "), initial_step_fraction (now " << settings.initial_step_fraction
+          << ") or multiplier_atol_relative (now "
+          << settings.multiplier_atol_relative << ", atol " << options.algebraic_atol
+          << " on the multipliers), or rtol";
       r.message = o.str();
       break;
     }

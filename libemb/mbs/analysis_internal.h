@@ -6,6 +6,9 @@
 
 namespace emb::mbs::internal {
 
+/// The model's size [m]: the largest |p_WB| in q or marker offset |p_BM|.
+double ModelSize(const System& system, const Eigen::VectorXd& q);
+
 /// Output times t_start, t_start + dt, ..., t_end (last one exactly t_end).
 std::vector<double> OutputTimes(const AnalysisSettings& settings);
 

@@ -5,6 +5,7 @@
 #include "libemb/common/error.h"
 #include "libemb/mbs/constraint_eval.h"
 #include "libemb/mbs/primitive.h"
+#include "libemb/mbs/rotation.h"
 #include "libemb/mbs/system.h"
 
 namespace emb::mbs {
@@ -61,6 +62,56 @@ void AppliedLoad::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorX
     const MarkerKinematics R = CalcMarkerKinematics(sys, *ctx.bodies, reaction_marker_);
     AddWrench(sys.layout(), (*ctx.bodies)[R.body], R.body, M.p_WM, -F, -T, f);
   }
+}
+
+void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
+  using Eigen::MatrixXd;
+  using Eigen::Vector3d;
+  const System& sys = *ctx.system;
+  // Slots: the loaded marker's body, the reaction body, the argument joint's two bodies.
+  const MarkerKinematics M = CalcMarkerKinematics(sys, *ctx.bodies, marker_);
+  std::vector<int> slots{M.body};
+  const int reaction_slot = reaction_marker_ >= 0 ? 1 : -1;
+  if (reaction_marker_ >= 0) slots.push_back(sys.marker(reaction_marker_).body);
+  const int argument_slot = static_cast<int>(slots.size());
+  if (argument_.joint_angle) {
+    slots.push_back(sys.marker(argument_.marker_i).body);
+    slots.push_back(sys.marker(argument_.marker_j).body);
+  }
+  LocalForceJacobian jac(slots);
+  const int n = jac.num_columns();
+  const MarkerDerivatives dM = DifferentiateMarker(M, 0, jac.num_slots());
+
+  const Vector3d a_W = frame_ == Frame::kWorld ? direction_ : Vector3d(M.R_WM * direction_);
+  const FunctionValue fx = magnitude_.Eval(CalcArgument(ctx));
+  const Vector3d load = fx.f * a_W;
+  MatrixXd dload = MatrixXd::Zero(3, n);
+  if (frame_ == Frame::kMarker) dload = -fx.f * Skew(a_W) * dM.rotation_x;
+  if (argument_.joint_angle) {
+    const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, argument_.marker_i);
+    const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, argument_.marker_j);
+    const KernelEval g = EvalKernel({KernelKind::kAngle, 0, 0}, I, J);
+    Eigen::Matrix<double, 1, 12> dangle;
+    dangle << g.d_i, g.d_j;
+    dload.middleCols(6 * argument_slot, 12) += (fx.df * argument_.scale) * a_W * dangle;
+  }
+  const Vector3d zero = Vector3d::Zero();
+  const MatrixXd zero_d = MatrixXd::Zero(3, n);
+  const bool force = kind_ == Kind::kForce;
+  const Vector3d F = force ? load : zero, T = force ? zero : load;
+  const MatrixXd& dF = force ? dload : zero_d;
+  const MatrixXd& dT = force ? zero_d : dload;
+  jac.stiffness.middleRows<6>(0) += WrenchStiffness(M.R_WB, 0, F, T, M.s_W, dF, dT, dM.arm_x);
+  if (reaction_slot >= 0) {
+    // The opposite load at the same point p_WM, on the reaction body.
+    const MarkerKinematics R = CalcMarkerKinematics(sys, *ctx.bodies, reaction_marker_);
+    const Vector3d r = M.p_WM - (*ctx.bodies)[R.body].p_WB;
+    MatrixXd dr = dM.point_x;
+    dr.block<3, 3>(0, 6 * reaction_slot) -= Eigen::Matrix3d::Identity();
+    jac.stiffness.middleRows<6>(6 * reaction_slot) +=
+        WrenchStiffness(R.R_WB, reaction_slot, -F, -T, r, -dF, -dT, dr);
+  }
+  jac.ScatterTo(sink);
 }
 
 }  // namespace emb::mbs

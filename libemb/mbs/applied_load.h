@@ -23,9 +23,12 @@ struct LoadArgument {
 /// F = f(x) a (a force at the marker origin) or T = f(x) a (a couple), with the unit
 /// direction a fixed in the world (a_W) or in the marker (R_WM a_M), f in N or N m and x
 /// the LoadArgument (time or a joint angle).
-/// If `reaction_marker` >= 0 the opposite load acts on that marker's body (an internal
-/// load such as gas pressure between piston and block/head); otherwise the load comes from
-/// outside the system.
+/// If `reaction_marker` >= 0 the opposite load acts on that marker's body, at the same
+/// point p_WM (an internal load such as gas pressure between piston and block/head);
+/// otherwise the load comes from outside the system.
+/// Analytic derivatives: d(load) = a f'(x) dx + f da, with dx = scale (da_joint/dx) for a
+/// joint-angle argument (0 for time) and da = -[a x] dphi_M for a marker-fixed direction;
+/// no velocity dependence.
 class AppliedLoad final : public ForceElement {
  public:
   enum class Kind { kForce, kTorque };
@@ -40,6 +43,7 @@ class AppliedLoad final : public ForceElement {
 
  protected:
   void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const override;
+  void DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const override;
   std::vector<int> DoMarkers() const override;
   int DoNumAngleSlots() const override { return argument_.joint_angle ? 1 : 0; }
 

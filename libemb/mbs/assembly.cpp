@@ -61,7 +61,8 @@ AssemblyResult AssemblePositions(const System& system, const Eigen::VectorXd& q0
   double res = c.phi.size() ? c.phi.cwiseAbs().maxCoeff() : 0.0;
   for (r.iterations = 0; r.iterations < options.max_iterations && res > options.tolerance;
        ++r.iterations) {
-    const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(c.jacobian);
+    const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(
+        (Eigen::MatrixXd(c.jacobian)));
     const Eigen::VectorXd dx = -cod.solve(c.phi);
     // Backtracking: halve the step while the residual grows (far from the solution).
     double step = 1.0;
@@ -102,7 +103,8 @@ VelocityProjection ProjectVelocities(const System& system, const Eigen::VectorXd
   const auto n = M.rows(), m = c.jacobian.rows();
   Eigen::VectorXd rhs(n + m);
   rhs << M * v0, -c.phi_t;
-  const Eigen::VectorXd x = SolveKkt(Kkt(M, c.jacobian), rhs, "velocity projection");
+  const Eigen::VectorXd x =
+      SolveKkt(Kkt(M, Eigen::MatrixXd(c.jacobian)), rhs, "velocity projection");
   VelocityProjection p;
   p.v = x.head(n);
   const Eigen::VectorXd dv = p.v - v0;
@@ -122,7 +124,8 @@ AccelerationSolution SolveAccelerations(const System& system, const Eigen::Vecto
   const auto n = M.rows(), m = c.jacobian.rows();
   Eigen::VectorXd rhs(n + m);
   rhs << CalcGeneralizedForces(system, bodies, t, workspace), c.gamma();
-  const Eigen::VectorXd x = SolveKkt(Kkt(M, c.jacobian), rhs, "acceleration solve");
+  const Eigen::VectorXd x =
+      SolveKkt(Kkt(M, Eigen::MatrixXd(c.jacobian)), rhs, "acceleration solve");
   return {x.head(n), x.tail(m)};
 }
 

@@ -27,40 +27,99 @@ Bushing::Bushing(std::string name, int marker_i, int marker_j, const Matrix6d& s
       "bushing '" << this->name() << "': expected a non-negative damping matrix");
 }
 
-void Bushing::Calc(const ForceContext& ctx, Vector6d* x, Vector6d* xdot) const {
-  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+Bushing::State Bushing::Calc(const MarkerKinematics& I, const MarkerKinematics& J) const {
+  State s;
   const Eigen::Vector3d d = I.p_WM - J.p_WM;
   const Eigen::Matrix3d R_JW = J.R_WM.transpose();
-  x->head<3>() = R_JW * d;
-  x->tail<3>() = RotationVectorFromRotation(R_JW * I.R_WM);
-  xdot->head<3>() = R_JW * (I.v_WM - J.v_WM - J.omega_W.cross(d));
-  xdot->tail<3>() = R_JW * (I.omega_W - J.omega_W);
+  const Eigen::Vector3d theta = RotationVectorFromRotation(R_JW * I.R_WM);
+  s.inv_jacobian = InverseLeftJacobianSO3(theta);
+  s.xi << R_JW * d, theta;
+  s.xi_dot << R_JW * (I.v_WM - J.v_WM - J.omega_W.cross(d)),
+      s.inv_jacobian * (R_JW * (I.omega_W - J.omega_W));
+  return s;
 }
 
 void Bushing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
-  Vector6d x, xdot;
-  Calc(ctx, &x, &xdot);
-  const Vector6d load_J = -k_ * x - d_ * xdot;
   const System& sys = *ctx.system;
   const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
   const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
-  const Eigen::Vector3d F_W = J.R_WM * load_J.head<3>();
-  const Eigen::Vector3d T_W = J.R_WM * load_J.tail<3>();
+  const State s = Calc(I, J);
+  const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
+  const Eigen::Vector3d F_W = J.R_WM * m.head<3>();
+  const Eigen::Vector3d T_W = J.R_WM * (s.inv_jacobian.transpose() * m.tail<3>());
   AddWrench(sys.layout(), (*ctx.bodies)[I.body], I.body, I.p_WM, F_W, T_W, f);
   AddWrench(sys.layout(), (*ctx.bodies)[J.body], J.body, I.p_WM, -F_W, -T_W, f);
 }
 
+void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
+  using Eigen::Matrix3d;
+  using Eigen::MatrixXd;
+  using Eigen::Vector3d;
+  const System& sys = *ctx.system;
+  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
+  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
+  const State s = Calc(I, J);
+  const MarkerDerivatives dI = DifferentiateMarker(I, 0, 2), dJ = DifferentiateMarker(J, 1, 2);
+  const Matrix3d R_WJ = J.R_WM, R_JW = R_WJ.transpose();
+  const Vector3d d = I.p_WM - J.p_WM;
+  const Vector3d theta = s.xi.tail<3>();
+  const Matrix3d& Jinv = s.inv_jacobian;
+
+  // xi = [R_JW d; theta]: d(R_JW y) = R_JW (dy + [y x] dphi_j) for a world vector y.
+  const MatrixXd dd_x = dI.point_x - dJ.point_x;
+  MatrixXd dxi_x(6, 12), dxi_dot_x(6, 12), dxi_dot_v(6, 12);
+  dxi_x.topRows<3>() = R_JW * (dd_x + Skew(d) * dJ.rotation_x);
+  dxi_x.bottomRows<3>() = Jinv * R_JW * (dI.rotation_x - dJ.rotation_x);
+  // x' = R_JW y, y = d' - omega_J x d.
+  const Vector3d y = I.v_WM - J.v_WM - J.omega_W.cross(d);
+  const MatrixXd dy_x =
+      dI.velocity_x - dJ.velocity_x + Skew(d) * dJ.omega_x - Skew(J.omega_W) * dd_x;
+  dxi_dot_x.topRows<3>() = R_JW * (dy_x + Skew(y) * dJ.rotation_x);
+  dxi_dot_v.topRows<3>() = R_JW * (dI.velocity_v - dJ.velocity_v + Skew(d) * dJ.omega_v);
+  // theta' = J_l^{-1}(theta) R_JW (omega_I - omega_J).
+  const Vector3d w_rel = I.omega_W - J.omega_W;
+  dxi_dot_x.bottomRows<3>() =
+      InverseLeftJacobianSO3ProductDerivative(theta, R_JW * w_rel, false) * dxi_x.bottomRows<3>() +
+      Jinv * R_JW * (dI.omega_x - dJ.omega_x + Skew(w_rel) * dJ.rotation_x);
+  dxi_dot_v.bottomRows<3>() = Jinv * R_JW * (dI.omega_v - dJ.omega_v);
+
+  // m = -(K xi + D xi'); F = R_WJ m_x, T = R_WJ J_l^{-T} m_r.
+  const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
+  const MatrixXd dm_x = -k_ * dxi_x - d_ * dxi_dot_x;
+  const MatrixXd dm_v = -d_ * dxi_dot_v;
+  const Vector3d F = R_WJ * m.head<3>();
+  const Vector3d tau = Jinv.transpose() * m.tail<3>();
+  const Vector3d T = R_WJ * tau;
+  const MatrixXd dF_x = R_WJ * dm_x.topRows<3>() - Skew(F) * dJ.rotation_x;
+  const MatrixXd dF_v = R_WJ * dm_v.topRows<3>();
+  const MatrixXd dtau_x =
+      InverseLeftJacobianSO3ProductDerivative(theta, m.tail<3>(), true) * dxi_x.bottomRows<3>() +
+      Jinv.transpose() * dm_x.bottomRows<3>();
+  const MatrixXd dT_x = R_WJ * dtau_x - Skew(T) * dJ.rotation_x;
+  const MatrixXd dT_v = R_WJ * Jinv.transpose() * dm_v.bottomRows<3>();
+
+  // Both loads act at p_WI: arm s_WI on I's body, p_WI - p_WJbody on J's.
+  const Vector3d r_j = I.p_WM - (*ctx.bodies)[J.body].p_WB;
+  MatrixXd dr_j = dI.point_x;
+  dr_j.block<3, 3>(0, 6) -= Matrix3d::Identity();
+  LocalForceJacobian jac({I.body, J.body});
+  jac.stiffness.topRows<6>() = WrenchStiffness(I.R_WB, 0, F, T, I.s_W, dF_x, dT_x, dI.arm_x);
+  jac.stiffness.bottomRows<6>() = WrenchStiffness(J.R_WB, 1, -F, -T, r_j, -dF_x, -dT_x, dr_j);
+  jac.damping.topRows<6>() = WrenchDamping(I.R_WB, I.s_W, dF_v, dT_v);
+  jac.damping.bottomRows<6>() = WrenchDamping(J.R_WB, r_j, -dF_v, -dT_v);
+  jac.ScatterTo(sink);
+}
+
 double Bushing::DoCalcPotentialEnergy(const ForceContext& ctx) const {
-  Vector6d x, xdot;
-  Calc(ctx, &x, &xdot);
-  return 0.5 * x.dot(k_ * x);
+  const State s = Calc(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
+                       CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
+  return 0.5 * s.xi.dot(k_ * s.xi);
 }
 
 double Bushing::DoCalcDissipatedPower(const ForceContext& ctx) const {
-  Vector6d x, xdot;
-  Calc(ctx, &x, &xdot);
-  return xdot.dot(d_ * xdot);
+  const State s = Calc(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
+                       CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
+  return s.xi_dot.dot(d_ * s.xi_dot);
 }
 
 }  // namespace emb::mbs

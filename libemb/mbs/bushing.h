@@ -9,13 +9,22 @@
 
 namespace emb::mbs {
 
-/// Relative displacement of I from J in J's axes, x = [R_WJ^T (p_WI - p_WJ); theta] with
-/// theta the rotation vector of R_JI = R_WJ^T R_WI (small rotations), and its rate
-/// xdot = [R_WJ^T (v_WI - v_WJ - omega_J x d); R_WJ^T (omega_I - omega_J)].
-/// The load on I, in J's axes: [F; T] = -K x - D xdot (force at the origin of I, moment);
-/// J gets the equal and opposite load at the same point.
-/// Energy x^T K x / 2 (exact for the translational part, small-angle for rotations).
-/// K [N/m | N/rad ...] and D are 6x6, expressed in J; K must be symmetric PSD.
+/// Relative displacement of I from J in J's axes, xi = [x; theta]:
+///   x = R_JW d, d = p_WI - p_WJ,
+///   theta = the rotation vector of R_JI = R_JW R_WI, from its quaternion (|theta| <= pi,
+///           exact for large rotations, RotationVectorFromQuaternion),
+/// and its rate xi' = [R_JW (d' - omega_J x d); J_l^{-1}(theta) R_JW (omega_I - omega_J)]
+/// (theta' through the inverse left Jacobian of SO(3), rotation.h). The energy is
+/// V = xi^T K xi / 2 and the dissipation function xi'^T D xi' / 2; the load is their
+/// work-conjugate: with m = -(K xi + D xi') = [m_x; m_r] (J's axes),
+///   force on I at p_WI:  F = R_WJ m_x,   couple on I: T = R_WJ J_l^{-T}(theta) m_r,
+/// and J gets -F at the same point p_WI and -T. The J_l^{-T} factor makes the moment the
+/// exact gradient of V under finite rotations (for K_rot = k I it is the plain -k theta);
+/// the power of the load is -xi'^T (K xi + D xi'), so energy is conserved to the
+/// integrator's tolerance for D = 0, whatever the rotation. Dissipated power xi'^T D xi'.
+/// K [N/m, N/rad, coupling N and N m] and D [N s/m ...] are 6x6, expressed in J; K must be
+/// symmetric PSD. Precondition: |theta| < pi (a bushing that turns half a revolution is
+/// not a bushing; at pi the rotation vector flips).
 class Bushing final : public ForceElement {
  public:
   using Matrix6d = Eigen::Matrix<double, 6, 6>;
@@ -27,12 +36,17 @@ class Bushing final : public ForceElement {
 
  protected:
   void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const override;
+  void DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const override;
   double DoCalcPotentialEnergy(const ForceContext& ctx) const override;
   double DoCalcDissipatedPower(const ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override { return {i_, j_}; }
 
  private:
-  void Calc(const ForceContext& ctx, Vector6d* x, Vector6d* xdot) const;
+  struct State {
+    Vector6d xi, xi_dot;
+    Eigen::Matrix3d inv_jacobian;  ///< J_l^{-1}(theta)
+  };
+  State Calc(const MarkerKinematics& I, const MarkerKinematics& J) const;
   int i_, j_;
   Matrix6d k_, d_;
 };

@@ -31,10 +31,15 @@ ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinem
   const int m = system.num_equations();
   ConstraintEval c;
   c.phi.setZero(m);
-  c.jacobian.setZero(m, L.nv());
   c.quadratic.setZero(m);
   c.phi_t.setZero(m);
   c.phi_tt.setZero(m);
+  std::vector<Eigen::Triplet<double, int>> triplets;
+  triplets.reserve(12 * static_cast<std::size_t>(m));
+  auto add_row = [&](int k, int body, double a, const Eigen::Matrix<double, 1, 6>& d) {
+    if (L.is_ground(body)) return;
+    for (int i = 0; i < 6; ++i) triplets.emplace_back(k, L.velocity(body) + i, a * d[i]);
+  };
   for (int k = 0; k < m; ++k) {
     const ScalarEquation& eq = system.equations()[k];
     FunctionValue f;
@@ -52,8 +57,8 @@ ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinem
       }
       const double a = eq.coeff[term];
       c.phi[k] += a * value;
-      if (!L.is_ground(I.body)) c.jacobian.block<1, 6>(k, L.velocity(I.body)) += a * g.d_i;
-      if (!L.is_ground(J.body)) c.jacobian.block<1, 6>(k, L.velocity(J.body)) += a * g.d_j;
+      add_row(k, I.body, a, g.d_i);
+      add_row(k, J.body, a, g.d_j);
       c.quadratic[k] += a * g.quadratic;
     }
     if (eq.has_function) {
@@ -62,7 +67,29 @@ ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinem
       c.phi_tt[k] = -f.d2f;
     }
   }
+  c.jacobian.resize(m, L.nv());
+  c.jacobian.setFromTriplets(triplets.begin(), triplets.end());  // sums shared bodies
   return c;
+}
+
+void VisitKernelTerms(const System& system, const std::vector<BodyKinematics>& bodies,
+                      const std::function<void(const KernelTerm&)>& visit) {
+  KernelTerm term;
+  for (int k = 0; k < system.num_equations(); ++k) {
+    const ScalarEquation& eq = system.equations()[k];
+    for (int n = 0; n < eq.num_terms; ++n) {
+      const MarkerKinematics I = CalcMarkerKinematics(system, bodies, eq.marker_i[n]);
+      const MarkerKinematics J = CalcMarkerKinematics(system, bodies, eq.marker_j[n]);
+      const KernelEval g = EvalKernel(eq.kernel[n], I, J);
+      const double a = eq.coeff[n];
+      term.equation = k;
+      term.body_i = I.body;
+      term.body_j = J.body;
+      term.gradient << a * g.d_i, a * g.d_j;
+      term.hessian = a * EvalKernelHessian(eq.kernel[n], I, J);
+      visit(term);
+    }
+  }
 }
 
 WorstEquation FindWorstEquation(const Eigen::VectorXd& phi) {

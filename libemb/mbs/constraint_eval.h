@@ -5,9 +5,12 @@
 /// term C v, the quadratic term Cdot v and the explicit time derivatives, so that
 ///   velocity level:      C v + Phi_t = 0,
 ///   acceleration level:  C vdot = gamma = -(Cdot v) - Phi_tt.
-/// Cost O(m) (plus O(m nv) to zero the dense Jacobian).
+/// C is sparse: an equation touches at most four bodies (two kernel terms of a coupler),
+/// so a row has at most 24 non-zeros. Cost O(m).
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
+#include <functional>
 #include <vector>
 
 #include "libemb/mbs/kinematics.h"
@@ -31,10 +34,13 @@ class ConstraintWorkspace {
   std::vector<double> angle_;
 };
 
+/// The constraint Jacobian C (m x nv), row-major sparse.
+using ConstraintJacobian = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+
 /// Values of all equations at one configuration.
 struct ConstraintEval {
-  Eigen::VectorXd phi;        ///< Phi(q, t), m
-  Eigen::MatrixXd jacobian;   ///< C, m x nv
+  Eigen::VectorXd phi;          ///< Phi(q, t), m
+  ConstraintJacobian jacobian;  ///< C, m x nv (use Eigen::MatrixXd(C) for dense algorithms)
   Eigen::VectorXd quadratic;  ///< Cdot v, m
   Eigen::VectorXd phi_t;      ///< dPhi/dt, m
   Eigen::VectorXd phi_tt;     ///< d2Phi/dt2, m
@@ -45,6 +51,21 @@ struct ConstraintEval {
 /// Evaluates all equations at body kinematics `bodies` and time t.
 ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinematics>& bodies,
                                double t, ConstraintWorkspace* workspace);
+
+/// One kernel term (coeff g) of equation `equation` between the bodies of markers I and J,
+/// with its Jacobian row and second derivatives in x = [delta p_i, delta pi_i, delta p_j,
+/// delta pi_j] (primitive.h), both already multiplied by the coefficient.
+struct KernelTerm {
+  int equation{0};
+  int body_i{0}, body_j{0};                        ///< 0 = ground
+  Eigen::Matrix<double, 1, 12> gradient;           ///< coeff [d_i, d_j]
+  Eigen::Matrix<double, 12, 12> hessian;           ///< coeff EvalKernelHessian(...)
+};
+
+/// Calls `visit` for every kernel term of every equation, in equation order (the iteration
+/// matrices of the GGL DAE and of statics are assembled from these). Cost O(m).
+void VisitKernelTerms(const System& system, const std::vector<BodyKinematics>& bodies,
+                      const std::function<void(const KernelTerm&)>& visit);
 
 /// The equation with the largest |Phi| and its value (for "assembly failed at ..." reports).
 struct WorstEquation {

@@ -26,7 +26,7 @@ DofReport AnalyzeDof(const System& system, const Eigen::VectorXd& q, double t,
     return r;
   }
   const auto bodies = CalcBodyKinematics(system, q, Eigen::VectorXd());
-  Eigen::MatrixXd C = CalcConstraints(system, bodies, t, workspace).jacobian;
+  Eigen::MatrixXd C(CalcConstraints(system, bodies, t, workspace).jacobian);
   // Characteristic length: the largest marker offset from its body's CM (at least 1 mm).
   double length = 1e-3;
   for (const auto& m : system.markers()) length = std::max(length, m.p_BM.norm());

@@ -11,6 +11,11 @@ void ForceElement::AddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd
   DoAddForces(ctx, f);
 }
 
+void ForceElement::AddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr && sink != nullptr);
+  DoAddForceJacobian(ctx, sink);
+}
+
 void AddWrench(const StateLayout& layout, const BodyKinematics& body_kin, int body,
                const Eigen::Vector3d& p_WQ, const Eigen::Vector3d& F_W, const Eigen::Vector3d& T_W,
                Eigen::Ref<Eigen::VectorXd> f) {

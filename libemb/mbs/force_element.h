@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "libemb/mbs/force_jacobian.h"
 #include "libemb/mbs/kinematics.h"
 #include "libemb/mbs/state_layout.h"
 
@@ -35,6 +36,10 @@ class ForceElement {
 
   /// Adds this element's generalised forces to f (size nv).
   void AddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const;
+  /// Adds the analytic derivatives of those forces, K_ab = d f_a/d x_b and D_ab = d f_a/d v_b
+  /// (force_jacobian.h), to `sink`. The same (a, b) blocks at every state, so that a sparse
+  /// iteration matrix keeps its structure.
+  void AddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const;
   /// Stored (potential) energy [J]; 0 for non-conservative elements.
   double CalcPotentialEnergy(const ForceContext& ctx) const { return DoCalcPotentialEnergy(ctx); }
   /// Power dissipated by the element [W], >= 0 for a passive damper.
@@ -47,6 +52,7 @@ class ForceElement {
 
  protected:
   virtual void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const = 0;
+  virtual void DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const = 0;
   virtual double DoCalcPotentialEnergy(const ForceContext&) const { return 0.0; }
   virtual double DoCalcDissipatedPower(const ForceContext&) const { return 0.0; }
   virtual std::vector<int> DoMarkers() const = 0;

@@ -15,11 +15,15 @@
 /// At a solution mu = 0; the mu terms only pull q back onto the constraint manifold.
 /// lambda and mu are algebraic and excluded from IDA's error test.
 ///
-/// Jacobian dF/dy + cj dF/dy' is analytic: besides cj I, cj M, H, C, B and the gyroscopic
-/// term it has the second-derivative terms sum_k lambda_k K_k, sum_k mu_k K_k and v^T K_k
-/// of the constraint kernels (EvalKernelHessian), mapped from [delta p, delta pi] to q by
-/// delta pi = (2/|e|^2) Q(e)^T delta e, and the derivative of that map in B^T mu.
-/// Only force elements (springs, bushings) are differentiated by central differences.
+/// The iteration matrix dF/dy + cj dF/dy' is analytic: besides cj I, cj M, H, C, B and the
+/// gyroscopic term it has the second-derivative terms sum_k lambda_k K_k, sum_k mu_k K_k
+/// and v^T K_k of the constraint kernels (EvalKernelHessian), mapped from [delta p, delta pi]
+/// to q by X_b = [I 0; 0 (2/|e|^2) Q(e)^T] (delta pi = (2/|e|^2) Q(e)^T delta e), the
+/// derivative of that map in B^T mu, and the force elements' stiffness -K_ab X_b and
+/// damping -D_ab (force_jacobian.h). It is assembled block by block (per body, per kernel
+/// term, per force element) through a MatrixAssembler, into a dense matrix for the dense
+/// solver or into a compressed-column matrix whose structure is fixed at the first call
+/// (KLU): O(number of blocks) per evaluation, no n x n work on the sparse path.
 
 #include <Eigen/Dense>
 #include <string>
@@ -76,17 +80,20 @@ class GglDae final : public DaeProblem {
                       Eigen::Ref<Eigen::MatrixXd> jacobian) const override;
   Eigen::VectorXd DoDifferentialMask() const override;
   std::string DoComponentName(int i) const override;
-  /// Structural pattern from which bodies share an equation or a force element.
-  std::vector<std::pair<int, int>> DoJacobianPattern() const override;
+  bool DoHasSparseJacobian() const override { return true; }
+  void DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                            const Eigen::Ref<const Eigen::VectorXd>& yp,
+                            SparseMatrixd* jacobian) const override;
 
  private:
-  // B^T (nq x (m + nb)) at q from the velocity Jacobian C.
-  Eigen::MatrixXd CalcBTranspose(const Eigen::VectorXd& q, const Eigen::MatrixXd& C) const;
+  // The iteration matrix through `assembler` (begun by the caller; finished here).
+  void AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                        MatrixAssembler* assembler) const;
 
   const System& system_;
   GglLayout layout_;
-  Eigen::MatrixXd mass_;
   mutable ConstraintWorkspace workspace_;
+  mutable MatrixAssembler assembler_;  // keeps the sparse structure between calls
 };
 
 }  // namespace emb::mbs

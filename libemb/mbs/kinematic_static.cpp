@@ -7,78 +7,167 @@
 #include "libemb/common/error.h"
 #include "libemb/mbs/analysis_internal.h"
 #include "libemb/mbs/constraint_eval.h"
+#include "libemb/mbs/force_jacobian.h"
+#include "libemb/mbs/system.h"
 
 namespace emb::mbs::internal {
 namespace {
 
-// Static residual R(q, lambda) = [f(q, 0, t) - C^T lambda; Phi(q, t)].
-Eigen::VectorXd StaticResidual(const System& sys, const Eigen::VectorXd& q,
-                               const Eigen::VectorXd& lambda, double t, ConstraintWorkspace* ws,
-                               Eigen::MatrixXd* C_out = nullptr, double* f_scale = nullptr) {
-  const auto bodies = CalcBodyKinematics(sys, q, Eigen::VectorXd());
-  const ConstraintEval c = CalcConstraints(sys, bodies, t, ws);
-  const Eigen::VectorXd f = CalcGeneralizedForces(sys, bodies, t, ws);
-  Eigen::VectorXd r(f.size() + c.phi.size());
-  r << f - c.jacobian.transpose() * lambda, c.phi;
-  if (C_out) *C_out = c.jacobian;
-  if (f_scale) *f_scale = f.size() ? f.cwiseAbs().maxCoeff() : 0.0;
-  return r;
-}
-
-struct StaticOutcome {
-  bool converged{false};
-  int iterations{0};
-  double force_residual{0.0}, position_residual{0.0};
+// Static residual R(q, lambda) = [f(q, 0, t) - C^T lambda; Phi(q, t)] and what its Jacobian
+// needs.
+struct StaticEval {
+  Eigen::VectorXd r;
+  ConstraintJacobian C;
+  double f_scale{0.0};  // max |f|
+  std::vector<BodyKinematics> bodies;
 };
 
-// Newton on the static residual with a difference-quotient stiffness in [delta p, delta pi]
-// and the analytic -C^T / C blocks; backtracking on |R|.
-StaticOutcome SolveStatic(const System& sys, double t, const AnalysisSettings& s,
-                          ConstraintWorkspace* ws, Eigen::VectorXd* q, Eigen::VectorXd* lambda) {
+StaticEval EvalStatic(const System& sys, const Eigen::VectorXd& q, const Eigen::VectorXd& lambda,
+                      double t, ConstraintWorkspace* ws) {
+  StaticEval e;
+  e.bodies = CalcBodyKinematics(sys, q, Eigen::VectorXd());
+  ConstraintEval c = CalcConstraints(sys, e.bodies, t, ws);
+  const Eigen::VectorXd f = CalcGeneralizedForces(sys, e.bodies, t, ws);
+  e.r.resize(f.size() + c.phi.size());
+  e.r << f - c.jacobian.transpose() * lambda, c.phi;
+  e.f_scale = f.size() ? f.cwiseAbs().maxCoeff() : 0.0;
+  e.C = std::move(c.jacobian);
+  return e;
+}
+
+// K = dR/d[x, lambda] = [df/dx - sum_k lambda_k K_k, -C^T; C, 0] in x = [delta p, delta pi].
+Eigen::MatrixXd StaticJacobian(const System& sys, const StaticEval& e,
+                               const Eigen::VectorXd& lambda, double t,
+                               ConstraintWorkspace* ws) {
+  const StateLayout& L = sys.layout();
+  const int nv = L.nv(), m = sys.num_equations();
+  DenseForceJacobian forces(L);
+  const auto& elements = sys.force_elements();
+  for (std::size_t k = 0; k < elements.size(); ++k) {
+    const ForceContext ctx{&sys, &e.bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
+    elements[k]->AddForceJacobian(ctx, &forces);
+  }
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(nv + m, nv + m);
+  K.topLeftCorner(nv, nv) = forces.stiffness();
+  VisitKernelTerms(sys, e.bodies, [&](const KernelTerm& term) {
+    const int body[2] = {term.body_i, term.body_j};
+    for (int s = 0; s < 2; ++s)
+      for (int u = 0; u < 2; ++u)
+        if (!L.is_ground(body[s]) && !L.is_ground(body[u]))
+          K.block<6, 6>(L.velocity(body[s]), L.velocity(body[u])) -=
+              lambda[term.equation] * term.hessian.block<6, 6>(6 * s, 6 * u);
+  });
+  const Eigen::MatrixXd C(e.C);
+  K.block(0, nv, nv, m) = -C.transpose();
+  K.block(nv, 0, m, nv) = C;
+  return K;
+}
+
+// "body 'crank' moment y" for component i of a v-space vector.
+std::string ForceComponentName(const System& sys, int i) {
+  const int b = i / StateLayout::kVPerBody + 1;
+  const int c = i % StateLayout::kVPerBody;
+  static const char* kNames[] = {"force x (W)",  "force y (W)",  "force z (W)",
+                                 "moment x (B)", "moment y (B)", "moment z (B)"};
+  return "body '" + sys.body(b).name + "' " + kNames[c];
+}
+
+// Newton on the static residual, x updated on the rotation manifold (ApplyDisplacement).
+// Convergence: max |r_f| <= tol_f (1 + max |f|) and max |Phi| <= tol_Phi. Steps are damped by
+// backtracking on the merit phi = |W r|^2 / 2, W = diag(1/(tol_f (1 + max |f|)), 1/tol_Phi)
+// fixed per iteration, with the Armijo condition phi(a) <= (1 - 2 c a) phi(0), for which the
+// Newton direction is a descent direction whenever the stiffness is regular.
+StaticReport SolveStatic(const System& sys, double t, const AnalysisSettings& s,
+                         ConstraintWorkspace* ws, Eigen::VectorXd* q, Eigen::VectorXd* lambda) {
   const int nv = sys.layout().nv();
   const int m = sys.num_equations();
-  StaticOutcome out;
-  const double sqrt_eps = std::sqrt(std::numeric_limits<double>::epsilon());
-  auto norms = [&](const Eigen::VectorXd& r, double f_scale) {
-    const double fr = nv ? r.head(nv).cwiseAbs().maxCoeff() / (1.0 + f_scale) : 0.0;
-    const double pr = m ? r.tail(m).cwiseAbs().maxCoeff() : 0.0;
-    return std::pair{fr, pr};
+  // Armijo sufficient-decrease constant and the smallest step tried (2^-30).
+  constexpr double kArmijo = 1e-4;
+  constexpr int kMaxHalvings = 30;
+  StaticReport rep;
+  rep.t = t;
+  StaticEval e = EvalStatic(sys, *q, *lambda, t, ws);
+  ++rep.residual_evals;
+  auto weights = [&](const StaticEval& ev) {
+    Eigen::VectorXd w(nv + m);
+    w.head(nv).setConstant(1.0 / (s.static_force_tolerance * (1.0 + ev.f_scale)));
+    w.tail(m).setConstant(1.0 / s.assembly.tolerance);
+    return w;
   };
-  for (out.iterations = 0; out.iterations <= s.static_max_iterations; ++out.iterations) {
-    Eigen::MatrixXd C;
-    double f_scale = 0.0;
-    const Eigen::VectorXd r = StaticResidual(sys, *q, *lambda, t, ws, &C, &f_scale);
-    const auto [fr, pr] = norms(r, f_scale);
-    out.force_residual = fr;
-    out.position_residual = pr;
-    if (fr <= s.static_force_tolerance && pr <= s.assembly.tolerance) {
-      out.converged = true;
-      return out;
+  auto describe = [&](const StaticEval& ev) {
+    rep.force_residual = 0.0;
+    rep.position_residual = 0.0;
+    rep.worst_force.clear();
+    rep.worst_equation.clear();
+    Eigen::Index i = 0;
+    if (nv) {
+      rep.force_residual = ev.r.head(nv).cwiseAbs().maxCoeff(&i) / (1.0 + ev.f_scale);
+      rep.worst_force = ForceComponentName(sys, static_cast<int>(i));
     }
-    if (out.iterations == s.static_max_iterations) break;
-    Eigen::MatrixXd K = Eigen::MatrixXd::Zero(nv + m, nv + m);
-    for (int j = 0; j < nv; ++j) {
-      Eigen::VectorXd dx = Eigen::VectorXd::Zero(nv);
-      dx[j] = sqrt_eps;
-      const Eigen::VectorXd r1 =
-          StaticResidual(sys, ApplyDisplacement(sys, *q, dx), *lambda, t, ws);
-      K.col(j) = (r1 - r) / sqrt_eps;
+    if (m) {
+      rep.position_residual = ev.r.tail(m).cwiseAbs().maxCoeff(&i);
+      rep.worst_equation = sys.EquationName(static_cast<int>(i));
     }
-    K.block(0, nv, nv, m) = -C.transpose();
-    const Eigen::VectorXd step = -K.completeOrthogonalDecomposition().solve(r);
+  };
+  for (rep.iterations = 0;; ++rep.iterations) {
+    describe(e);
+    if (!e.r.allFinite()) {
+      rep.status = NewtonStatus::kNonFinite;
+      return rep;
+    }
+    if (rep.force_residual <= s.static_force_tolerance &&
+        rep.position_residual <= s.assembly.tolerance) {
+      rep.status = NewtonStatus::kConverged;
+      return rep;
+    }
+    if (rep.iterations == s.static_max_iterations) {
+      rep.status = NewtonStatus::kMaxIterations;
+      return rep;
+    }
+    const Eigen::MatrixXd K = StaticJacobian(sys, e, *lambda, t, ws);
+    const Eigen::VectorXd step = -K.completeOrthogonalDecomposition().solve(e.r);
+    const Eigen::VectorXd w = weights(e);
+    const double phi0 = 0.5 * e.r.cwiseProduct(w).squaredNorm();
     double alpha = 1.0;
-    const double r_norm = r.norm();
-    for (int halving = 0; halving < 20; ++halving, alpha *= 0.5) {
+    bool accepted = false;
+    for (int halving = 0; halving <= kMaxHalvings; ++halving, alpha *= 0.5) {
       const Eigen::VectorXd q_try = ApplyDisplacement(sys, *q, alpha * step.head(nv));
       const Eigen::VectorXd l_try = *lambda + alpha * step.tail(m);
-      if (StaticResidual(sys, q_try, l_try, t, ws).norm() < r_norm || halving == 19) {
+      StaticEval e_try = EvalStatic(sys, q_try, l_try, t, ws);
+      ++rep.residual_evals;
+      const double phi = 0.5 * e_try.r.cwiseProduct(w).squaredNorm();
+      if (std::isfinite(phi) && phi <= (1.0 - 2.0 * kArmijo * alpha) * phi0) {
         *q = q_try;
         *lambda = l_try;
+        e = std::move(e_try);
+        accepted = true;
         break;
       }
     }
+    rep.last_step_length = accepted ? alpha : 0.0;
+    if (!accepted) {
+      rep.status = NewtonStatus::kLineSearchFailed;
+      return rep;
+    }
   }
-  return out;
+}
+
+std::string StaticFailureMessage(const StaticReport& r, const AnalysisSettings& s) {
+  std::ostringstream msg;
+  msg << "static equilibrium at t = " << r.t << " s not found (" << Name(r.status) << ") after "
+      << r.iterations << " Newton iterations: relative force residual " << r.force_residual;
+  if (!r.worst_force.empty()) msg << " at " << r.worst_force;
+  msg << " (tolerance " << s.static_force_tolerance << "), constraint residual "
+      << r.position_residual;
+  if (!r.worst_equation.empty()) msg << " at " << r.worst_equation;
+  msg << " (tolerance " << s.assembly.tolerance << ")";
+  if (r.status == NewtonStatus::kLineSearchFailed)
+    msg << "; no step down to 2^-30 of the Newton step reduced the residual: the stiffness is "
+           "singular or indefinite there (an unloaded free motion, a limit point of the load) "
+           "or the start is too far";
+  if (r.status == NewtonStatus::kMaxIterations)
+    msg << "; raise static_iterations or start closer to equilibrium";
+  return msg.str();
 }
 
 }  // namespace
@@ -115,13 +204,14 @@ RunResult RunKinematic(const PreparedRun& run, const AnalysisSettings& settings,
     q = a.q;
     const auto bodies = CalcBodyKinematics(sys, q, Eigen::VectorXd());
     const ConstraintEval c0 = CalcConstraints(sys, bodies, t, &ws);
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(c0.jacobian);
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu((Eigen::MatrixXd(c0.jacobian)));
     v = lu.solve(-c0.phi_t);
     const auto bodies_v = CalcBodyKinematics(sys, q, v);
     const ConstraintEval c = CalcConstraints(sys, bodies_v, t, &ws);
     const Eigen::VectorXd vdot = lu.solve(c.gamma());
     const Eigen::VectorXd f = CalcGeneralizedForces(sys, bodies_v, t, &ws);
-    const Eigen::VectorXd lambda = c.jacobian.transpose().partialPivLu().solve(f - M * vdot);
+    const Eigen::VectorXd lambda =
+        Eigen::MatrixXd(c.jacobian.transpose()).partialPivLu().solve(f - M * vdot);
     sink(MakeSample(sys, t, q, v, vdot, lambda, &ws));
     ++r.num_samples;
     r.t_reached = t;
@@ -142,15 +232,11 @@ RunResult RunStatic(const PreparedRun& run, const AnalysisSettings& settings,
       sequence ? OutputTimes(settings) : std::vector<double>{settings.t_start};
   for (std::size_t k = 0; k < times.size(); ++k) {
     const double t = times[k];
-    const StaticOutcome o = SolveStatic(sys, t, settings, &ws, &q, &lambda);
-    r.newton_iterations += o.iterations;
-    if (!o.converged) {
+    r.static_report = SolveStatic(sys, t, settings, &ws, &q, &lambda);
+    r.newton_iterations += r.static_report.iterations;
+    if (!r.static_report.ok()) {
       r.status = RunStatus::kNewtonFailure;
-      std::ostringstream msg;
-      msg << "static equilibrium at t = " << t << " s not found after " << o.iterations
-          << " Newton iterations: relative force residual " << o.force_residual
-          << ", constraint residual " << o.position_residual;
-      r.message = msg.str();
+      r.message = StaticFailureMessage(r.static_report, settings);
       return r;
     }
     sink(MakeSample(sys, t, q, zero_v, zero_v, lambda, &ws));

@@ -79,8 +79,60 @@ Matrix3d Skew(const Vector3d& a) {
 }
 
 Vector3d RotationVectorFromRotation(const Matrix3d& R) {
-  const Eigen::AngleAxisd aa(R);
-  return aa.axis() * aa.angle();
+  return RotationVectorFromQuaternion(QuaternionFromRotation(R));
+}
+
+Vector3d RotationVectorFromQuaternion(const Vector4d& e_in) {
+  const Vector4d e = e_in[0] < 0.0 ? Vector4d(-e_in) : e_in;
+  const Vector3d v = e.tail<3>();
+  const double s = v.norm();
+  if (s == 0.0) return Vector3d::Zero();
+  return (2.0 * std::atan2(s, e[0]) / s) * v;
+}
+
+namespace {
+
+// Below this angle beta and beta'/t come from their series: the closed forms cancel
+// ~1/t^4 against each other, losing 5 digits at t = 0.25, where the truncated series
+// (through t^6) is already accurate to ~1e-11 relative.
+constexpr double kSeriesAngle = 0.25;
+
+// beta(t) = 1/t^2 - cot(t/2)/(2t) = 1/12 + t^2/720 + t^4/30240 + t^6/1209600 + ...
+double Beta(double t) {
+  if (t < kSeriesAngle) {
+    const double t2 = t * t;
+    return 1.0 / 12.0 + t2 * (1.0 / 720.0 + t2 * (1.0 / 30240.0 + t2 / 1209600.0));
+  }
+  return 1.0 / (t * t) - 1.0 / (2.0 * t * std::tan(0.5 * t));
+}
+
+// beta'(t)/t = -2/t^4 + cot(t/2)/(2 t^3) + 1/(4 t^2 sin^2(t/2))
+//            = 1/360 + t^2/7560 + t^4/201600 + t^6/5987520 + ...
+double BetaPrimeOverT(double t) {
+  if (t < kSeriesAngle) {
+    const double t2 = t * t;
+    return 1.0 / 360.0 + t2 * (1.0 / 7560.0 + t2 * (1.0 / 201600.0 + t2 / 5987520.0));
+  }
+  const double s = std::sin(0.5 * t);
+  return -2.0 / std::pow(t, 4) + 1.0 / (2.0 * t * t * t * std::tan(0.5 * t)) +
+         1.0 / (4.0 * t * t * s * s);
+}
+
+}  // namespace
+
+Matrix3d InverseLeftJacobianSO3(const Vector3d& theta) {
+  const Matrix3d S = Skew(theta);
+  return Matrix3d::Identity() - 0.5 * S + Beta(theta.norm()) * S * S;
+}
+
+Matrix3d InverseLeftJacobianSO3ProductDerivative(const Vector3d& theta, const Vector3d& w,
+                                                 bool transpose) {
+  const double t = theta.norm();
+  const Vector3d g = theta.cross(theta.cross(w));
+  const Matrix3d dg = theta.dot(w) * Matrix3d::Identity() + theta * w.transpose() -
+                      2.0 * w * theta.transpose();
+  const double sign = transpose ? -1.0 : 1.0;
+  return sign * 0.5 * Skew(w) + Beta(t) * dg + BetaPrimeOverT(t) * g * theta.transpose();
 }
 
 double WrapAngle(double a) {

@@ -42,8 +42,27 @@ Vector3d Euler313FromRotation(const Matrix3d& R);
 /// [a x], the skew matrix with [a x] b = a x b.
 Matrix3d Skew(const Vector3d& a);
 
-/// Rotation vector (axis * angle, angle in [0, pi]) of R.
+/// Rotation vector (axis * angle, angle in [0, pi]) of R, through its quaternion
+/// (RotationVectorFromQuaternion).
 Vector3d RotationVectorFromRotation(const Matrix3d& R);
+
+/// Rotation vector theta = 2 atan2(|v|, w) v / |v| of the quaternion e = (w, v) taken with
+/// w >= 0, so |theta| is in [0, pi]; exact to round-off at small angles (no acos).
+Vector3d RotationVectorFromQuaternion(const Vector4d& e);
+
+/// Inverse of the left Jacobian of SO(3):
+///   J_l^{-1}(theta) = I - 1/2 [theta x] + beta(t) [theta x]^2,
+///   beta(t) = 1/t^2 - cot(t/2) / (2 t),  t = |theta|  (beta -> 1/12 as t -> 0),
+/// so that a left perturbation exp([dpsi x]) exp([theta x]) = exp([(theta + dtheta) x])
+/// has dtheta = J_l^{-1}(theta) dpsi. Valid for t < 2 pi. J_l^{-1}(theta) theta = theta.
+Matrix3d InverseLeftJacobianSO3(const Vector3d& theta);
+
+/// d(J_l^{-1}(theta) w)/dtheta for a fixed w, or with `transpose` d(J_l^{-T}(theta) w)/dtheta:
+///   +-1/2 [w x] + beta [(theta.w) I + theta w^T - 2 w theta^T] + (beta'/t) g theta^T,
+///   g = theta x (theta x w), the sign + for J_l^{-1}, - for J_l^{-T}; beta'/t by its
+///   series below t = 0.25 (the closed form cancels there).
+Matrix3d InverseLeftJacobianSO3ProductDerivative(const Vector3d& theta, const Vector3d& w,
+                                                 bool transpose);
 
 /// Wraps an angle to (-pi, pi].
 double WrapAngle(double a);

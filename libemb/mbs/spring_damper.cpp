@@ -1,5 +1,7 @@
 #include "libemb/mbs/spring_damper.h"
 
+#include <cmath>
+
 #include "libemb/common/error.h"
 #include "libemb/mbs/constraint_eval.h"
 #include "libemb/mbs/primitive.h"
@@ -47,6 +49,36 @@ void TranslationalSpringDamper::DoAddForces(const ForceContext& ctx,
   AddWrench(sys.layout(), (*ctx.bodies)[J.body], J.body, J.p_WM, tension * s.u, zero, f);
 }
 
+void TranslationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
+                                                   ForceJacobianSink* sink) const {
+  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
+  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  LocalForceJacobian jac({I.body, J.body});
+  const State s = Calc(ctx);
+  if (s.length > 0.0) {
+    const MarkerDerivatives dI = DifferentiateMarker(I, 0, 2), dJ = DifferentiateMarker(J, 1, 2);
+    const Eigen::Vector3d d_dot = I.v_WM - J.v_WM;
+    const double tension = k_ * (s.length - l0_) + c_ * s.rate;
+    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - s.u * s.u.transpose();
+    const Eigen::Matrix3d A =
+        -s.u * (k_ * s.u.transpose() + c_ * d_dot.transpose() * P / s.length) -
+        tension * P / s.length;
+    const Eigen::Matrix3d B = -c_ * s.u * s.u.transpose();
+    const Eigen::MatrixXd dF_x =
+        A * (dI.point_x - dJ.point_x) + B * (dI.velocity_x - dJ.velocity_x);
+    const Eigen::MatrixXd dF_v = B * (dI.velocity_v - dJ.velocity_v);
+    const Eigen::Vector3d F = -tension * s.u;  // on I, at p_I; -F on J, at p_J
+    const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+    const Eigen::MatrixXd zero_d = Eigen::MatrixXd::Zero(3, 12);
+    jac.stiffness.topRows<6>() = WrenchStiffness(I.R_WB, 0, F, zero, I.s_W, dF_x, zero_d, dI.arm_x);
+    jac.stiffness.bottomRows<6>() =
+        WrenchStiffness(J.R_WB, 1, -F, zero, J.s_W, -dF_x, zero_d, dJ.arm_x);
+    jac.damping.topRows<6>() = WrenchDamping(I.R_WB, I.s_W, dF_v, zero_d);
+    jac.damping.bottomRows<6>() = WrenchDamping(J.R_WB, J.s_W, -dF_v, zero_d);
+  }
+  jac.ScatterTo(sink);
+}
+
 double TranslationalSpringDamper::DoCalcPotentialEnergy(const ForceContext& ctx) const {
   const double stretch = Calc(ctx).length - l0_;
   return 0.5 * k_ * stretch * stretch;
@@ -70,41 +102,67 @@ RotationalSpringDamper::RotationalSpringDamper(std::string name, int marker_i, i
                                                  << "': expected stiffness and damping >= 0");
 }
 
-void RotationalSpringDamper::Calc(const ForceContext& ctx, double* angle, double* rate) const {
+RotationalSpringDamper::State RotationalSpringDamper::Calc(const ForceContext& ctx) const {
   const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
   const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  // x_I closer than this to z_J (|x_I x z_J|^2, i.e. 1e-4 rad) leaves the angle undefined.
+  constexpr double kMinProjection = 1e-8;
+  const Eigen::Vector3d x_I = I.R_WM.col(0), z_J = J.R_WM.col(2);
+  const double projection = x_I.cross(z_J).squaredNorm();
+  if (!(projection >= kMinProjection))
+    EMB_THROW(NumericalError, "rotational spring-damper '"
+                                  << name() << "': its angle about z_J is undefined, x_I is "
+                                  << std::sqrt(projection)
+                                  << " rad from z_J; expected markers whose x_I stays away from "
+                                     "z_J (e.g. across a revolute or cylindrical joint)");
   const KernelEval g = EvalKernel({KernelKind::kAngle, 0, 0}, I, J);
+  State s;
   if (ctx.workspace != nullptr && ctx.angle_slot >= 0) {
     // Start on the branch nearest the free angle, then follow the turns.
-    *angle = ctx.workspace->Unwrap(ctx.angle_slot, g.value, a0_ + WrapAngle(g.value - a0_)) - a0_;
+    s.angle = ctx.workspace->Unwrap(ctx.angle_slot, g.value, a0_ + WrapAngle(g.value - a0_)) - a0_;
   } else {
-    *angle = WrapAngle(g.value - a0_);
+    s.angle = WrapAngle(g.value - a0_);
   }
-  *rate = g.rate;
+  s.gradient << g.d_i, g.d_j;
+  const BodyKinematics& bi = (*ctx.bodies)[I.body];
+  const BodyKinematics& bj = (*ctx.bodies)[J.body];
+  s.velocity << bi.v_WB, bi.omega_B, bj.v_WB, bj.omega_B;
+  s.rate = s.gradient.dot(s.velocity);
+  s.body_i = I.body;
+  s.body_j = J.body;
+  return s;
 }
 
 void RotationalSpringDamper::DoAddForces(const ForceContext& ctx,
                                          Eigen::Ref<Eigen::VectorXd> f) const {
-  double a = 0, rate = 0;
-  Calc(ctx, &a, &rate);
-  const double torque = -k_ * a - c_ * rate;
-  const System& sys = *ctx.system;
-  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
-  const Eigen::Vector3d T_W = torque * J.R_WM.col(2);
-  AddWrench(sys.layout(), (*ctx.bodies)[I.body], I.body, I.p_WM, Eigen::Vector3d::Zero(), T_W, f);
-  AddWrench(sys.layout(), (*ctx.bodies)[J.body], J.body, J.p_WM, Eigen::Vector3d::Zero(), -T_W, f);
+  const State s = Calc(ctx);
+  const double tau = k_ * s.angle + c_ * s.rate;
+  const StateLayout& L = ctx.system->layout();
+  if (!L.is_ground(s.body_i)) f.segment<6>(L.velocity(s.body_i)) -= tau * s.gradient.head<6>();
+  if (!L.is_ground(s.body_j)) f.segment<6>(L.velocity(s.body_j)) -= tau * s.gradient.tail<6>();
+}
+
+void RotationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
+                                                ForceJacobianSink* sink) const {
+  const State s = Calc(ctx);
+  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
+  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  const Eigen::Matrix<double, 12, 12> H = EvalKernelHessian({KernelKind::kAngle, 0, 0}, I, J);
+  const double tau = k_ * s.angle + c_ * s.rate;
+  LocalForceJacobian jac({s.body_i, s.body_j});
+  jac.stiffness = -s.gradient.transpose() * (k_ * s.gradient + c_ * s.velocity.transpose() * H) -
+                  tau * H;
+  jac.damping = -c_ * s.gradient.transpose() * s.gradient;
+  jac.ScatterTo(sink);
 }
 
 double RotationalSpringDamper::DoCalcPotentialEnergy(const ForceContext& ctx) const {
-  double a = 0, rate = 0;
-  Calc(ctx, &a, &rate);
+  const double a = Calc(ctx).angle;
   return 0.5 * k_ * a * a;
 }
 
 double RotationalSpringDamper::DoCalcDissipatedPower(const ForceContext& ctx) const {
-  double a = 0, rate = 0;
-  Calc(ctx, &a, &rate);
+  const double rate = Calc(ctx).rate;
   return c_ * rate * rate;
 }
 

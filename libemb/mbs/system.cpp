@@ -158,6 +158,9 @@ int System::AddCoupler(const std::string& name, const std::string& joint1, Joint
   e.type = j1.type;
   e.marker_i = j1.marker_i;
   e.marker_j = j1.marker_j;
+  e.marker_i2 = j2.marker_i;
+  e.marker_j2 = j2.marker_j;
+  e.second_joint = joint2;
   ScalarEquation q;
   q.element = static_cast<int>(elements_.size());
   q.label = "coupler " + joint1 + " - ratio " + joint2;
@@ -202,6 +205,14 @@ void System::Finalize() {
   for (auto& q : equations_)
     for (int k = 0; k < q.num_terms; ++k)
       q.angle_slot[k] = q.kernel[k].kind == KernelKind::kAngle ? num_angle_slots_++ : -1;
+  ports_.clear();
+  for (int e = 0; e < static_cast<int>(elements_.size()); ++e)
+    ports_.push_back({elements_[e].name, e, 0, elements_[e].marker_i, elements_[e].marker_j});
+  for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
+    const ConstraintElement& c = elements_[e];
+    if (c.kind == ElementKind::kCoupler)
+      ports_.push_back({c.name + ":" + c.second_joint, e, 1, c.marker_i2, c.marker_j2});
+  }
   force_angle_slot_.clear();
   for (const auto& fe : forces_) {
     const int n = fe->num_angle_slots();
@@ -226,6 +237,12 @@ System System::WithoutEquations(const std::vector<int>& equations) const {
   }
   s.Finalize();
   return s;
+}
+
+int System::second_reaction_port(int e) const {
+  for (std::size_t p = elements_.size(); p < ports_.size(); ++p)
+    if (ports_[p].element == e) return static_cast<int>(p);
+  return -1;
 }
 
 std::string System::EquationName(int k) const {

@@ -35,9 +35,23 @@ struct ConstraintElement {
   std::string name;
   ElementKind kind{ElementKind::kJoint};
   JointType type{JointType::kRevolute};  ///< for joints; for motions the joint's type
-  int marker_i{-1}, marker_j{-1};        ///< for joints and motions (the joint's markers)
-  int first_equation{0};                 ///< set by Finalize
+  /// Joints and motions: the joint's markers. Couplers: the markers of the first joint.
+  int marker_i{-1}, marker_j{-1};
+  int marker_i2{-1}, marker_j2{-1};  ///< couplers: the markers of the second joint
+  std::string second_joint;          ///< couplers: the second joint's name
+  int first_equation{0};             ///< set by Finalize
   int num_equations{0};
+};
+
+/// Where a constraint element's reaction is reported: the load the element puts on the
+/// body of marker I through the markers (I, J) of one kernel term (reactions.h). Every
+/// element has one port (term 0, its own or its first joint's markers); a coupler has a
+/// second port on the second joint (term 1), because its multiplier loads both joints.
+struct ReactionPort {
+  std::string name;  ///< the element's name; "<coupler>:<joint2>" for a coupler's second port
+  int element{0};
+  int term{0};
+  int marker_i{-1}, marker_j{-1};
 };
 
 class System {
@@ -88,6 +102,11 @@ class System {
   int num_angle_slots() const { return num_angle_slots_; }
   /// First angle slot of force element k (-1 if it needs none).
   int force_angle_slot(int k) const { return force_angle_slot_.at(k); }
+  /// Reaction ports (set by Finalize): port e < elements().size() is element e's first port;
+  /// the second ports of the couplers follow in element order.
+  const std::vector<ReactionPort>& reaction_ports() const { return ports_; }
+  /// The second port of coupler element e, or -1.
+  int second_reaction_port(int e) const;
   /// "joint 'crank_pin': parallel z_I.x_J" for equation k.
   std::string EquationName(int k) const;
   /// Labels of equations removed by WithoutEquations (empty otherwise).
@@ -108,6 +127,7 @@ class System {
   std::vector<RigidBody> bodies_;
   std::vector<Marker> markers_;
   std::vector<ConstraintElement> elements_;
+  std::vector<ReactionPort> ports_;
   // Motions/couplers: their equations before Finalize numbers them.
   std::vector<ScalarEquation> pending_;
   std::vector<ScalarEquation> equations_;

@@ -32,13 +32,13 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
                              const std::string& scene, const std::string& analysis)
     : system_(system), file_(path) {
   file_.SetAttribute("/", "format", std::string("emb-mbs-results"));
-  file_.SetAttribute("/", "version", 1LL);
+  file_.SetAttribute("/", "version", 2LL);
   file_.SetAttribute("/", "units", std::string("SI (m, kg, s, N, rad)"));
   file_.SetAttribute("/", "scene", scene);
   file_.SetAttribute("/", "analysis", analysis);
   file_.SetAttribute("/", "status", std::string("running"));
   const int nb = system.layout().num_moving();
-  const int ne = static_cast<int>(system.elements().size());
+  const int np = static_cast<int>(system.reaction_ports().size());
   const int m = system.num_equations();
   std::vector<std::string> bodies, elements, equations;
   std::vector<double> mass, inertia;
@@ -54,6 +54,9 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
   file_.WriteStrings("/model/elements", elements);
   file_.WriteStrings("/model/element_types", ElementTypes(system));
   file_.WriteStrings("/model/equations", equations);
+  std::vector<std::string> ports;
+  for (const auto& p : system.reaction_ports()) ports.push_back(p.name);
+  file_.WriteStrings("/model/reaction_ports", ports);
   file_.WriteStrings("/model/removed_equations", system.removed_equations());
   file_.WriteDoubles("/model/mass", mass, {static_cast<std::uint64_t>(nb)});
   file_.WriteDoubles("/model/inertia", inertia, {static_cast<std::uint64_t>(nb), 3, 3});
@@ -63,13 +66,15 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
   vdot_ = file_.AddSeries("/state/vdot", 6 * nb);
   euler_ = file_.AddSeries("/state/euler313", 3 * nb);
   lambda_ = file_.AddSeries("/multipliers/lambda", m);
-  // Stored as [N, 3 ne] rows; the attribute says how to reshape to [N, ne, 3].
-  force_ = file_.AddSeries("/reactions/force", 3 * ne);
-  torque_ = file_.AddSeries("/reactions/torque", 3 * ne);
+  // Stored as [N, 3 np] rows; the attribute says how to reshape to [N, np, 3].
+  force_ = file_.AddSeries("/reactions/force", 3 * np);
+  torque_ = file_.AddSeries("/reactions/torque", 3 * np);
   file_.SetAttribute("/reactions/force", "shape",
-                     std::string("[N, 3 * num_elements]: reshape to [N, num_elements, 3]"));
+                     std::string("[N, 3 * num_ports]: reshape to [N, num_ports, 3] "
+                                 "(/model/reaction_ports)"));
   file_.SetAttribute("/reactions/torque", "shape",
-                     std::string("[N, 3 * num_elements]: reshape to [N, num_elements, 3]"));
+                     std::string("[N, 3 * num_ports]: reshape to [N, num_ports, 3] "
+                                 "(/model/reaction_ports)"));
   energy_ = file_.AddSeries("/energy", 5);
   file_.SetAttribute("/energy", "columns",
                      std::string("kinetic J, gravity potential J, elastic J, total J, "
@@ -88,9 +93,10 @@ void ResultsWriter::Write(const mbs::Sample& s) {
   const Eigen::VectorXd e = Euler(system_, s.q);
   file_.Append(euler_, e.data());
   file_.Append(lambda_, s.lambda.data());
-  const int ne = static_cast<int>(s.reactions.rows());
-  Eigen::VectorXd f(3 * ne), t(3 * ne);
-  for (int k = 0; k < ne; ++k) {
+  const int np = static_cast<int>(s.reactions.rows());
+  EMB_CHECK(np == static_cast<int>(system_.reaction_ports().size()));
+  Eigen::VectorXd f(3 * np), t(3 * np);
+  for (int k = 0; k < np; ++k) {
     f.segment<3>(3 * k) = s.reactions.row(k).head<3>().transpose();
     t.segment<3>(3 * k) = s.reactions.row(k).tail<3>().transpose();
   }
@@ -108,6 +114,11 @@ void ResultsWriter::Finish(const mbs::RunResult& r) {
   file_.SetAttribute("/", "status", std::string(mbs::Name(r.status)));
   file_.SetAttribute("/", "message", r.message);
   file_.SetAttribute("/", "t_reached", r.t_reached);
+  if (r.atol > 0.0) {  // a dynamic run: the tolerances and solver IDA actually used
+    file_.SetAttribute("/", "atol", r.atol);
+    file_.SetAttribute("/", "multiplier_atol", r.multiplier_atol);
+    file_.SetAttribute("/", "linear_solver", std::string(Name(r.linear_solver)));
+  }
   file_.Flush();
 }
 
@@ -123,6 +134,10 @@ std::vector<std::string> ValidChannelNames(const mbs::System& system) {
   for (const auto& e : system.elements())
     for (const char* q : {"F", "T"})
       for (const char* c : xyz) n.push_back(e.name + "." + q + "." + c);
+  for (const auto& e : system.elements())
+    if (e.kind == mbs::ElementKind::kCoupler)
+      for (const char* q : {"F2", "T2"})
+        for (const char* c : xyz) n.push_back(e.name + "." + q + "." + c);
   for (const char* c : {"kinetic", "gravity", "elastic", "total"})
     n.push_back(std::string("energy.") + c);
   n.push_back("residual.position");
@@ -157,6 +172,9 @@ CsvWriter::CsvWriter(const std::string& path, const mbs::System& system,
     } else if (quantity == "F" || quantity == "T") {
       ch = {quantity == "F" ? Channel::Kind::kForce : Channel::Kind::kTorque,
             system.FindElement(owner), comp_index(comps)};
+    } else if (quantity == "F2" || quantity == "T2") {
+      ch = {quantity == "F2" ? Channel::Kind::kForce : Channel::Kind::kTorque,
+            system.second_reaction_port(system.FindElement(owner)), comp_index(comps)};
     } else {
       const int b = system.FindBody(owner);
       if (quantity == "euler")

@@ -4,14 +4,18 @@
 /// CSV of chosen channels. Every sample is appended and flushed at once, so a run that
 /// fails (integrator failure) or is interrupted keeps every sample before it.
 ///
-/// HDF5 layout (format "emb-mbs-results", version 1, SI units; N samples, nb moving bodies,
-/// m equations, ne constraint elements; row-major as h5py shows it):
+/// HDF5 layout (format "emb-mbs-results", version 2, SI units; N samples, nb moving bodies,
+/// m equations, ne constraint elements, np >= ne reaction ports; row-major as h5py shows
+/// it):
 ///   /                   attrs format, version, units, scene, analysis, status, message,
-///                       t_reached (the last three written at the end of the run)
+///                       t_reached (the last three written at the end of the run); dynamic
+///                       runs also atol, multiplier_atol, linear_solver as IDA used them
 ///   /model/bodies       [nb] names (ground excluded), order of the state blocks
 ///   /model/elements     [ne] constraint element names (joints, motions, couplers)
 ///   /model/element_types[ne] "revolute", "motion", ...
 ///   /model/equations    [m] "revolute 'main': at-point x", ... (order of lambda)
+///   /model/reaction_ports [np] the elements in order, then "<coupler>:<joint2>" for the
+///                       second joint of every coupler (a coupler loads both its joints)
 ///   /model/removed_equations  names of redundant equations removed (may be empty)
 ///   /model/mass [nb], /model/inertia [nb, 3, 3] (about the CM in B)
 ///   /time               [N] s
@@ -20,8 +24,9 @@
 ///   /state/vdot         [N, 6 nb] time derivative of v
 ///   /state/euler313     [N, 3 nb] per body (psi, theta, phi) rad, seed eq. (1.20)
 ///   /multipliers/lambda [N, m] N or N m
-///   /reactions/force    [N, ne, 3] N, on the body of marker I from J, at I, in J's axes
-///   /reactions/torque   [N, ne, 3] N m, about marker I, in J's axes
+///   /reactions/force    [N, np, 3] N, on the body of marker I from J, at I, in J's axes
+///   /reactions/torque   [N, np, 3] N m, about marker I, in J's axes
+///                       (stored as [N, 3 np]; version 1 had [N, 3 ne] and no ports)
 ///   /energy             [N, 5] kinetic, gravity potential, elastic, total (J),
 ///                       dissipated power (W)
 ///   /residuals          [N, 2] max |Phi| (m or rad), max |C v + Phi_t| (m/s or rad/s)
@@ -56,7 +61,9 @@ class ResultsWriter {
 /// A CSV file with a header line "t,<channel>,..." and one line per sample.
 /// Channels: <body>.p.{x,y,z} (CM position, m), <body>.v.{x,y,z} (m/s), <body>.a.{x,y,z}
 /// (m/s^2), <body>.omega.{x,y,z} (rad/s, in W), <body>.euler.{psi,theta,phi} (rad),
-/// <element>.F.{x,y,z} and <element>.T.{x,y,z} (reactions, joint axes),
+/// <element>.F.{x,y,z} and <element>.T.{x,y,z} (reactions, joint axes; for a coupler at its
+/// first joint), <coupler>.F2.{x,y,z} and <coupler>.T2.{x,y,z} (a coupler's reaction at its
+/// second joint),
 /// energy.{kinetic,gravity,elastic,total}, residual.{position,velocity}.
 class CsvWriter {
  public:
@@ -78,7 +85,7 @@ class CsvWriter {
       kEnergy,
       kResidual
     } kind;
-    int index;      // body or element
+    int index;      // body or reaction port
     int component;  // 0..3
   };
   const mbs::System& system_;

@@ -12,7 +12,9 @@
 
 namespace emb::scene {
 
-/// Where results go.
+/// Where results go. LoadScene() resolves relative paths against the directory of the
+/// scene file (not the working directory), so a scene writes next to itself wherever it is
+/// run from; absolute paths are kept. ParseScene() leaves them as written.
 struct OutputSpec {
   std::string file;                   ///< HDF5 results (empty: none unless the CLI says)
   std::string csv;                    ///< optional CSV of chosen channels
@@ -28,7 +30,8 @@ struct Scene {
   OutputSpec output;
 };
 
-/// Reads and validates a scene file. @throws InputError with file:line for anything wrong:
+/// Reads and validates a scene file; output paths become relative to its directory
+/// (OutputSpec). @throws InputError with file:line for anything wrong:
 /// YAML syntax, unknown keys (with a did-you-mean), unknown part/marker/joint names, zero or
 /// non-unit axes, bad mass or inertia, bad functions.
 Scene LoadScene(const std::string& path);

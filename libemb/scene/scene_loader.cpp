@@ -1,4 +1,5 @@
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <numbers>
@@ -144,24 +145,41 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   s->output_step = r.GetDouble("output_step", s->output_step);
   s->ida.rtol = r.GetDouble("rtol", s->ida.rtol);
   s->ida.atol = r.GetDouble("atol", s->ida.atol);
-  s->ida.algebraic_atol = r.GetDouble("multiplier_atol", s->ida.algebraic_atol);
+  s->atol_floor_relative = r.GetDouble("atol_floor_relative", s->atol_floor_relative);
+  s->initial_step_fraction = r.GetDouble("initial_step_fraction", s->initial_step_fraction);
+  s->multiplier_atol = r.GetDouble("multiplier_atol", s->multiplier_atol);
+  s->multiplier_atol_relative =
+      r.GetDouble("multiplier_atol_relative", s->multiplier_atol_relative);
   s->ida.max_step = r.GetDouble("max_step", s->ida.max_step);
   s->ida.max_num_steps = r.GetInt("max_steps", static_cast<int>(s->ida.max_num_steps));
-  const std::string ls = r.GetString("linear_solver", "dense");
-  EMB_THROW_IF(ls != "dense" && ls != "klu",
-               Where(file, node) << ": analysis linear_solver: expected 'dense' or 'klu', got '"
-                                 << ls << "'");
-  s->ida.linear_solver = ls == "klu" ? IdaLinearSolver::kKlu : IdaLinearSolver::kDense;
+  try {
+    s->ida.linear_solver = ParseIdaLinearSolver(r.GetString("linear_solver", "auto"));
+  } catch (const InputError& e) {
+    EMB_THROW(InputError, Where(file, node) << ": analysis " << e.what());
+  }
   s->remove_redundant = r.GetBool("remove_redundant", s->remove_redundant);
   s->assembly.tolerance = r.GetDouble("assembly_tolerance", s->assembly.tolerance);
   s->assembly.max_iterations = r.GetInt("assembly_iterations", s->assembly.max_iterations);
   s->static_force_tolerance = r.GetDouble("static_tolerance", s->static_force_tolerance);
+  s->static_max_iterations = r.GetInt("static_iterations", s->static_max_iterations);
   r.Finish();
   EMB_THROW_IF(!(s->output_step > 0), Where(file, node) << ": analysis output_step: expected > 0");
   EMB_THROW_IF(!(s->t_end >= s->t_start), Where(file, node)
                                               << ": analysis: expected t_end >= t_start");
   EMB_THROW_IF(!(s->ida.rtol > 0 && s->ida.atol > 0),
-               Where(file, node) << ": analysis: expected rtol > 0 and atol > 0");
+               Where(file, node) << ": analysis: expected rtol > 0 and atol > 0, got "
+                                 << s->ida.rtol << " and " << s->ida.atol);
+  EMB_THROW_IF(!(s->atol_floor_relative >= 0 && s->multiplier_atol >= 0 &&
+                 s->multiplier_atol_relative > 0 && s->initial_step_fraction >= 0),
+               Where(file, node) << ": analysis: expected atol_floor_relative >= 0, "
+                                    "multiplier_atol >= 0, multiplier_atol_relative > 0 and "
+                                    "initial_step_fraction >= 0, got "
+                                 << s->atol_floor_relative << ", " << s->multiplier_atol << ", "
+                                 << s->multiplier_atol_relative << " and "
+                                 << s->initial_step_fraction);
+  EMB_THROW_IF(s->static_max_iterations < 1,
+               Where(file, node) << ": analysis static_iterations: expected >= 1, got "
+                                 << s->static_max_iterations);
 }
 
 void ReadOutput(const YAML::Node& node, const std::string& file, OutputSpec* o) {
@@ -211,7 +229,12 @@ Scene LoadScene(const std::string& path) {
   EMB_THROW_IF(!in, "scene file '" << path << "' cannot be read (does it exist?)");
   std::ostringstream text;
   text << in.rdbuf();
-  return ParseScene(text.str(), path);
+  Scene scene = ParseScene(text.str(), path);
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  for (std::string* p : {&scene.output.file, &scene.output.csv})
+    if (!p->empty() && std::filesystem::path(*p).is_relative())
+      *p = (dir / *p).lexically_normal().string();
+  return scene;
 }
 
 }  // namespace emb::scene

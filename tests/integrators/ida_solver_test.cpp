@@ -1,7 +1,8 @@
 // The IDA wrapper on a small index-1 DAE with a closed-form solution:
 //   y0' = -k y0,   0 = y1 - y0^2   =>  y0 = exp(-k t), y1 = exp(-2 k t).
 // Checks accuracy against the closed form, an error that falls with the tolerance, the
-// analytic Jacobian path and the difference-quotient path, and failure/bad-input handling.
+// analytic Jacobian path and the difference-quotient path, KLU on a dense-only and on a
+// sparse problem, the automatic solver choice, and failure/bad-input handling.
 
 #include "libemb/integrators/ida_solver.h"
 
@@ -19,8 +20,9 @@ constexpr double kRate = 2.0;  // k [1/s]
 
 class DecayDae final : public DaeProblem {
  public:
-  explicit DecayDae(bool analytic, bool throw_at_half = false)
-      : analytic_(analytic), throw_(throw_at_half) {}
+  explicit DecayDae(bool analytic, bool throw_at_half = false, bool sparse = false)
+      : analytic_(analytic), throw_(throw_at_half), sparse_(sparse) {}
+  mutable int sparse_calls{0};
 
  protected:
   int DoSize() const override { return 2; }
@@ -38,10 +40,23 @@ class DecayDae final : public DaeProblem {
                       Eigen::Ref<Eigen::MatrixXd> J) const override {
     J << cj + kRate, 0.0, -2.0 * y[0], 1.0;
   }
+  bool DoHasSparseJacobian() const override { return sparse_; }
+  // Three structural entries: J(0, 1) is zero for every state.
+  void DoCalcSparseJacobian(double, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                            const Eigen::Ref<const Eigen::VectorXd>&,
+                            SparseMatrixd* J) const override {
+    ++sparse_calls;
+    assembler_.BeginSparse(J, 2, 2);
+    assembler_.Add(0, 0, cj + kRate);
+    assembler_.Add(1, 0, -2.0 * y[0]);
+    assembler_.Add(1, 1, 1.0);
+    assembler_.Finish();
+  }
   Eigen::VectorXd DoDifferentialMask() const override { return Eigen::Vector2d(1.0, 0.0); }
 
  private:
-  bool analytic_, throw_;
+  bool analytic_, throw_, sparse_;
+  mutable MatrixAssembler assembler_;
 };
 
 double ErrorAt(double rtol, bool analytic) {
@@ -86,6 +101,46 @@ TEST(IdaSolver, KluLinearSolverAgreesWithDense) {
   EXPECT_THROW(
       IdaSolver(no_jacobian, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o),
       InputError);
+}
+
+TEST(IdaSolver, KluOnTheProblemsSparseMatrix) {
+  // A problem with its own compressed-column Jacobian: KLU uses its 3-entry structure.
+  const DecayDae dae(true, false, /*sparse=*/true);
+  IdaOptions o;
+  o.rtol = 1e-8;
+  o.atol = 1e-10;
+  o.linear_solver = IdaLinearSolver::kKlu;
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
+  EXPECT_EQ(ida.jacobian_nonzeros(), 3);
+  ASSERT_TRUE(ida.AdvanceTo(1.0).ok());
+  EXPECT_LT(std::abs(ida.y()[0] - std::exp(-kRate)), 1e-7);
+  EXPECT_GT(dae.sparse_calls, 1);
+  EXPECT_EQ(ida.linear_solver(), IdaLinearSolver::kKlu);
+}
+
+TEST(IdaSolver, AutoPicksKluOnlyForLargeSparseProblems) {
+  const DecayDae sparse(true, false, true), dense_only(true);
+  IdaOptions o;  // kAuto
+  const Eigen::Vector2d y0(1.0, 1.0), yp0(-kRate, 0.0);
+  EXPECT_EQ(IdaSolver(sparse, 0.0, y0, yp0, o).linear_solver(), IdaLinearSolver::kDense);
+  o.sparse_min_size = 2;
+  EXPECT_EQ(IdaSolver(sparse, 0.0, y0, yp0, o).linear_solver(), IdaLinearSolver::kKlu);
+  EXPECT_EQ(IdaSolver(dense_only, 0.0, y0, yp0, o).linear_solver(), IdaLinearSolver::kDense);
+  EXPECT_EQ(ParseIdaLinearSolver("klu"), IdaLinearSolver::kKlu);
+  EXPECT_THROW(ParseIdaLinearSolver("umfpack"), InputError);
+}
+
+TEST(IdaSolver, PerComponentTolerances) {
+  const DecayDae dae(true);
+  IdaOptions o;
+  o.rtol = 1e-8;
+  o.component_atol = Eigen::Vector2d(1e-10, 1e-3);  // the algebraic one loose
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
+  ASSERT_TRUE(ida.AdvanceTo(1.0).ok());
+  EXPECT_LT(std::abs(ida.y()[0] - std::exp(-kRate)), 1e-7);
+  o.component_atol = Eigen::Vector3d(1e-10, 1e-3, 1.0);
+  EXPECT_THROW(IdaSolver(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o),
+               InputError);
 }
 
 TEST(IdaSolver, AlgebraicComponentFollows) {

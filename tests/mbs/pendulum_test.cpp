@@ -1,5 +1,6 @@
 // Pendulum dynamics: small-amplitude period, conservative double pendulum energy and
-// constraint drift over many periods, and an IDA tolerance sweep whose error falls.
+// constraint drift over many periods, an IDA tolerance sweep whose error falls, and the
+// dynamic analysis' tolerance rules (atol floor, multiplier atol, first step).
 
 #include <gtest/gtest.h>
 
@@ -162,6 +163,46 @@ TEST(DoublePendulum, ToleranceSweepErrorFallsWithTolerance) {
   for (std::size_t k = 1; k < errors.size(); ++k)
     EXPECT_LT(errors[k], kAllowedNonMonotoneFactor * errors[k - 1]) << "k=" << k;
   EXPECT_LT(errors.back(), 1e-4 * errors.front());
+}
+
+// --- the dynamic analysis' tolerance rules (analysis.h) -------------------------------------
+
+RunResult RunPendulum(double mass, double rtol, double atol, double initial_step_fraction,
+                      Sample* first = nullptr) {
+  const System sys = testing::Pendulum(mass, kLength, 0.3, kGravity);
+  AnalysisSettings s;
+  s.type = AnalysisType::kDynamic;
+  s.t_end = 0.2;
+  s.output_step = 0.05;
+  s.ida.rtol = rtol;
+  s.ida.atol = atol;
+  s.initial_step_fraction = initial_step_fraction;
+  bool seen = false;
+  return RunAnalysis(PrepareRun(sys, s), s, [&](const Sample& smp) {
+    if (first && !seen) *first = smp, seen = true;
+  });
+}
+
+TEST(DynamicTolerances, AtolBelowTheModelsFloorIsRaisedWithAWarning) {
+  // The pendulum is 1 m long: floor = 1e-13 x max(1, 1 m).
+  const RunResult r = RunPendulum(kMass, 1e-8, 1e-16, 1e-3);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_DOUBLE_EQ(r.atol, 1e-13);
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].find("raised to 1e-13"), std::string::npos) << r.warnings[0];
+  EXPECT_TRUE(RunPendulum(kMass, 1e-8, 1e-10, 1e-3).warnings.empty());
+}
+
+TEST(DynamicTolerances, MultiplierAtolFollowsTheForceScale) {
+  // 1e-4 of the largest force at t0 (the weight m g or the pivot reaction, whichever is
+  // larger): a pendulum 1000 times heavier gets a 1000 times looser multiplier atol.
+  Sample light, heavy;
+  const RunResult a = RunPendulum(1.0, 1e-8, 1e-10, 1e-3, &light);
+  const RunResult b = RunPendulum(1000.0, 1e-8, 1e-10, 1e-3, &heavy);
+  ASSERT_TRUE(a.ok() && b.ok()) << a.message << b.message;
+  const double f_ref = std::max(kGravity, light.lambda.cwiseAbs().maxCoeff());
+  EXPECT_NEAR(a.multiplier_atol, 1e-4 * f_ref, 1e-12);
+  EXPECT_NEAR(b.multiplier_atol / a.multiplier_atol, 1000.0, 1e-9);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // Rotations: quaternion <-> matrix, Euler 3-1-3 (seed eq. 1.20) round trips including the
-// singular theta = 0, and a body rotating through theta = 0 in a dynamic run.
+// singular theta = 0, rotation vectors from quaternions, the inverse left Jacobian of SO(3)
+// and its derivative against differences, and a body rotating through theta = 0 in a
+// dynamic run.
 
 #include "libemb/mbs/rotation.h"
 
@@ -51,6 +53,63 @@ TEST(Rotation, RateMatrixProperties) {
   const auto Q = QuaternionRateMatrix(e);
   EXPECT_LT((Q.transpose() * Q - Matrix3d::Identity()).norm(), kRoundOff);
   EXPECT_LT((Q.transpose() * e).norm(), kRoundOff);
+}
+
+TEST(Rotation, RotationVectorFromQuaternionSmallLargeAndNearPi) {
+  const Vector3d axis = Vector3d(2, -1, 0.5).normalized();
+  for (double angle : {1e-12, 1e-6, 0.3, 2.5, std::numbers::pi - 1e-9}) {
+    const Matrix3d R = Eigen::AngleAxisd(angle, axis).toRotationMatrix();
+    const Vector3d theta = RotationVectorFromRotation(R);
+    // Relative accuracy of atan2 on the quaternion: round-off even at 1e-12 rad.
+    EXPECT_LT((theta - angle * axis).norm(), 1e-15 + 1e-14 * angle) << angle;
+    // The sign of the quaternion does not matter.
+    const Vector4d e = QuaternionFromRotation(R);
+    EXPECT_LT((RotationVectorFromQuaternion(-e) - theta).norm(), 1e-14) << angle;
+  }
+}
+
+// Central differences with h = 1e-7 of O(1) smooth functions: truncation ~1e-14,
+// cancellation ~1e-9.
+constexpr double kSo3DifferenceTolerance = 1e-7;
+
+TEST(Rotation, InverseLeftJacobianMapsLeftPerturbations) {
+  // exp([dpsi x]) exp([theta x]) = exp([(theta + J_l^{-1}(theta) dpsi) x]) to first order.
+  const double h = 1e-7;
+  for (double t : {1e-3, 0.2, 0.3, 2.8}) {
+    const Vector3d theta = t * Vector3d(0.3, -0.8, 0.52).normalized();
+    const Matrix3d R = Eigen::AngleAxisd(t, theta.normalized()).toRotationMatrix();
+    const Matrix3d Jinv = InverseLeftJacobianSO3(theta);
+    EXPECT_LT((Jinv * theta - theta).norm(), 1e-14);
+    for (int k = 0; k < 3; ++k) {
+      const Matrix3d dR = Eigen::AngleAxisd(h, Vector3d::Unit(k)).toRotationMatrix();
+      const Matrix3d dRm = Eigen::AngleAxisd(-h, Vector3d::Unit(k)).toRotationMatrix();
+      const Vector3d d = (RotationVectorFromRotation(dR * R) - RotationVectorFromRotation(dRm * R)) /
+                         (2 * h);
+      EXPECT_LT((d - Jinv.col(k)).norm(), kSo3DifferenceTolerance) << "t=" << t << " k=" << k;
+    }
+  }
+}
+
+TEST(Rotation, InverseLeftJacobianProductDerivativeBothBranches) {
+  // Angles on both sides of the series/closed-form switch at t = 0.25 and a large one.
+  const double h = 1e-7;
+  const Vector3d w(0.7, -1.3, 2.1);
+  for (double t : {1e-4, 0.1, 0.2499, 0.2501, 1.0, 3.0}) {
+    const Vector3d theta = t * Vector3d(-0.4, 0.1, 0.9).normalized();
+    for (bool transpose : {false, true}) {
+      auto product = [&](const Vector3d& th) {
+        const Matrix3d J = InverseLeftJacobianSO3(th);
+        return transpose ? Vector3d(J.transpose() * w) : Vector3d(J * w);
+      };
+      const Matrix3d D = InverseLeftJacobianSO3ProductDerivative(theta, w, transpose);
+      for (int k = 0; k < 3; ++k) {
+        const Vector3d dt = h * Vector3d::Unit(k);
+        const Vector3d fd = (product(theta + dt) - product(theta - dt)) / (2 * h);
+        EXPECT_LT((fd - D.col(k)).norm(), kSo3DifferenceTolerance)
+            << "t=" << t << " transpose=" << transpose << " k=" << k;
+      }
+    }
+  }
 }
 
 TEST(Rotation, BodyRotatesThroughEulerThetaZero) {

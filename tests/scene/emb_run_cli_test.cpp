@@ -1,5 +1,7 @@
 // `emb dof` and `emb run` as a user meets them: the DOF table and JSON, a run writing HDF5
-// and CSV, options documented in --help, and bad input giving a message and an exit code.
+// and CSV (next to the scene, or where -o says), the solver and tolerances in the summary,
+// an integrator failure that keeps its results, options documented in --help, and bad
+// input giving a message and an exit code.
 
 #include <gtest/gtest.h>
 
@@ -9,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "libemb/io/hdf5_file.h"
 #include "tests/support/cli_fixture.h"
 
 namespace {
@@ -50,11 +53,56 @@ TEST_F(EmbMbsCli, RunWritesHdf5AndCsv) {
   EXPECT_EQ(header, "t,rod.p.x,rod.p.y,hinge.F.x,hinge.F.y,energy.total");
 }
 
+TEST_F(EmbMbsCli, SceneOutputLandsNextToTheScene) {
+  // The scene's output.file is relative to the scene file, not to where emb runs; -o is
+  // relative to the working directory.
+  fs::create_directories(dir_ / "models");
+  std::string pendulum = Slurp(Scene("pendulum.yaml"));
+  std::ofstream(dir_ / "models" / "pendulum.yaml") << pendulum;
+  const CliResult r = Run("run -q models/pendulum.yaml --t-end 0.05");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "models" / "pendulum.h5"));
+  EXPECT_TRUE(fs::exists(dir_ / "models" / "pendulum.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "pendulum.h5"));
+  const CliResult o = Run("run -q models/pendulum.yaml --t-end 0.05 -o here.h5 --csv here.csv");
+  ASSERT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_TRUE(fs::exists(dir_ / "here.h5"));
+  EXPECT_TRUE(fs::exists(dir_ / "here.csv"));
+}
+
+TEST_F(EmbMbsCli, RunSummaryReportsSolverAndTolerances) {
+  const CliResult r = Run("run -q --json " + Scene("pendulum.yaml") +
+                          " --t-end 0.05 --no-output --atol 1e-16 --linear-solver klu");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto s = nlohmann::json::parse(r.out)["summary"];
+  EXPECT_EQ(s["linear_solver"], "klu");
+  EXPECT_GT(s["atol"].get<double>(), 1e-16);  // raised to the floor ...
+  EXPECT_NE(r.err.find("raised to"), std::string::npos) << r.err;  // ... and said so
+  EXPECT_GT(s["jacobian_nonzeros"].get<long>(), 0);
+  EXPECT_EQ(Run("run -q " + Scene("pendulum.yaml") + " --no-output --linear-solver lu").exit_code,
+            1);
+}
+
+TEST_F(EmbMbsCli, IntegratorFailureKeepsResultsAndSaysWhere) {
+  // A torque step to 1e9 N m exhausts IDA's step budget: exit 3, the message gives the time,
+  // the step size and where, and the file holds the samples before the failure.
+  const CliResult r =
+      Run("run -q " + std::string(EMB_SOURCE_DIR) + "/tests/scene/data/spin_up.yaml -o spin.h5");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  for (const char* part : {"at t = ", "step size", "body 'rod'", "revolute 'hinge'",
+                           "results up to t = ", "spin.h5"})
+    EXPECT_NE(r.err.find(part), std::string::npos) << part << " in: " << r.err;
+  emb::H5File f((dir_ / "spin.h5").string(), emb::H5File::Mode::kRead);
+  EXPECT_EQ(f.ReadStringAttribute("/", "status"), "integrator-failure");
+  EXPECT_GE(f.Shape("/time")[0], 6u);  // t = 0 .. 0.25 s at least
+}
+
 TEST_F(EmbMbsCli, HelpDocumentsOptions) {
   const CliResult r = Run("run --help");
   EXPECT_EQ(r.exit_code, 0);
   for (const char* opt : {"--output", "--csv", "--no-output", "--analysis", "--t-end", "--dt",
-                          "--rtol", "--atol", "--remove-redundant", "--json", "--quiet"})
+                          "--rtol", "--atol", "--linear-solver", "--remove-redundant", "--json",
+                          "--quiet"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
   EXPECT_NE(Run("dof --help").out.find("--rank-tol"), std::string::npos);
 }

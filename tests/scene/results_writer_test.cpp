@@ -1,5 +1,6 @@
 // Results files: the documented HDF5 layout, rows flushed as the run goes, and an
-// integrator failure that keeps every sample before it in the file; CSV channels.
+// integrator failure that keeps every sample before it in the file; the tolerances a
+// dynamic run used; a coupler's reaction at both joints; CSV channels.
 
 #include "libemb/scene/results_writer.h"
 
@@ -47,32 +48,17 @@ TEST(ResultsWriter, LayoutAndRows) {
   EXPECT_EQ(f.ReadStrings("/model/equations").size(), 5u);
   const auto t = f.ReadDoubles("/time");
   EXPECT_DOUBLE_EQ(t.back(), 0.5);
+  EXPECT_EQ(f.ReadIntAttribute("/", "version"), 2);
+  EXPECT_EQ(f.ReadStrings("/model/reaction_ports"), (std::vector<std::string>{"hinge"}));
+  EXPECT_DOUBLE_EQ(f.ReadDoubleAttribute("/", "atol"), r.atol);
+  EXPECT_GT(f.ReadDoubleAttribute("/", "multiplier_atol"), 0.0);
+  EXPECT_EQ(f.ReadStringAttribute("/", "linear_solver"), "dense");
   std::filesystem::remove(path);
 }
 
 TEST(ResultsWriter, IntegratorFailureKeepsEarlierSamples) {
-  // A torque that jumps to 1e9 N m at t = 0.25 s spins the pendulum up so fast that IDA
-  // runs out of its step budget per output interval part-way through the run.
-  const std::string text = R"(
-name: spin-up
-gravity: [0, -9.81, 0]
-bodies:
-  - {name: rod, mass: 1.0, inertia: [1.0e-4, 0.083, 0.083], position: [0.5, 0, 0]}
-markers:
-  - {name: pivot, body: ground, position: [0, 0, 0]}
-  - {name: rod_top, body: rod, position: [-0.5, 0, 0]}
-joints:
-  - {name: hinge, type: revolute, i: rod_top, j: pivot}
-forces:
-  - name: kick
-    type: torque
-    marker: rod_top
-    direction: [0, 0, 1]
-    function: {table: {x: [0, 0.25, 0.250001, 10], y: [0, 0, 1.0e9, 1.0e9]}}
-analysis: {type: dynamic, t_end: 1.0, output_step: 0.05, rtol: 1.0e-8, atol: 1.0e-10,
-           max_steps: 500}
-)";
-  Scene sc = ParseScene(text, "spin-up.yaml");
+  // A torque step to 1e9 N m at t = 0.25 s exhausts IDA's step budget (the scene says).
+  const Scene sc = LoadScene(std::string(EMB_SOURCE_DIR) + "/tests/scene/data/spin_up.yaml");
   const std::string path = TempPath("failure.h5");
   const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
   mbs::RunResult r;
@@ -96,6 +82,9 @@ analysis: {type: dynamic, t_end: 1.0, output_step: 0.05, rtol: 1.0e-8, atol: 1.0
   EXPECT_NE(r.message.find("at t = "), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("step size"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("body 'rod'"), std::string::npos) << r.message;
+  // ... and the joint equation furthest from closing at the last accepted state.
+  EXPECT_NE(r.message.find("largest constraint residual"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("revolute 'hinge'"), std::string::npos) << r.message;
   EXPECT_GT(r.ida.last_step, 0.0);
   EXPECT_GE(written, 6);  // the samples up to t = 0.25 s at least
   H5File f(path, H5File::Mode::kRead);
@@ -132,6 +121,34 @@ analysis: {type: dynamic, t_end: 0.5, output_step: 0.1}
   EXPECT_EQ(f.Shape("/multipliers/lambda"), (std::vector<std::uint64_t>{6, 0}));
   EXPECT_EQ(f.Shape("/reactions/force"), (std::vector<std::uint64_t>{6, 0}));
   std::filesystem::remove(path);
+}
+
+TEST(ResultsWriter, CouplerReactionAtBothJoints) {
+  // The gear pair: 2 joints, the motion and the coupler, plus the coupler's second port.
+  Scene sc = LoadScene(std::string(EMB_SOURCE_DIR) + "/tools/scenes/gear_pair.yaml");
+  sc.analysis.t_end = 0.05;
+  const std::string path = TempPath("gears.h5"), csv_path = TempPath("gears.csv");
+  const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
+  {
+    ResultsWriter w(path, run.system, sc.source, "kinematic");
+    CsvWriter csv(csv_path, run.system, {"mesh.T.z", "mesh.T2.z"});
+    w.Finish(mbs::RunAnalysis(run, sc.analysis, [&](const mbs::Sample& s) {
+      w.Write(s);
+      csv.Write(s);
+    }));
+  }
+  H5File f(path, H5File::Mode::kRead);
+  EXPECT_EQ(f.ReadStrings("/model/reaction_ports"),
+            (std::vector<std::string>{"pinion_shaft", "wheel_shaft", "drive", "mesh",
+                                      "mesh:wheel_shaft"}));
+  EXPECT_EQ(f.Shape("/reactions/torque"), (std::vector<std::uint64_t>{6, 15}));
+  std::ifstream in(csv_path);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "t,mesh.T.z,mesh.T2.z");
+  EXPECT_THROW(CsvWriter(csv_path, run.system, {"drive.T2.z"}), InputError);  // not a coupler
+  std::filesystem::remove(path);
+  std::filesystem::remove(csv_path);
 }
 
 TEST(CsvWriter, ChannelsAndUnknownChannel) {

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -124,6 +126,42 @@ TEST(SceneLoader, EngineMountStaticDeflection) {
   EXPECT_NEAR(std::atan2(R(2, 1), R(1, 1)), 200.0 / 4e4, 1e-9);
 }
 
+TEST(SceneLoader, OutputPathsAreRelativeToTheSceneFile) {
+  // A scene in a subdirectory writes next to itself, whatever the working directory;
+  // absolute paths stay; ParseScene (no file) leaves them as written.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "emb_scene_loader_test" / "models";
+  std::filesystem::create_directories(dir);
+  const std::string body =
+      "bodies:\n  - {name: ball, mass: 1.0, inertia: [0.1, 0.1, 0.1]}\n"
+      "output: {file: results/ball.h5, csv: /tmp/ball_abs.csv}\n";
+  std::ofstream(dir / "ball.yaml") << body;
+  const Scene sc = LoadScene((dir / "ball.yaml").string());
+  EXPECT_EQ(sc.output.file, (dir / "results" / "ball.h5").string());
+  EXPECT_EQ(sc.output.csv, "/tmp/ball_abs.csv");
+  EXPECT_EQ(ParseScene(body, "ball.yaml").output.file, "results/ball.h5");
+  std::filesystem::remove_all(dir.parent_path());
+}
+
+TEST(SceneLoader, AnalysisSolverAndToleranceKeys) {
+  const Scene sc = ParseScene(R"(
+bodies:
+  - {name: ball, mass: 1.0, inertia: [0.1, 0.1, 0.1]}
+analysis: {linear_solver: klu, atol_floor_relative: 1.0e-12, multiplier_atol_relative: 1.0e-3,
+           multiplier_atol: 0.5, initial_step_fraction: 1.0e-4, static_iterations: 7}
+)",
+                              "keys.yaml");
+  EXPECT_EQ(sc.analysis.ida.linear_solver, IdaLinearSolver::kKlu);
+  EXPECT_EQ(sc.analysis.atol_floor_relative, 1e-12);
+  EXPECT_EQ(sc.analysis.multiplier_atol_relative, 1e-3);
+  EXPECT_EQ(sc.analysis.multiplier_atol, 0.5);
+  EXPECT_EQ(sc.analysis.initial_step_fraction, 1e-4);
+  EXPECT_EQ(sc.analysis.static_max_iterations, 7);
+  // The default is auto: dense below 50 unknowns, KLU above.
+  const Scene def = ParseScene("bodies:\n  - {name: b, mass: 1, inertia: [1, 1, 1]}\n", "d.yaml");
+  EXPECT_EQ(def.analysis.ida.linear_solver, IdaLinearSolver::kAuto);
+}
+
 // --- bad input -------------------------------------------------------------------------
 
 const char* kGood = R"(
@@ -173,6 +211,13 @@ TEST(SceneBadInput, UnknownPartName) {
 TEST(SceneBadInput, UnknownMarkerName) {
   ExpectError(Replace(kGood, "i: rod_top", "i: rod_tip"),
               {"bad.yaml:10", "unknown marker 'rod_tip'", "did you mean 'rod_top'"});
+}
+
+TEST(SceneBadInput, UnknownJointName) {
+  ExpectError(std::string(kGood) +
+                  "motions:\n  - {name: spin, joint: hinj, function: {rpm: 10}}\n",
+              {"bad.yaml:13", "motion 'spin'", "unknown joint/constraint 'hinj'",
+               "did you mean 'hinge'"});
 }
 
 TEST(SceneBadInput, UnknownJointType) {
@@ -249,6 +294,15 @@ TEST(SceneBadInput, BadFunctionAndAnalysis) {
       std::string(kGood) +
           "motions:\n  - {name: m, joint: hinge, coordinate: translation, function: {rpm: 10}}\n",
       {"hinge", "translation"});
+}
+
+TEST(SceneBadInput, BadSolverAndTolerances) {
+  ExpectError(Replace(kGood, "output_step: 0.01}", "output_step: 0.01, linear_solver: lu}"),
+              {"bad.yaml:11", "linear solver", "'auto', 'dense' or 'klu'", "got 'lu'"});
+  ExpectError(Replace(kGood, "output_step: 0.01}", "output_step: 0.01, multiplier_atol_relative: 0}"),
+              {"bad.yaml:11", "multiplier_atol_relative > 0"});
+  ExpectError(Replace(kGood, "output_step: 0.01}", "output_step: 0.01, static_iterations: 0}"),
+              {"static_iterations", "expected >= 1, got 0"});
 }
 
 TEST(SceneBadInput, YamlSyntaxError) {

@@ -1,5 +1,10 @@
 // emb run SCENE: assemble a multibody scene and run its analysis (assemble, kinematic,
 // static, quasi-static or dynamic), writing results to HDF5 (and CSV) as it goes.
+//   emb run tools/scenes/slider_crank.yaml                # writes tools/scenes/slider_crank.h5
+//   emb run tools/scenes/pendulum.yaml --rtol 1e-10 -o pendulum_tight.h5   # ./pendulum_tight.h5
+// Inputs: the scene (YAML, tools/scenes/README.md). Outputs: the scene's output.file and
+// output.csv, relative to the scene file's directory; -o/--csv paths are relative to the
+// working directory; without either, SCENE-stem.h5 in the working directory.
 
 #include <filesystem>
 #include <iostream>
@@ -24,6 +29,7 @@ struct RunCommand {
   std::string output;
   std::string csv;
   std::string analysis;
+  std::string linear_solver;
   double t_end{-1.0};
   double rtol{-1.0};
   double atol{-1.0};
@@ -40,7 +46,9 @@ struct RunCommand {
     if (atol > 0) st.ida.atol = atol;
     if (output_step > 0) st.output_step = output_step;
     if (remove_redundant) st.remove_redundant = true;
-    // Output paths: -o beats the scene; the scene's are relative to the working directory.
+    if (!linear_solver.empty()) st.ida.linear_solver = ParseIdaLinearSolver(linear_solver);
+    // Output paths: -o beats the scene; the scene's were made relative to its directory by
+    // LoadScene, the command line's are relative to the working directory.
     std::string h5 = no_output ? "" : (!output.empty() ? output : sc.output.file);
     if (!no_output && h5.empty()) h5 = std::filesystem::path(scene_file).stem().string() + ".h5";
     const std::string csv_path = !csv.empty() ? csv : (no_output ? "" : sc.output.csv);
@@ -68,6 +76,7 @@ struct RunCommand {
     if (writer) writer->Finish(r);
     FinishProgressLine();
     for (const auto& w : run.warnings) std::cerr << "emb: warning: " << w << "\n";
+    for (const auto& w : r.warnings) std::cerr << "emb: warning: " << w << "\n";
 
     Summary s(std::string(mbs::Name(st.type)) + " analysis of " + sc.source);
     s.Add("status", "status", std::string(mbs::Name(r.status)));
@@ -82,7 +91,10 @@ struct RunCommand {
     s.Add("samples", "output samples", r.num_samples);
     if (st.type == mbs::AnalysisType::kDynamic) {
       s.Add("rtol", "rtol", st.ida.rtol);
-      s.Add("atol", "atol", st.ida.atol);
+      s.Add("atol", "atol (after the floor)", r.atol);
+      s.Add("multiplier_atol", "multiplier atol [N, N m]", r.multiplier_atol);
+      s.Add("linear_solver", "linear solver", std::string(Name(r.linear_solver)));
+      s.Add("jacobian_nonzeros", "iteration matrix non-zeros", r.jacobian_nonzeros);
       s.Add("steps", "IDA steps", r.ida_stats.steps);
       s.Add("residual_evals", "residual evaluations", r.ida_stats.residual_evals);
       s.Add("jacobian_evals", "Jacobian evaluations", r.ida_stats.jacobian_evals);
@@ -124,7 +136,8 @@ void RegisterRunCommand(CLI::App& app) {
   cmd->add_option("scene", st->scene_file, "Scene file (YAML), e.g. tools/scenes/slider_crank.yaml")
       ->required();
   cmd->add_option("-o,--output", st->output,
-                  "HDF5 results file (default: the scene's output.file, else SCENE-stem.h5)");
+                  "HDF5 results file, relative to the working directory (default: the scene's "
+                  "output.file, relative to the scene's directory, else SCENE-stem.h5 here)");
   cmd->add_option("--csv", st->csv, "Also write the scene's output.channels to this CSV file");
   cmd->add_flag("--no-output", st->no_output, "Do not write result files (summary only)");
   cmd->add_option("--analysis", st->analysis,
@@ -132,7 +145,11 @@ void RegisterRunCommand(CLI::App& app) {
   cmd->add_option("--t-end", st->t_end, "Override the end time [s]");
   cmd->add_option("--dt", st->output_step, "Override the output step [s]");
   cmd->add_option("--rtol", st->rtol, "Override IDA's relative tolerance");
-  cmd->add_option("--atol", st->atol, "Override IDA's absolute tolerance");
+  cmd->add_option("--atol", st->atol,
+                  "Override IDA's absolute tolerance (raised to the model's round-off floor, "
+                  "analysis atol_floor_relative, with a warning)");
+  cmd->add_option("--linear-solver", st->linear_solver,
+                  "IDA's linear solver: auto (KLU from 50 unknowns), dense or klu");
   cmd->add_flag("--remove-redundant", st->remove_redundant,
                 "Remove redundant constraint equations (they are listed) instead of failing");
   st->out.Register(*cmd);
