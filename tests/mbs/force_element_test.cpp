@@ -60,6 +60,13 @@ void AddDrivenDisc(System& s, double omega) {
   s.AddMotion("drive", "axle", JointCoordinate::kRotation, TimeFunction::Polynomial({0, omega}));
 }
 
+// The static equilibrium of `s` (finalized) in *out.
+RunResult RunStatic(const System& s, Sample* out) {
+  AnalysisSettings st;
+  st.type = AnalysisType::kStatic;
+  return RunAnalysis(PrepareRun(s, st), st, [&](const Sample& smp) { *out = smp; });
+}
+
 TEST(TranslationalSpringDamper, OscillatesAtNaturalFrequencyAndConservesEnergy) {
   const double x0 = 0.01;
   const System sys = SpringMass(0.0, x0);
@@ -115,10 +122,8 @@ TEST(Bushing, StaticDeflectionIsForceOverStiffness) {
       std::make_shared<Bushing>("mount", s.FindMarker("foot"), s.FindMarker("mount"), K, 1e-3 * K));
   s.SetGravity(Eigen::Vector3d(0, -9.81, 0));
   s.Finalize();
-  AnalysisSettings st;
-  st.type = AnalysisType::kStatic;
   Sample out;
-  const RunResult r = RunAnalysis(PrepareRun(s, st), st, [&](const Sample& smp) { out = smp; });
+  const RunResult r = RunStatic(s, &out);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_NEAR(out.q[1], -kMass * 9.81 / 2e5, 1e-12);
   EXPECT_NEAR(out.q[0], 0.0, 1e-12);
@@ -319,10 +324,8 @@ TEST(Bushing, LargeStaticRotationIsTorqueOverStiffness) {
                                                   AppliedLoad::Frame::kWorld,
                                                   TimeFunction::Constant(T)));
   s.Finalize();
-  AnalysisSettings st;
-  st.type = AnalysisType::kStatic;
   Sample out;
-  const RunResult r = RunAnalysis(PrepareRun(s, st), st, [&](const Sample& smp) { out = smp; });
+  const RunResult r = RunStatic(s, &out);
   ASSERT_TRUE(r.ok()) << r.message;
   const Eigen::Vector3d theta = RotationVectorFromQuaternion(out.q.segment<4>(3));
   // Newton to the static force tolerance (1e-9 of 150 N m): ~1e-9 rad at k = 100 N m/rad.
