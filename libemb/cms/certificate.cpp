@@ -27,28 +27,12 @@ std::string EigenLog(const EigenResult& r) {
   return o.str();
 }
 
-// Free-free modes of the coupled model up to fmax (at least `min_modes` elastic ones),
-// growing the request until the highest one passes fmax.
-EigenResult ReferenceModes(const CoupledModel& model, double fmax, int min_modes,
-                           EigenSolverOptions solver, const ProgressFn& progress) {
-  solver.shift = LambdaFromHz(-1.0);  // below the spectrum: the lowest modes, rigid ones too
-  solver.num_modes = 6 + std::max(min_modes, 1) + 4;
-  const int limit = model.size() - 2;
-  for (;;) {
-    solver.num_modes = std::min(solver.num_modes, limit);
-    EigenResult r = SolveGeneralizedEigen(model.K, model.M, solver, progress);
-    if (!r.ok() || FrequencyHz(r.eigenvalues[r.eigenvalues.size() - 1]) > fmax ||
-        solver.num_modes == limit)
-      return r;
-    solver.num_modes *= 2;
-  }
-}
-
 }  // namespace
 
 ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sys, double density,
                                       const ReductionBasis& basis, const Eigen::MatrixXd& Khat,
                                       const Eigen::MatrixXd& Mhat, const OrthonormalModes& modes,
+                                      const Eigen::MatrixXd& elastic_shapes,
                                       const CertificateOptions& options,
                                       const ProgressFn& progress) {
   ReductionCertificate cert;
@@ -100,12 +84,24 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
     cert.fmax_hz = ne > 0 ? modes.frequencies_hz[ne - 1] : 0.0;
   else
     cert.fmax_hz = kept.size() > 0 ? kept.maxCoeff() / ModeSelection().band_factor : 0.0;
-  if (options.reference && ne > 0) {
+  // The full model with the same couplings: the reference of items 4 and 5, built once (and
+  // only if one of them runs).
+  const bool compare = options.reference && ne > 0;
+  const bool statics = options.static_check && !basis.free_free && basis.interfaces.size() >= 2;
+  const CoupledModel model =
+      compare || statics ? BuildCoupledModel(mesh, sys, basis.interfaces) : CoupledModel{};
+  if (compare) {
     Stopwatch sw;
     int in_band = 0;
     while (in_band < ne && modes.frequencies_hz[in_band] <= cert.fmax_hz) ++in_band;
-    const CoupledModel model = BuildCoupledModel(mesh, sys, basis.interfaces);
-    const EigenResult ref = ReferenceModes(model, cert.fmax_hz, in_band, options.solver, progress);
+    // Free-free modes of the coupled model, the rigid ones too (σ below the spectrum), until
+    // the highest passes fmax.
+    EigenSolverOptions so = options.solver;
+    so.shift = LambdaFromHz(-1.0);
+    const SparseMatrix none(0, model.size());
+    ShiftInvertSolver solver(model.K, model.M, none, so.backend);
+    const EigenResult ref =
+        SolveLowestModes(solver, so, 6 + std::max(in_band, 1) + 4, cert.fmax_hz, model.size(), progress);
     cert.reference_log = EigenLog(ref);
     if (!ref.ok()) {
       fail("the full model's eigen-solve failed: " + ref.message);
@@ -113,7 +109,7 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
       cert.reference_run = true;
       // Expanded modes, both M-orthonormal in the full model: the MAC of a pair is
       // (φ_rᵀ M P φ_y)².
-      const Eigen::MatrixXd Phi_r = basis.T * modes.elastic;
+      const Eigen::MatrixXd& Phi_r = elastic_shapes;
       const Eigen::MatrixXd MPphi = sys.M * (model.P * ref.vectors);
       const Eigen::MatrixXd cross = (Phi_r.transpose() * MPphi).cwiseAbs2();
       const double rigid_threshold = 1e-10 * NormOne(model.K) / NormOne(model.M);
@@ -153,7 +149,7 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
 
   // 5. Static exactness.
   if (options.static_check) {
-    const StaticExactness st = CheckStaticExactness(mesh, sys, basis, Khat);
+    const StaticExactness st = CheckStaticExactness(mesh, model, basis, Khat);
     cert.static_run = st.run;
     cert.static_note = st.note;
     cert.static_loads = st.num_loads;

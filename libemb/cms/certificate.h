@@ -88,10 +88,12 @@ struct ReductionCertificate {
   bool passed() const { return failures.empty(); }
 };
 
-/// Certifies the reduced body (K̂, M̂ from basis.T) against the full model.
+/// Certifies the reduced body (K̂, M̂ from basis.T) against the full model;
+/// `elastic_shapes` = basis.T · modes.elastic (the caller has them for the invariants).
 ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sys, double density,
                                       const ReductionBasis& basis, const Eigen::MatrixXd& Khat,
                                       const Eigen::MatrixXd& Mhat, const OrthonormalModes& modes,
+                                      const Eigen::MatrixXd& elastic_shapes,
                                       const CertificateOptions& options,
                                       const ProgressFn& progress = {});
 

@@ -80,16 +80,10 @@ EigenResult SolveSelected(ShiftInvertSolver& solver, int available, const Reduct
   so.shift = LambdaFromHz(o.shift_hz);
   const double cutoff = sel.CutoffHz();
   const int limit = available - 1;  // Lanczos needs fewer than the problem size
-  int nev = sel.kind == ModeSelection::Kind::kCount ? sel.count + 1 : 20;
-  EigenResult r;
-  for (;;) {
-    so.num_modes = std::min(nev, limit);
-    r = SolveGeneralizedEigen(solver, so, progress);
-    if (!r.ok()) return r;
-    const double top = FrequencyHz(r.eigenvalues[r.eigenvalues.size() - 1]);
-    if (sel.kind == ModeSelection::Kind::kCount || top > cutoff || so.num_modes == limit) break;
-    nev = std::max(2 * nev, nev + 20);
-  }
+  EigenResult r = SolveLowestModes(
+      solver, so, sel.kind == ModeSelection::Kind::kCount ? sel.count + 1 : 20, cutoff, available,
+      progress);
+  if (!r.ok()) return r;
   const int found = static_cast<int>(r.eigenvalues.size());
   int keep = 0;
   if (sel.kind == ModeSelection::Kind::kCount) {
@@ -187,6 +181,20 @@ ReductionBasis BuildFreeFree(const Mesh& mesh, const SystemMatrices& sys,
 }
 
 }  // namespace
+
+EigenResult SolveLowestModes(ShiftInvertSolver& solver, EigenSolverOptions options, int initial,
+                             double fmax_hz, int available, const ProgressFn& progress) {
+  const int limit = available - 1;  // Lanczos needs fewer than the problem size
+  int nev = initial;
+  for (;;) {
+    options.num_modes = std::min(nev, limit);
+    EigenResult r = SolveGeneralizedEigen(solver, options, progress);
+    if (!r.ok() || !std::isfinite(fmax_hz) ||
+        FrequencyHz(r.eigenvalues[r.eigenvalues.size() - 1]) > fmax_hz || options.num_modes == limit)
+      return r;
+    nev = std::max(2 * nev, nev + 20);
+  }
+}
 
 double ModeSelection::CutoffHz() const {
   switch (kind) {
@@ -287,15 +295,18 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   sw.Restart();
   if (progress) progress("constraint modes", 0.0);
   const Eigen::MatrixXd rhs = -MultiplyExtended(KIS, TS);
+  const Eigen::MatrixXd R = RigidBodyModes(mesh);
+  Eigen::MatrixXd RI(ni, 6);
+  for (int k = 0; k < ni; ++k) RI.row(k) = R.row(interior[k]);
   Eigen::MatrixXd Psi;
   if (slaved.empty()) {
     // Only RBE3 averages hold the part: K_II is singular and K_II − σM nearly so in the rigid
-    // directions; pin it instead (pinned_solver.h: one more factorisation, unshifted).
-    const Eigen::MatrixXd R = RigidBodyModes(mesh);
+    // directions; pin it instead (pinned_solver.h: one more factorisation, unshifted). With no
+    // slaved unknowns the interior rigid motions are the full ones.
     const PinnedConstrainedSolver pinned(KII, R, PinUnknowns(mesh, part), C);
     if (!pinned.ok()) ThrowUnrestrained(mesh, interfaces, pinned.message());
     Psi = pinned.Solve(rhs, Q);
-    b.static_iterations = 3;
+    b.static_iterations = PinnedConstrainedSolver::kRefinementSteps;
   } else {
     Psi = SolveByShiftedRefinement(solver, KII, C, rhs, Q, b.static_iterations, progress);
     if (b.static_iterations < 0)
@@ -310,9 +321,6 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   {
     Eigen::MatrixXd P(nq, 6);
     for (int j = 0; j < nb; ++j) P.middleRows(6 * j, 6) = ReferenceRigidMotions(interfaces[j].point);
-    const Eigen::MatrixXd R = RigidBodyModes(mesh);
-    Eigen::MatrixXd RI(ni, 6);
-    for (int k = 0; k < ni; ++k) RI.row(k) = R.row(interior[k]);
     const Eigen::MatrixXd E = RI - Psi * P;
     b.rigid_correction = E.norm() / RI.norm();
     Psi += E * (P.transpose() * P).ldlt().solve(P.transpose());

@@ -10,10 +10,11 @@
 /// Basis (columns of T, in full FE unknowns):
 ///  - constraint modes Ψ: for each boundary coordinate k the static deformation with q = e_k,
 ///        K_II ψ + Cᵀ μ = −K_IS T_S e_k,   C ψ = e_k (RBE3 rows),
-///    solved with the factorisation of A = K_II − σM_II (σ < 0, positive definite even when
-///    only RBE3 interfaces hold the part) and the iteration ψ ← A_C⁻¹(b − σ M_II ψ), which
-///    converges by the factor |σ|/(λ₁ − σ) per step (λ₁: lowest fixed-interface eigenvalue;
-///    ~1e-5 for a crankshaft), so a few block solves give it to round-off;
+///    solved with the factorisation of A = K_II − σM_II by the refinement
+///    ψ ← ψ + A_C⁻¹(b − K_II ψ; e_k − C ψ), residuals in extended precision, which contracts by
+///    |σ|/(λ₁ − σ) per step (λ₁: lowest fixed-interface eigenvalue; ~1e-5 for a crankshaft).
+///    A part held by RBE3 averages only (K_II singular, A nearly so) is pinned 3-2-1 instead
+///    (PinnedConstrainedSolver). The rigid response, known exactly, is restored afterwards;
 ///  - fixed-interface normal modes Φ: K_II φ = λ M_II φ on C φ = 0 with the RBE2 surfaces
 ///    clamped, by shift-invert Lanczos on the same factorisation.
 /// CB is statically exact: for loads at the interfaces, T reproduces the full solution.
@@ -73,7 +74,8 @@ struct ReductionBasis {
   EigenResult eig;                     ///< the eigen-solve's log (vectors moved into T)
   std::string selection_note;          ///< what was kept and why
   int static_iterations{0};            ///< refinement steps of the constraint modes
-  double static_residual{0.0};         ///< max ‖K_II ψ + K_IS u_S − Cᵀμ‖ / ‖K_IS u_S‖-scale
+  /// max over ψ of ‖K_II ψ + K_IS u_S‖ outside range(Cᵀ) / (‖K_II ψ‖ + ‖K_IS u_S‖)
+  double static_residual{0.0};
   double rigid_correction{0.0};        ///< ‖R_I − Ψ P‖/‖R_I‖ before the rigid correction
   /// Reduced coordinates of the six rigid motions about the origin (translations x, y, z,
   /// rotations x, y, z): (nr × 6), exact by construction.
@@ -84,6 +86,12 @@ struct ReductionBasis {
 /// The six rigid-body motions about the origin as full FE fields (N × 6): columns t_x, t_y,
 /// t_z, θ_x, θ_y, θ_z.
 Eigen::MatrixXd RigidBodyModes(const Mesh& mesh);
+
+/// The lowest eigenpairs of the solver's (constrained) pencil: `initial` of them, then more
+/// (at least doubling, reusing the factorisation) until the highest one found is above
+/// fmax_hz (infinite: no growth) or all `available` − 1 are asked for.
+EigenResult SolveLowestModes(ShiftInvertSolver& solver, EigenSolverOptions options, int initial,
+                             double fmax_hz, int available, const ProgressFn& progress = {});
 
 /// Builds the Craig–Bampton basis of `sys` (assembled from `mesh`) for `interfaces` (empty:
 /// free-free basis).

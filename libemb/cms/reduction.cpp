@@ -69,7 +69,7 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
 
   sw.Restart();
   if (progress) progress("invariants", 0.0);
-  const Eigen::MatrixXd Phi = basis.T * X;
+  Eigen::MatrixXd Phi = basis.T * X;
   body.invariants = CalcInertiaInvariants(mesh.nodes, sys.M, Phi);
   body.times.Add("invariants", sw.seconds());
 
@@ -88,9 +88,9 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
 
   sw.Restart();
   body.certificate = CertifyReduction(mesh, sys, material.density, basis, body.K, body.M,
-                                      body.modes, job.certificate, progress);
+                                      body.modes, Phi, job.certificate, progress);
   body.times.Add("certificate", sw.seconds());
-  if (job.keep_mesh_shapes) body.mesh_shapes = Phi;
+  if (job.keep_mesh_shapes) body.mesh_shapes = std::move(Phi);
   return body;
 }
 

@@ -7,13 +7,11 @@
 #include "libemb/cms/coupled_model.h"
 #include "libemb/common/error.h"
 #include "libemb/common/timer.h"
-#include "libemb/linalg/extended_product.h"
 #include "libemb/linalg/pinned_solver.h"
-#include "libemb/linalg/submatrix.h"
 
 namespace emb {
 
-StaticExactness CheckStaticExactness(const Mesh& mesh, const SystemMatrices& sys,
+StaticExactness CheckStaticExactness(const Mesh& mesh, const CoupledModel& model,
                                      const ReductionBasis& basis, const Eigen::MatrixXd& Khat) {
   StaticExactness out;
   const auto& itfs = basis.interfaces;
@@ -24,7 +22,6 @@ StaticExactness CheckStaticExactness(const Mesh& mesh, const SystemMatrices& sys
     return out;
   }
   Stopwatch sw;
-  const CoupledModel model = BuildCoupledModel(mesh, sys, itfs);
   const InterfacePartition& part = model.partition;
   const std::vector<int>& q_column = model.q_column;
   const SparseMatrix& Ky = model.K;

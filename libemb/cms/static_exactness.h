@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 
+#include "libemb/cms/coupled_model.h"
 #include "libemb/cms/craig_bampton.h"
 
 namespace emb {
@@ -32,7 +33,8 @@ struct StaticExactness {
   double seconds{0.0};
 };
 
-StaticExactness CheckStaticExactness(const Mesh& mesh, const SystemMatrices& sys,
+/// @param model  BuildCoupledModel(mesh, sys, basis.interfaces)
+StaticExactness CheckStaticExactness(const Mesh& mesh, const CoupledModel& model,
                                      const ReductionBasis& basis, const Eigen::MatrixXd& Khat);
 
 }  // namespace emb

@@ -65,7 +65,7 @@ Eigen::MatrixXd PinnedConstrainedSolver::Solve(const Eigen::MatrixXd& B, const E
   SolveOnce(B, Q, X, mu);
   // Refinement: residuals of both equations in extended precision.
   const SparseMatrix Ct = C_.transpose();
-  for (int step = 0; step < 3; ++step) {
+  for (int step = 0; step < kRefinementSteps; ++step) {
     const Eigen::MatrixXd r1 = ResidualExtended(K_, X, B - Ct * mu);
     const Eigen::MatrixXd r2 = ResidualExtended(C_, X, Q);
     Eigen::MatrixXd dX, dmu;

@@ -37,6 +37,8 @@ class PinnedConstrainedSolver {
   /// constraints do not hold the rigid motions).
   PinnedConstrainedSolver(const SparseMatrix& K, const Eigen::MatrixXd& R, std::vector<int> pins,
                           const SparseMatrix& C);
+  /// Steps of iterative refinement every Solve makes.
+  static constexpr int kRefinementSteps = 3;
   bool ok() const { return ok_; }
   const std::string& message() const { return message_; }
 
