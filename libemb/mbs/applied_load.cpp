@@ -57,10 +57,10 @@ void AppliedLoad::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorX
   const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
   const Eigen::Vector3d F = kind_ == Kind::kForce ? load : zero;
   const Eigen::Vector3d T = kind_ == Kind::kTorque ? load : zero;
-  AddWrench(sys.layout(), (*ctx.bodies)[M.body], M.body, M.p_WM, F, T, f);
+  AddWrench(sys.layout(), M, M.p_WM, F, T, f);
   if (reaction_marker_ >= 0) {
     const MarkerKinematics R = CalcMarkerKinematics(sys, *ctx.bodies, reaction_marker_);
-    AddWrench(sys.layout(), (*ctx.bodies)[R.body], R.body, M.p_WM, -F, -T, f);
+    AddWrench(sys.layout(), R, M.p_WM, -F, -T, f);
   }
 }
 
@@ -70,13 +70,19 @@ void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
   const System& sys = *ctx.system;
   // Slots: the loaded marker's body, the reaction body, the argument joint's two bodies.
   const MarkerKinematics M = CalcMarkerKinematics(sys, *ctx.bodies, marker_);
-  std::vector<int> slots{M.body};
   const int reaction_slot = reaction_marker_ >= 0 ? 1 : -1;
-  if (reaction_marker_ >= 0) slots.push_back(sys.marker(reaction_marker_).body);
+  MarkerKinematics R, AI, AJ;
+  std::vector<const MarkerKinematics*> slots{&M};
+  if (reaction_marker_ >= 0) {
+    R = CalcMarkerKinematics(sys, *ctx.bodies, reaction_marker_);
+    slots.push_back(&R);
+  }
   const int argument_slot = static_cast<int>(slots.size());
   if (argument_.joint_angle) {
-    slots.push_back(sys.marker(argument_.marker_i).body);
-    slots.push_back(sys.marker(argument_.marker_j).body);
+    AI = CalcMarkerKinematics(sys, *ctx.bodies, argument_.marker_i);
+    AJ = CalcMarkerKinematics(sys, *ctx.bodies, argument_.marker_j);
+    slots.push_back(&AI);
+    slots.push_back(&AJ);
   }
   LocalForceJacobian jac(slots);
   const int n = jac.num_columns();
@@ -88,9 +94,7 @@ void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
   MatrixXd dload = MatrixXd::Zero(3, n);
   if (frame_ == Frame::kMarker) dload = -fx.f * Skew(a_W) * dM.rotation_x;
   if (argument_.joint_angle) {
-    const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, argument_.marker_i);
-    const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, argument_.marker_j);
-    const KernelEval g = EvalKernel({KernelKind::kAngle, 0, 0}, I, J);
+    const KernelEval g = EvalKernel({KernelKind::kAngle, 0, 0}, AI, AJ);
     Eigen::Matrix<double, 1, 12> dangle;
     dangle << g.d_i, g.d_j;
     dload.middleCols(6 * argument_slot, 12) += (fx.df * argument_.scale) * a_W * dangle;
@@ -104,8 +108,7 @@ void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
   jac.stiffness.middleRows<6>(0) += WrenchStiffness(M.R_WB, 0, F, T, M.s_W, dF, dT, dM.arm_x);
   if (reaction_slot >= 0) {
     // The opposite load at the same point p_WM, on the reaction body.
-    const MarkerKinematics R = CalcMarkerKinematics(sys, *ctx.bodies, reaction_marker_);
-    const Vector3d r = M.p_WM - (*ctx.bodies)[R.body].p_WB;
+    const Vector3d r = M.p_WM - (R.p_WM - R.s_W);
     MatrixXd dr = dM.point_x;
     dr.block<3, 3>(0, 6 * reaction_slot) -= Eigen::Matrix3d::Identity();
     jac.stiffness.middleRows<6>(6 * reaction_slot) +=

@@ -41,6 +41,8 @@ Eigen::VectorXd ApplyDisplacement(const System& system, const Eigen::VectorXd& q
     out.segment<3>(L.position(b)) += dx.segment<3>(L.velocity(b));
     out.segment<4>(L.quaternion(b)) =
         RotateQuaternion(q.segment<4>(L.quaternion(b)), dx.segment<3>(L.angular_velocity(b)));
+    const int ne = L.num_elastic(b);
+    if (ne && dx.size() == L.nv()) out.segment(L.elastic_q(b), ne) += dx.segment(L.elastic_v(b), ne);
   }
   return out;
 }
@@ -59,10 +61,13 @@ AssemblyResult AssemblePositions(const System& system, const Eigen::VectorXd& q0
   };
   ConstraintEval c = eval(r.q);
   double res = c.phi.size() ? c.phi.cwiseAbs().maxCoeff() : 0.0;
+  // Only the rigid-body coordinates move: the modal coordinates of flexible bodies keep
+  // their initial values (the joints must close with the given deformation).
+  const int rigid_v = StateLayout::kVPerBody * system.layout().num_moving();
   for (r.iterations = 0; r.iterations < options.max_iterations && res > options.tolerance;
        ++r.iterations) {
     const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(
-        (Eigen::MatrixXd(c.jacobian)));
+        Eigen::MatrixXd(c.jacobian).leftCols(rigid_v));
     const Eigen::VectorXd dx = -cod.solve(c.phi);
     // Backtracking: halve the step while the residual grows (far from the solution).
     double step = 1.0;
@@ -99,7 +104,7 @@ VelocityProjection ProjectVelocities(const System& system, const Eigen::VectorXd
                                      ConstraintWorkspace* workspace) {
   const auto bodies = CalcBodyKinematics(system, q, v0);
   const ConstraintEval c = CalcConstraints(system, bodies, t, workspace);
-  const Eigen::MatrixXd M = CalcMassMatrix(system);
+  const Eigen::MatrixXd M = CalcMassMatrix(system, bodies);
   const auto n = M.rows(), m = c.jacobian.rows();
   Eigen::VectorXd rhs(n + m);
   rhs << M * v0, -c.phi_t;
@@ -120,7 +125,7 @@ AccelerationSolution SolveAccelerations(const System& system, const Eigen::Vecto
                                         ConstraintWorkspace* workspace) {
   const auto bodies = CalcBodyKinematics(system, q, v);
   const ConstraintEval c = CalcConstraints(system, bodies, t, workspace);
-  const Eigen::MatrixXd M = CalcMassMatrix(system);
+  const Eigen::MatrixXd M = CalcMassMatrix(system, bodies);
   const auto n = M.rows(), m = c.jacobian.rows();
   Eigen::VectorXd rhs(n + m);
   rhs << CalcGeneralizedForces(system, bodies, t, workspace), c.gamma();

@@ -34,6 +34,14 @@ void RigidBody::Validate() const {
       (R_WB.transpose() * R_WB - Eigen::Matrix3d::Identity()).norm() > kRotationTolerance ||
           R_WB.determinant() < 0.0,
       "body '" << name << "': expected a proper rotation matrix for its orientation");
+  if (elastic) {
+    elastic->Validate(name);
+    const int ne = elastic->num_modes();
+    EMB_THROW_IF((eta0.size() != 0 && eta0.size() != ne) ||
+                     (eta_dot0.size() != 0 && eta_dot0.size() != ne),
+                 "flexible body '" << name << "': expected " << ne
+                                   << " initial modal coordinates and rates");
+  }
 }
 
 }  // namespace emb::mbs

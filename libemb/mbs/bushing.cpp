@@ -47,8 +47,8 @@ void Bushing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f
   const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
   const Eigen::Vector3d F_W = J.R_WM * m.head<3>();
   const Eigen::Vector3d T_W = J.R_WM * (s.inv_jacobian.transpose() * m.tail<3>());
-  AddWrench(sys.layout(), (*ctx.bodies)[I.body], I.body, I.p_WM, F_W, T_W, f);
-  AddWrench(sys.layout(), (*ctx.bodies)[J.body], J.body, I.p_WM, -F_W, -T_W, f);
+  AddWrench(sys.layout(), I, I.p_WM, F_W, T_W, f);
+  AddWrench(sys.layout(), J, I.p_WM, -F_W, -T_W, f);
 }
 
 void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
@@ -99,10 +99,10 @@ void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sin
   const MatrixXd dT_v = R_WJ * Jinv.transpose() * dm_v.bottomRows<3>();
 
   // Both loads act at p_WI: arm s_WI on I's body, p_WI - p_WJbody on J's.
-  const Vector3d r_j = I.p_WM - (*ctx.bodies)[J.body].p_WB;
+  const Vector3d r_j = I.p_WM - (J.p_WM - J.s_W);
   MatrixXd dr_j = dI.point_x;
   dr_j.block<3, 3>(0, 6) -= Matrix3d::Identity();
-  LocalForceJacobian jac({I.body, J.body});
+  LocalForceJacobian jac({&I, &J});
   jac.stiffness.topRows<6>() = WrenchStiffness(I.R_WB, 0, F, T, I.s_W, dF_x, dT_x, dI.arm_x);
   jac.stiffness.bottomRows<6>() = WrenchStiffness(J.R_WB, 1, -F, -T, r_j, -dF_x, -dT_x, dr_j);
   jac.damping.topRows<6>() = WrenchDamping(I.R_WB, I.s_W, dF_v, dT_v);

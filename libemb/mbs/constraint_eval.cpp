@@ -36,9 +36,14 @@ ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinem
   c.phi_tt.setZero(m);
   std::vector<Eigen::Triplet<double, int>> triplets;
   triplets.reserve(12 * static_cast<std::size_t>(m));
-  auto add_row = [&](int k, int body, double a, const Eigen::Matrix<double, 1, 6>& d) {
-    if (L.is_ground(body)) return;
-    for (int i = 0; i < 6; ++i) triplets.emplace_back(k, L.velocity(body) + i, a * d[i]);
+  auto add_row = [&](int k, const MarkerKinematics& M, double a,
+                     const Eigen::Matrix<double, 1, 6>& d) {
+    if (L.is_ground(M.body)) return;
+    for (int i = 0; i < 6; ++i) triplets.emplace_back(k, L.velocity(M.body) + i, a * d[i]);
+    if (!M.flexible()) return;
+    const Eigen::RowVectorXd de = d * M.E;  // the modal columns (kinematics.h)
+    for (int i = 0; i < de.size(); ++i)
+      triplets.emplace_back(k, L.elastic_v(M.body) + i, a * de[i]);
   };
   for (int k = 0; k < m; ++k) {
     const ScalarEquation& eq = system.equations()[k];
@@ -57,9 +62,9 @@ ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinem
       }
       const double a = eq.coeff[term];
       c.phi[k] += a * value;
-      add_row(k, I.body, a, g.d_i);
-      add_row(k, J.body, a, g.d_j);
-      c.quadratic[k] += a * g.quadratic;
+      add_row(k, I, a, g.d_i);
+      add_row(k, J, a, g.d_j);
+      c.quadratic[k] += a * (g.quadratic + g.d_i.dot(I.extra) + g.d_j.dot(J.extra));
     }
     if (eq.has_function) {
       c.phi[k] -= f.f;
@@ -87,6 +92,8 @@ void VisitKernelTerms(const System& system, const std::vector<BodyKinematics>& b
       term.body_j = J.body;
       term.gradient << a * g.d_i, a * g.d_j;
       term.hessian = a * EvalKernelHessian(eq.kernel[n], I, J);
+      term.E[0] = I.flexible() ? &I.E : nullptr;
+      term.E[1] = J.flexible() ? &J.E : nullptr;
       visit(term);
     }
   }

@@ -60,6 +60,10 @@ struct KernelTerm {
   int body_i{0}, body_j{0};                        ///< 0 = ground
   Eigen::Matrix<double, 1, 12> gradient;           ///< coeff [d_i, d_j]
   Eigen::Matrix<double, 12, 12> hessian;           ///< coeff EvalKernelHessian(...)
+  /// Markers on flexible bodies: their E (kinematics.h), valid during the visit; the modal
+  /// columns of the gradient are gradient_s E_s, and [I E]^T hessian [I E] stands for the
+  /// second derivatives (the derivatives of E itself are left out of iteration matrices).
+  const Eigen::MatrixXd* E[2]{nullptr, nullptr};
 };
 
 /// Calls `visit` for every kernel term of every equation, in equation order (the iteration

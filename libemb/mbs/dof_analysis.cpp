@@ -21,12 +21,15 @@ DofReport AnalyzeDof(const System& system, const Eigen::VectorXd& q, double t,
                                                         : "coupler";
     r.elements.push_back({e.name, type, e.num_equations});
   }
-  if (r.num_equations == 0 || L.nv() == 0) {
+  if (r.num_equations == 0 || L.num_moving() == 0) {
     r.true_dof = 6 * (r.num_parts - 1);
     return r;
   }
   const auto bodies = CalcBodyKinematics(system, q, Eigen::VectorXd());
-  Eigen::MatrixXd C(CalcConstraints(system, bodies, t, workspace).jacobian);
+  // The rigid-body columns only: modal coordinates of flexible bodies are extra freedoms
+  // that the joints never remove (they deform the body instead).
+  Eigen::MatrixXd C = Eigen::MatrixXd(CalcConstraints(system, bodies, t, workspace).jacobian)
+                          .leftCols(StateLayout::kVPerBody * L.num_moving());
   // Characteristic length: the largest marker offset from its body's CM (at least 1 mm).
   double length = 1e-3;
   for (const auto& m : system.markers()) length = std::max(length, m.p_BM.norm());

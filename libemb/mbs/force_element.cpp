@@ -16,13 +16,21 @@ void ForceElement::AddForceJacobian(const ForceContext& ctx, ForceJacobianSink* 
   DoAddForceJacobian(ctx, sink);
 }
 
-void AddWrench(const StateLayout& layout, const BodyKinematics& body_kin, int body,
-               const Eigen::Vector3d& p_WQ, const Eigen::Vector3d& F_W, const Eigen::Vector3d& T_W,
+void AddWrench(const StateLayout& layout, const MarkerKinematics& M, const Eigen::Vector3d& p_WQ,
+               const Eigen::Vector3d& F_W, const Eigen::Vector3d& T_W,
                Eigen::Ref<Eigen::VectorXd> f) {
-  if (layout.is_ground(body)) return;
-  f.segment<3>(layout.velocity(body)) += F_W;
-  f.segment<3>(layout.angular_velocity(body)) +=
-      body_kin.R_WB.transpose() * (T_W + (p_WQ - body_kin.p_WB).cross(F_W));
+  const Eigen::Vector3d p_WB = M.p_WM - M.s_W;
+  Eigen::Matrix<double, 6, 1> f6;
+  f6 << F_W, M.R_WB.transpose() * (T_W + (p_WQ - p_WB).cross(F_W));
+  AddMarkerForce(layout, M, f6, f);
+}
+
+void AddMarkerForce(const StateLayout& layout, const MarkerKinematics& M,
+                    const Eigen::Matrix<double, 6, 1>& f6, Eigen::Ref<Eigen::VectorXd> f) {
+  if (layout.is_ground(M.body)) return;
+  f.segment<6>(layout.velocity(M.body)) += f6;
+  if (M.flexible())
+    f.segment(layout.elastic_v(M.body), M.E.cols()) += M.E.transpose() * f6;
 }
 
 }  // namespace emb::mbs

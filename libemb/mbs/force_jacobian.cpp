@@ -10,27 +10,57 @@ DenseForceJacobian::DenseForceJacobian(const StateLayout& layout)
       stiffness_(Eigen::MatrixXd::Zero(layout.nv(), layout.nv())),
       damping_(Eigen::MatrixXd::Zero(layout.nv(), layout.nv())) {}
 
-void DenseForceJacobian::AddStiffness(int a, int b, const Matrix6d& K) {
-  stiffness_.block<6, 6>(layout_.velocity(a), layout_.velocity(b)) += K;
+namespace {
+
+void AddBodyBlock(const StateLayout& L, int a, int b, const Eigen::MatrixXd& K,
+                  Eigen::MatrixXd* out) {
+  EMB_CHECK(K.rows() == L.body_nv(a) && K.cols() == L.body_nv(b));
+  ForEachBodySubBlock(L, a, b, [&](int r, int c, int i0, int j0, int nr, int nc) {
+    out->block(r, c, nr, nc) += K.block(i0, j0, nr, nc);
+  });
 }
 
-void DenseForceJacobian::AddDamping(int a, int b, const Matrix6d& D) {
-  damping_.block<6, 6>(layout_.velocity(a), layout_.velocity(b)) += D;
+// [I E] of a slot's marker (6 x body_nv).
+Eigen::MatrixXd SlotMap(const MarkerKinematics& M) {
+  const auto ne = M.E.cols();
+  Eigen::MatrixXd X(6, 6 + ne);
+  X.leftCols<6>().setIdentity();
+  if (ne) X.rightCols(ne) = M.E;
+  return X;
 }
 
-LocalForceJacobian::LocalForceJacobian(std::vector<int> slot_bodies)
-    : stiffness(Eigen::MatrixXd::Zero(6 * slot_bodies.size(), 6 * slot_bodies.size())),
-      damping(Eigen::MatrixXd::Zero(6 * slot_bodies.size(), 6 * slot_bodies.size())),
-      bodies_(std::move(slot_bodies)) {}
+}  // namespace
+
+void DenseForceJacobian::AddStiffness(int a, int b, const Eigen::MatrixXd& K) {
+  AddBodyBlock(layout_, a, b, K, &stiffness_);
+}
+
+void DenseForceJacobian::AddDamping(int a, int b, const Eigen::MatrixXd& D) {
+  AddBodyBlock(layout_, a, b, D, &damping_);
+}
+
+LocalForceJacobian::LocalForceJacobian(std::vector<const MarkerKinematics*> slot_markers)
+    : stiffness(Eigen::MatrixXd::Zero(6 * slot_markers.size(), 6 * slot_markers.size())),
+      damping(Eigen::MatrixXd::Zero(6 * slot_markers.size(), 6 * slot_markers.size())),
+      markers_(std::move(slot_markers)) {
+  for (const auto* m : markers_) EMB_CHECK(m != nullptr);
+}
 
 void LocalForceJacobian::ScatterTo(ForceJacobianSink* sink) const {
   EMB_CHECK(sink != nullptr);
+  std::vector<Eigen::MatrixXd> X(markers_.size());
+  for (int a = 0; a < num_slots(); ++a)
+    if (markers_[a]->flexible()) X[a] = SlotMap(*markers_[a]);
   for (int a = 0; a < num_slots(); ++a) {
-    if (bodies_[a] == 0) continue;
+    if (markers_[a]->body == 0) continue;
     for (int b = 0; b < num_slots(); ++b) {
-      if (bodies_[b] == 0) continue;
-      sink->AddStiffness(bodies_[a], bodies_[b], stiffness.block<6, 6>(6 * a, 6 * b));
-      sink->AddDamping(bodies_[a], bodies_[b], damping.block<6, 6>(6 * a, 6 * b));
+      if (markers_[b]->body == 0) continue;
+      Eigen::MatrixXd K = stiffness.block<6, 6>(6 * a, 6 * b);
+      Eigen::MatrixXd D = damping.block<6, 6>(6 * a, 6 * b);
+      if (X[a].size()) K = X[a].transpose() * K, D = X[a].transpose() * D;
+      if (X[b].size()) K = K * X[b], D = D * X[b];
+      sink->AddStiffness(markers_[a]->body, markers_[b]->body, K);
+      sink->AddDamping(markers_[a]->body, markers_[b]->body, D);
     }
   }
 }

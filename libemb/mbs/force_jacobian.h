@@ -30,21 +30,24 @@ namespace emb::mbs {
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
 /// Receives the blocks of the force elements' derivatives; never called for the ground.
+/// A block of bodies (a, b) is body_nv(a) x body_nv(b) (state_layout.h): rows and columns
+/// [delta p, delta pi] (or [v_WB, omega_B]) and then, on a flexible body, its modal
+/// coordinates (or rates).
 class ForceJacobianSink {
  public:
   virtual ~ForceJacobianSink() = default;
   /// K_ab = d f_a / d x_b.
-  virtual void AddStiffness(int body_a, int body_b, const Matrix6d& K) = 0;
+  virtual void AddStiffness(int body_a, int body_b, const Eigen::MatrixXd& K) = 0;
   /// D_ab = d f_a / d v_b.
-  virtual void AddDamping(int body_a, int body_b, const Matrix6d& D) = 0;
+  virtual void AddDamping(int body_a, int body_b, const Eigen::MatrixXd& D) = 0;
 };
 
 /// Dense nv x nv stiffness df/dx and damping df/dv (statics, tests). Cost O(nv^2) memory.
 class DenseForceJacobian final : public ForceJacobianSink {
  public:
   explicit DenseForceJacobian(const StateLayout& layout);
-  void AddStiffness(int body_a, int body_b, const Matrix6d& K) override;
-  void AddDamping(int body_a, int body_b, const Matrix6d& D) override;
+  void AddStiffness(int body_a, int body_b, const Eigen::MatrixXd& K) override;
+  void AddDamping(int body_a, int body_b, const Eigen::MatrixXd& D) override;
   const Eigen::MatrixXd& stiffness() const { return stiffness_; }
   const Eigen::MatrixXd& damping() const { return damping_; }
 
@@ -53,12 +56,15 @@ class DenseForceJacobian final : public ForceJacobianSink {
   Eigen::MatrixXd stiffness_, damping_;
 };
 
-/// An element's derivatives in its local slots (see the file comment).
+/// An element's derivatives in its local slots (see the file comment). A slot is the
+/// (virtual rigid) body of one marker (kinematics.h): on a flexible body, its 6 columns
+/// stand for [I E] of the body's coordinates, and ScatterTo expands a block K_ab into
+/// [I E_a]^T K_ab [I E_b] (the derivatives of E are left out: iteration matrices only).
 class LocalForceJacobian {
  public:
-  /// `slot_bodies[s]` is the body of slot s (0 = ground).
-  explicit LocalForceJacobian(std::vector<int> slot_bodies);
-  int num_slots() const { return static_cast<int>(bodies_.size()); }
+  /// `slot_markers[s]` is the marker of slot s (its body may be the ground).
+  explicit LocalForceJacobian(std::vector<const MarkerKinematics*> slot_markers);
+  int num_slots() const { return static_cast<int>(markers_.size()); }
   int num_columns() const { return 6 * num_slots(); }
   /// Rows of f_a (slot a), columns X or V: 6 s x 6 s.
   Eigen::MatrixXd stiffness, damping;
@@ -67,7 +73,7 @@ class LocalForceJacobian {
   void ScatterTo(ForceJacobianSink* sink) const;
 
  private:
-  std::vector<int> bodies_;
+  std::vector<const MarkerKinematics*> markers_;
 };
 
 /// World-frame derivatives of marker M on the body of slot `slot` (3 x 6 num_slots each).

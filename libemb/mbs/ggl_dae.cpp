@@ -39,18 +39,50 @@ Eigen::Matrix4d RateMatrixDerivative(const Eigen::Vector3d& w) {
   return P;
 }
 
-// Force elements' blocks into the dynamic rows: -K_ab X_b (v rows of a, q columns of b) and
-// -D_ab (v columns of b).
-class GglForceSink final : public ForceJacobianSink {
+// Emits blocks of body coordinates ([rigid 6, modal ne] per body, v-ordering) into the GGL
+// matrix: rows or columns in q-space map the rigid part through X_b (6 x 7) and the modal
+// part one to one; v-space rows and columns are the v-ordering shifted by G.v().
+class BodyBlockEmitter {
  public:
-  GglForceSink(const StateLayout& L, const GglLayout& G, const std::vector<Matrix67>& X,
-               MatrixAssembler* A)
+  BodyBlockEmitter(const StateLayout& L, const GglLayout& G, const std::vector<Matrix67>& X,
+                   MatrixAssembler* A)
       : L_(L), G_(G), X_(X), A_(A) {}
-  void AddStiffness(int a, int b, const Matrix6d& K) override {
-    A_->AddBlock(G_.v() + L_.velocity(a), G_.q() + L_.position(b), -K * X_[b]);
+
+  // Rows of body a (q-space if `q_rows`, else v-space) x columns of body b (q or v).
+  void Block(int a, bool q_rows, int b, bool q_cols, const Eigen::MatrixXd& K) const {
+    ForEachBodySubBlock(L_, a, b, [&](int r, int c, int i0, int j0, int nr, int nc) {
+      const Eigen::MatrixXd sub = K.block(i0, j0, nr, nc);
+      const bool rigid_row = i0 == 0, rigid_col = j0 == 0;
+      const int row = q_rows ? (rigid_row ? G_.q() + L_.position(a) : G_.q() + L_.elastic_q(a))
+                             : G_.v() + r;
+      const int col = q_cols ? (rigid_col ? G_.q() + L_.position(b) : G_.q() + L_.elastic_q(b))
+                             : G_.v() + c;
+      if (q_rows && rigid_row && q_cols && rigid_col)
+        A_->AddBlock(row, col, X_[a].transpose() * sub * X_[b]);
+      else if (q_rows && rigid_row)
+        A_->AddBlock(row, col, X_[a].transpose() * sub);
+      else if (q_cols && rigid_col)
+        A_->AddBlock(row, col, sub * X_[b]);
+      else
+        A_->AddBlock(row, col, sub);
+    });
   }
-  void AddDamping(int a, int b, const Matrix6d& D) override {
-    A_->AddBlock(G_.v() + L_.velocity(a), G_.v() + L_.velocity(b), -D);
+  // A single row `row` x columns of body b.
+  void Row(int row, int b, bool q_cols, const Eigen::RowVectorXd& g) const {
+    A_->AddBlock(row, q_cols ? G_.q() + L_.position(b) : G_.v() + L_.velocity(b),
+                 q_cols ? Eigen::RowVectorXd(g.head<6>() * X_[b]) : Eigen::RowVectorXd(g.head<6>()));
+    const int ne = L_.num_elastic(b);
+    if (ne)
+      A_->AddBlock(row, q_cols ? G_.q() + L_.elastic_q(b) : G_.v() + L_.elastic_v(b), g.tail(ne));
+  }
+  // Rows of body b x a single column `col`.
+  void Column(int b, bool q_rows, int col, const Eigen::VectorXd& g) const {
+    A_->AddBlock(q_rows ? G_.q() + L_.position(b) : G_.v() + L_.velocity(b), col,
+                 q_rows ? Eigen::VectorXd(X_[b].transpose() * g.head<6>())
+                        : Eigen::VectorXd(g.head<6>()));
+    const int ne = L_.num_elastic(b);
+    if (ne)
+      A_->AddBlock(q_rows ? G_.q() + L_.elastic_q(b) : G_.v() + L_.elastic_v(b), col, g.tail(ne));
   }
 
  private:
@@ -59,6 +91,30 @@ class GglForceSink final : public ForceJacobianSink {
   const std::vector<Matrix67>& X_;
   MatrixAssembler* A_;
 };
+
+// Force elements' blocks into the dynamic rows: -K_ab (q columns of b) and -D_ab (v columns).
+class GglForceSink final : public ForceJacobianSink {
+ public:
+  explicit GglForceSink(const BodyBlockEmitter& emit) : emit_(emit) {}
+  void AddStiffness(int a, int b, const Eigen::MatrixXd& K) override {
+    emit_.Block(a, false, b, true, -K);
+  }
+  void AddDamping(int a, int b, const Eigen::MatrixXd& D) override {
+    emit_.Block(a, false, b, false, -D);
+  }
+
+ private:
+  const BodyBlockEmitter& emit_;
+};
+
+// [I E] of one side of a kernel term (6 x body_nv), or I6.
+Eigen::MatrixXd TermMap(const Eigen::MatrixXd* E) {
+  const auto ne = E ? E->cols() : 0;
+  Eigen::MatrixXd X(6, 6 + ne);
+  X.leftCols<6>().setIdentity();
+  if (ne) X.rightCols(ne) = *E;
+  return X;
+}
 
 }  // namespace
 
@@ -69,16 +125,18 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
   const GglLayout& G = layout_;
   const Eigen::VectorXd q = y.segment(G.q(), G.nq());
   const Eigen::VectorXd v = y.segment(G.v(), G.nv());
+  const Eigen::VectorXd vdot = yp.segment(G.v(), G.nv());
   const auto lambda = y.segment(G.lambda(), G.m());
   const auto mu = y.segment(G.mu(), G.num_mu());
   for (int b = 1; b < system_.num_bodies(); ++b)
     if (!(q.segment<4>(L.quaternion(b)).norm() > 0.0)) return false;  // retry smaller step
+  if (!q.allFinite() || !v.allFinite()) return false;
   const auto bodies = CalcBodyKinematics(system_, q, v);
   const ConstraintEval c = CalcConstraints(system_, bodies, t, &workspace_);
 
   // Kinematic rows: q' - H v + B^T mu, B^T mu = X_b^T (C^T mu)_b + [0; e_b mu_b].
   const Eigen::VectorXd w = c.jacobian.transpose() * mu.head(G.m());
-  const Eigen::VectorXd f = CalcGeneralizedForces(system_, bodies, t, &workspace_);
+  const Eigen::VectorXd f = CalcGeneralizedForces(system_, bodies, t, &workspace_, &vdot);
   const Eigen::VectorXd reaction = c.jacobian.transpose() * lambda;
   for (int b = 1; b < system_.num_bodies(); ++b) {
     const Eigen::Vector4d e = q.segment<4>(L.quaternion(b));
@@ -90,6 +148,23 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
         0.5 * QuaternionRateMatrix(e) * v.segment<3>(L.angular_velocity(b)) +
         (2.0 / e.squaredNorm()) * QuaternionRateMatrix(e) * wb.tail<3>() +
         mu[G.m() + b - 1] * e;
+    r[G.mu() + G.m() + b - 1] = 0.5 * (e.squaredNorm() - 1.0);
+    const int ne = L.num_elastic(b);
+    if (ne) {
+      // eta' - eta_dot + (C^T mu)_eta; M(eta) [vdot_b; eta''] - f + C^T lambda.
+      r.segment(G.q() + L.elastic_q(b), ne) = yp.segment(G.q() + L.elastic_q(b), ne) -
+                                              v.segment(L.elastic_v(b), ne) +
+                                              w.segment(L.elastic_v(b), ne);
+      Eigen::VectorXd a(6 + ne);
+      a << vdot.segment<6>(L.velocity(b)), vdot.segment(L.elastic_v(b), ne);
+      const Eigen::VectorXd Ma =
+          CalcBodyFlexibleTerms(system_, bodies[b], b, nullptr, false).mass * a;
+      r.segment<6>(G.v() + L.velocity(b)) =
+          Ma.head<6>() - f.segment<6>(L.velocity(b)) + reaction.segment<6>(L.velocity(b));
+      r.segment(G.v() + L.elastic_v(b), ne) = Ma.tail(ne) - f.segment(L.elastic_v(b), ne) +
+                                              reaction.segment(L.elastic_v(b), ne);
+      continue;
+    }
     // Dynamic rows: M v' - f + C^T lambda, M = diag(m I, J_B) per body.
     const RigidBody& body = system_.body(b);
     r.segment<3>(G.v() + L.velocity(b)) = body.mass * yp.segment<3>(G.v() + L.velocity(b)) -
@@ -98,12 +173,11 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
     r.segment<3>(G.v() + L.angular_velocity(b)) =
         body.inertia_B * yp.segment<3>(G.v() + L.angular_velocity(b)) -
         f.segment<3>(L.angular_velocity(b)) + reaction.segment<3>(L.angular_velocity(b));
-    r[G.mu() + G.m() + b - 1] = 0.5 * (e.squaredNorm() - 1.0);
   }
   // Velocity and position constraints.
   r.segment(G.lambda(), G.m()) = c.jacobian * v + c.phi_t;
   r.segment(G.mu(), G.m()) = c.phi;
-  return true;
+  return r.allFinite();
 }
 
 void GglDae::DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
@@ -134,9 +208,11 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
   const Eigen::VectorXd w_all = c.jacobian.transpose() * mu.head(m);
   std::vector<Matrix67> X(system_.num_bodies());
   for (int b = 1; b < system_.num_bodies(); ++b) X[b] = MakeBodyMap(q.segment<4>(L.quaternion(b)));
+  const BodyBlockEmitter emit(L, G, X, A);
 
   // Per body: cj I and the derivative of the maps in the kinematic rows, H, the
-  // unit-quaternion multiplier, cj M and the gyroscopic term.
+  // unit-quaternion multiplier, cj M and the gyroscopic term (flexible bodies: cj M(eta)
+  // and the derivatives of their inertia, elastic and gravity terms).
   for (int b = 1; b < system_.num_bodies(); ++b) {
     const Eigen::Vector4d e = q.segment<4>(L.quaternion(b));
     const double n2 = e.squaredNorm();
@@ -156,6 +232,16 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
     A->AddBlock(rq, rv, Jqv);
     A->AddBlock(rq + 3, mu_b, e);
     A->AddBlock(mu_b, rq + 3, e.transpose());
+    const int ne = L.num_elastic(b);
+    if (ne) {
+      const int eq = G.q() + L.elastic_q(b), ev = G.v() + L.elastic_v(b);
+      A->AddBlock(eq, eq, cj * Eigen::MatrixXd::Identity(ne, ne));
+      A->AddBlock(eq, ev, -Eigen::MatrixXd::Identity(ne, ne));
+      const FlexibleTerms ft = CalcBodyFlexibleTerms(system_, bodies[b], b, nullptr, true);
+      emit.Block(b, false, b, false, cj * ft.mass - ft.damping);
+      emit.Block(b, false, b, true, -ft.stiffness);
+      continue;
+    }
     // d(omega x J omega)/d omega = [omega x] J - [(J omega) x]; f has its negative.
     const RigidBody& body = system_.body(b);
     Matrix6d Jvv = Matrix6d::Zero();
@@ -171,57 +257,77 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
   //   dynamic rows:     lambda_k H_st X_t          (C^T lambda)
   //   lambda row k:     (sum_s v_s^T H_st) X_t,  G_t
   //   mu row k:         G_t X_t;   columns lambda_k / mu_k: G_s^T / X_s^T G_s^T.
-  // The first two are summed over consecutive terms between the same two bodies (the
+  // The first two are summed over consecutive terms between the same two rigid bodies (the
   // equations of one joint) and emitted once per run: one set of 7x7 blocks per joint
-  // instead of per equation.
+  // instead of per equation. A term with a marker on a flexible body works in the body's
+  // coordinates through [I E] (constraint_eval.h) and is emitted on its own.
   using Matrix12 = Eigen::Matrix<double, 12, 12>;
   Matrix12 H_lambda = Matrix12::Zero(), H_mu = Matrix12::Zero();
   int run_body[2] = {-1, -1};
-  auto flush = [&] {
-    if (run_body[0] < 0) return;
+  auto emit_hessians = [&](const int body[2], const Matrix12& Hl, const Matrix12& Hm,
+                           const Eigen::MatrixXd* Ts) {
     for (int s = 0; s < 2; ++s) {
-      if (L.is_ground(run_body[s])) continue;
-      const int rq = G.q() + L.position(run_body[s]), rv = G.v() + L.velocity(run_body[s]);
+      if (L.is_ground(body[s])) continue;
       for (int u = 0; u < 2; ++u) {
-        if (L.is_ground(run_body[u])) continue;
-        const int cq = G.q() + L.position(run_body[u]);
-        const Matrix67& Xu = X[run_body[u]];
-        A->AddBlock(rq, cq, X[run_body[s]].transpose() * (H_mu.block<6, 6>(6 * s, 6 * u) * Xu));
-        A->AddBlock(rv, cq, H_lambda.block<6, 6>(6 * s, 6 * u) * Xu);
+        if (L.is_ground(body[u])) continue;
+        const Eigen::MatrixXd hm = Ts[s].transpose() * Hm.block<6, 6>(6 * s, 6 * u) * Ts[u];
+        const Eigen::MatrixXd hl = Ts[s].transpose() * Hl.block<6, 6>(6 * s, 6 * u) * Ts[u];
+        emit.Block(body[s], true, body[u], true, hm);
+        emit.Block(body[s], false, body[u], true, hl);
       }
     }
+  };
+  const Eigen::MatrixXd rigid_maps[2] = {TermMap(nullptr), TermMap(nullptr)};
+  auto flush = [&] {
+    if (run_body[0] < 0) return;
+    emit_hessians(run_body, H_lambda, H_mu, rigid_maps);
     H_lambda.setZero();
     H_mu.setZero();
+    run_body[0] = run_body[1] = -1;
   };
   VisitKernelTerms(system_, bodies, [&](const KernelTerm& term) {
     const int k = term.equation;
     const int body[2] = {term.body_i, term.body_j};
-    if (body[0] != run_body[0] || body[1] != run_body[1]) {
+    const bool flexible = term.E[0] != nullptr || term.E[1] != nullptr;
+    const Eigen::MatrixXd T[2] = {TermMap(term.E[0]), TermMap(term.E[1])};
+    if (flexible) {
       flush();
-      run_body[0] = body[0];
-      run_body[1] = body[1];
+      emit_hessians(body, lambda[k] * term.hessian, mu[k] * term.hessian, T);
+    } else {
+      if (body[0] != run_body[0] || body[1] != run_body[1]) {
+        flush();
+        run_body[0] = body[0];
+        run_body[1] = body[1];
+      }
+      H_lambda += lambda[k] * term.hessian;
+      H_mu += mu[k] * term.hessian;
     }
-    H_lambda += lambda[k] * term.hessian;
-    H_mu += mu[k] * term.hessian;
+    // Velocities of the two sides' virtual bodies: [I E] [v_b; eta'_b].
     Eigen::Matrix<double, 12, 1> v_term = Eigen::Matrix<double, 12, 1>::Zero();
-    for (int s = 0; s < 2; ++s)
-      if (!L.is_ground(body[s])) v_term.segment<6>(6 * s) = v.segment<6>(L.velocity(body[s]));
+    Eigen::VectorXd vb[2];
+    for (int s = 0; s < 2; ++s) {
+      if (L.is_ground(body[s])) continue;
+      const int ne = L.num_elastic(body[s]);
+      vb[s].resize(6 + ne);
+      vb[s].head<6>() = v.segment<6>(L.velocity(body[s]));
+      if (ne) vb[s].tail(ne) = v.segment(L.elastic_v(body[s]), ne);
+      v_term.segment<6>(6 * s) = T[s] * vb[s];
+    }
     const Eigen::Matrix<double, 1, 12> v_H = v_term.transpose() * term.hessian;
     for (int s = 0; s < 2; ++s) {
       if (L.is_ground(body[s])) continue;
-      const int rq = G.q() + L.position(body[s]), rv = G.v() + L.velocity(body[s]);
-      const Eigen::Matrix<double, 1, 6> g = term.gradient.segment<6>(6 * s);
-      A->AddBlock(G.lambda() + k, rq, v_H.segment<6>(6 * s) * X[body[s]]);
-      A->AddBlock(G.lambda() + k, rv, g);
-      A->AddBlock(G.mu() + k, rq, g * X[body[s]]);
-      A->AddBlock(rq, G.mu() + k, X[body[s]].transpose() * g.transpose());
-      A->AddBlock(rv, G.lambda() + k, g.transpose());
+      const Eigen::RowVectorXd g = term.gradient.segment<6>(6 * s) * T[s];
+      emit.Row(G.lambda() + k, body[s], true, v_H.segment<6>(6 * s) * T[s]);
+      emit.Row(G.lambda() + k, body[s], false, g);
+      emit.Row(G.mu() + k, body[s], true, g);
+      emit.Column(body[s], true, G.mu() + k, g.transpose());
+      emit.Column(body[s], false, G.lambda() + k, g.transpose());
     }
   });
   flush();
 
   // Force elements: analytic stiffness and damping.
-  GglForceSink sink(L, G, X, A);
+  GglForceSink sink(emit);
   const auto& forces = system_.force_elements();
   for (std::size_t k = 0; k < forces.size(); ++k) {
     const ForceContext ctx{&system_, &bodies, t, &workspace_,
@@ -242,12 +348,25 @@ std::string GglDae::DoComponentName(int i) const {
   const GglLayout& G = layout_;
   static const char* kQ[] = {"p_WB.x", "p_WB.y", "p_WB.z", "e.w", "e.x", "e.y", "e.z"};
   static const char* kV[] = {"v_WB.x", "v_WB.y", "v_WB.z", "omega_B.x", "omega_B.y", "omega_B.z"};
+  auto modal = [&](int k, bool rate) {
+    for (int b = 1; b < system_.num_bodies(); ++b) {
+      const int start = rate ? L.elastic_v(b) : L.elastic_q(b);
+      if (L.num_elastic(b) && k >= start && k < start + L.num_elastic(b))
+        return "body '" + system_.body(b).name + "' " + (rate ? "eta'" : "eta") + "[" +
+               std::to_string(k - start) + "]";
+    }
+    return std::string("?");
+  };
+  const int rigid_q = StateLayout::kQPerBody * L.num_moving();
+  const int rigid_v = StateLayout::kVPerBody * L.num_moving();
   if (i < G.v()) {
+    if (i >= rigid_q) return modal(i, false);
     const int b = i / StateLayout::kQPerBody + 1;
     return "body '" + system_.body(b).name + "' " + kQ[i - L.position(b)];
   }
   if (i < G.lambda()) {
     const int k = i - G.v();
+    if (k >= rigid_v) return modal(k, true);
     const int b = k / StateLayout::kVPerBody + 1;
     return "body '" + system_.body(b).name + "' " + kV[k - L.velocity(b)];
   }
@@ -271,6 +390,8 @@ void GglDae::MakeInitialValues(const Eigen::VectorXd& q, const Eigen::VectorXd& 
     yp->segment<3>(L.position(b)) = v.segment<3>(L.velocity(b));
     yp->segment<4>(L.quaternion(b)) = 0.5 * QuaternionRateMatrix(q.segment<4>(L.quaternion(b))) *
                                       v.segment<3>(L.angular_velocity(b));
+    const int ne = L.num_elastic(b);
+    if (ne) yp->segment(L.elastic_q(b), ne) = v.segment(L.elastic_v(b), ne);
   }
   yp->segment(G.v(), G.nv()) = vdot;
 }

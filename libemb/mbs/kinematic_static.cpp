@@ -8,6 +8,7 @@
 #include "libemb/mbs/analysis_internal.h"
 #include "libemb/mbs/constraint_eval.h"
 #include "libemb/mbs/force_jacobian.h"
+#include "libemb/mbs/linearization.h"
 #include "libemb/mbs/system.h"
 
 namespace emb::mbs::internal {
@@ -39,24 +40,9 @@ StaticEval EvalStatic(const System& sys, const Eigen::VectorXd& q, const Eigen::
 Eigen::MatrixXd StaticJacobian(const System& sys, const StaticEval& e,
                                const Eigen::VectorXd& lambda, double t,
                                ConstraintWorkspace* ws) {
-  const StateLayout& L = sys.layout();
-  const int nv = L.nv(), m = sys.num_equations();
-  DenseForceJacobian forces(L);
-  const auto& elements = sys.force_elements();
-  for (std::size_t k = 0; k < elements.size(); ++k) {
-    const ForceContext ctx{&sys, &e.bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
-    elements[k]->AddForceJacobian(ctx, &forces);
-  }
+  const int nv = sys.layout().nv(), m = sys.num_equations();
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(nv + m, nv + m);
-  K.topLeftCorner(nv, nv) = forces.stiffness();
-  VisitKernelTerms(sys, e.bodies, [&](const KernelTerm& term) {
-    const int body[2] = {term.body_i, term.body_j};
-    for (int s = 0; s < 2; ++s)
-      for (int u = 0; u < 2; ++u)
-        if (!L.is_ground(body[s]) && !L.is_ground(body[u]))
-          K.block<6, 6>(L.velocity(body[s]), L.velocity(body[u])) -=
-              lambda[term.equation] * term.hessian.block<6, 6>(6 * s, 6 * u);
-  });
+  K.topLeftCorner(nv, nv) = CalcTangentStiffness(sys, e.bodies, lambda, t, ws);
   const Eigen::MatrixXd C(e.C);
   K.block(0, nv, nv, m) = -C.transpose();
   K.block(nv, 0, m, nv) = C;
@@ -65,6 +51,12 @@ Eigen::MatrixXd StaticJacobian(const System& sys, const StaticEval& e,
 
 // "body 'crank' moment y" for component i of a v-space vector.
 std::string ForceComponentName(const System& sys, int i) {
+  const StateLayout& L = sys.layout();
+  if (i >= StateLayout::kVPerBody * L.num_moving()) {
+    for (int b = 1; b < sys.num_bodies(); ++b)
+      if (L.num_elastic(b) && i >= L.elastic_v(b) && i < L.elastic_v(b) + L.num_elastic(b))
+        return "body '" + sys.body(b).name + "' modal force " + std::to_string(i - L.elastic_v(b));
+  }
   const int b = i / StateLayout::kVPerBody + 1;
   const int c = i % StateLayout::kVPerBody;
   static const char* kNames[] = {"force x (W)",  "force y (W)",  "force z (W)",
@@ -186,7 +178,8 @@ RunResult RunKinematic(const PreparedRun& run, const AnalysisSettings& settings,
     return r;
   }
   ConstraintWorkspace ws(sys);
-  const Eigen::MatrixXd M = CalcMassMatrix(sys);
+  const Eigen::MatrixXd M =
+      CalcMassMatrix(sys, CalcBodyKinematics(sys, run.q0, Eigen::VectorXd()));
   Eigen::VectorXd q = run.q0, v = Eigen::VectorXd::Zero(sys.layout().nv());
   const std::vector<double> times = OutputTimes(settings);
   for (std::size_t k = 0; k < times.size(); ++k) {

@@ -120,6 +120,34 @@ double BetaPrimeOverT(double t) {
 
 }  // namespace
 
+namespace {
+// Below this angle the Rodrigues coefficients are evaluated by their series to t^6 (the
+// closed forms lose digits to cancellation; the truncation error there is < 1e-16).
+constexpr double kRodriguesSeriesAngle = 0.1;
+
+// sin(t)/t, (1 - cos t)/t^2 and (t - sin t)/t^3.
+Eigen::Vector3d RodriguesCoefficients(double t) {
+  const double t2 = t * t;
+  if (t < kRodriguesSeriesAngle)
+    return {1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0)),
+            0.5 - t2 / 24.0 * (1.0 - t2 / 30.0 * (1.0 - t2 / 56.0)),
+            1.0 / 6.0 - t2 / 120.0 * (1.0 - t2 / 42.0 * (1.0 - t2 / 72.0))};
+  return {std::sin(t) / t, (1.0 - std::cos(t)) / t2, (t - std::sin(t)) / (t2 * t)};
+}
+}  // namespace
+
+Matrix3d RotationFromRotationVector(const Vector3d& theta) {
+  const Eigen::Vector3d c = RodriguesCoefficients(theta.norm());
+  const Matrix3d S = Skew(theta);
+  return Matrix3d::Identity() + c[0] * S + c[1] * S * S;
+}
+
+Matrix3d LeftJacobianSO3(const Vector3d& theta) {
+  const Eigen::Vector3d c = RodriguesCoefficients(theta.norm());
+  const Matrix3d S = Skew(theta);
+  return Matrix3d::Identity() + c[1] * S + c[2] * S * S;
+}
+
 Matrix3d InverseLeftJacobianSO3(const Vector3d& theta) {
   const Matrix3d S = Skew(theta);
   return Matrix3d::Identity() - 0.5 * S + Beta(theta.norm()) * S * S;

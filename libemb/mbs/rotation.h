@@ -50,6 +50,14 @@ Vector3d RotationVectorFromRotation(const Matrix3d& R);
 /// w >= 0, so |theta| is in [0, pi]; exact to round-off at small angles (no acos).
 Vector3d RotationVectorFromQuaternion(const Vector4d& e);
 
+/// Exp([theta x]) = I + sin(t)/t [theta x] + (1 - cos t)/t^2 [theta x]^2, t = |theta|
+/// (Rodrigues; series below t = 0.1).
+Matrix3d RotationFromRotationVector(const Vector3d& theta);
+
+/// Left Jacobian of SO(3): J_l(theta) = I + (1 - cos t)/t^2 [theta x] + (t - sin t)/t^3
+/// [theta x]^2, so that d Exp(theta) = [(J_l(theta) dtheta) x] Exp(theta).
+Matrix3d LeftJacobianSO3(const Vector3d& theta);
+
 /// Inverse of the left Jacobian of SO(3):
 ///   J_l^{-1}(theta) = I - 1/2 [theta x] + beta(t) [theta x]^2,
 ///   beta(t) = 1/t^2 - cot(t/2) / (2 t),  t = |theta|  (beta -> 1/12 as t -> 0),

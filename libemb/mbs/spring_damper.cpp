@@ -45,15 +45,15 @@ void TranslationalSpringDamper::DoAddForces(const ForceContext& ctx,
   const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
   const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
   const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
-  AddWrench(sys.layout(), (*ctx.bodies)[I.body], I.body, I.p_WM, -tension * s.u, zero, f);
-  AddWrench(sys.layout(), (*ctx.bodies)[J.body], J.body, J.p_WM, tension * s.u, zero, f);
+  AddWrench(sys.layout(), I, I.p_WM, -tension * s.u, zero, f);
+  AddWrench(sys.layout(), J, J.p_WM, tension * s.u, zero, f);
 }
 
 void TranslationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
                                                    ForceJacobianSink* sink) const {
   const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
   const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
-  LocalForceJacobian jac({I.body, J.body});
+  LocalForceJacobian jac({&I, &J});
   const State s = Calc(ctx);
   if (s.length > 0.0) {
     const MarkerDerivatives dI = DifferentiateMarker(I, 0, 2), dJ = DifferentiateMarker(J, 1, 2);
@@ -124,9 +124,7 @@ RotationalSpringDamper::State RotationalSpringDamper::Calc(const ForceContext& c
     s.angle = WrapAngle(g.value - a0_);
   }
   s.gradient << g.d_i, g.d_j;
-  const BodyKinematics& bi = (*ctx.bodies)[I.body];
-  const BodyKinematics& bj = (*ctx.bodies)[J.body];
-  s.velocity << bi.v_WB, bi.omega_B, bj.v_WB, bj.omega_B;
+  s.velocity << VirtualBodyVelocity(I), VirtualBodyVelocity(J);
   s.rate = s.gradient.dot(s.velocity);
   s.body_i = I.body;
   s.body_j = J.body;
@@ -138,8 +136,10 @@ void RotationalSpringDamper::DoAddForces(const ForceContext& ctx,
   const State s = Calc(ctx);
   const double tau = k_ * s.angle + c_ * s.rate;
   const StateLayout& L = ctx.system->layout();
-  if (!L.is_ground(s.body_i)) f.segment<6>(L.velocity(s.body_i)) -= tau * s.gradient.head<6>();
-  if (!L.is_ground(s.body_j)) f.segment<6>(L.velocity(s.body_j)) -= tau * s.gradient.tail<6>();
+  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
+  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  AddMarkerForce(L, I, -tau * s.gradient.head<6>().transpose(), f);
+  AddMarkerForce(L, J, -tau * s.gradient.tail<6>().transpose(), f);
 }
 
 void RotationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
@@ -149,7 +149,7 @@ void RotationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
   const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
   const Eigen::Matrix<double, 12, 12> H = EvalKernelHessian({KernelKind::kAngle, 0, 0}, I, J);
   const double tau = k_ * s.angle + c_ * s.rate;
-  LocalForceJacobian jac({s.body_i, s.body_j});
+  LocalForceJacobian jac({&I, &J});
   jac.stiffness = -s.gradient.transpose() * (k_ * s.gradient + c_ * s.velocity.transpose() * H) -
                   tau * H;
   jac.damping = -c_ * s.gradient.transpose() * s.gradient;

@@ -87,9 +87,25 @@ int System::AddMarker(const std::string& name, const std::string& body_name,
           (R_BM.transpose() * R_BM - Eigen::Matrix3d::Identity()).norm() > kOrthonormalTolerance ||
           R_BM.determinant() < 0,
       "marker '" << name << "': expected orthonormal right-handed axes");
-  Marker m{name, FindBody(body_name), p_BM, R_BM};
+  Marker m{name, FindBody(body_name), p_BM, R_BM, {}, {}};
   markers_.push_back(m);
   return static_cast<int>(markers_.size()) - 1;
+}
+
+int System::AddFlexibleMarker(const std::string& name, const std::string& body_name,
+                              const Eigen::Vector3d& p_BM, const Eigen::Matrix3d& R_BM,
+                              const Eigen::MatrixXd& shape_t, const Eigen::MatrixXd& shape_r) {
+  const int b = FindBody(body_name);
+  const int ne = bodies_[b].num_modes();
+  EMB_THROW_IF(ne == 0, "marker '" << name << "': body '" << body_name << "' is not flexible");
+  EMB_THROW_IF(shape_t.rows() != 3 || shape_r.rows() != 3 || shape_t.cols() != ne ||
+                   shape_r.cols() != ne,
+               "marker '" << name << "': expected 3 x " << ne << " translation and rotation "
+                          << "shapes for the modes of body '" << body_name << "'");
+  const int k = AddMarker(name, body_name, p_BM, R_BM);
+  markers_[k].shape_t = shape_t;
+  markers_[k].shape_r = shape_r;
+  return k;
 }
 
 int System::AddJoint(const std::string& name, JointType type, const std::string& marker_i,
@@ -189,7 +205,16 @@ void System::AddForceElement(std::shared_ptr<const ForceElement> element) {
 
 void System::Finalize() {
   CheckNotFinalized("Finalize");
-  layout_ = StateLayout(num_bodies());
+  std::vector<int> ne;
+  for (const auto& b : bodies_) ne.push_back(b.num_modes());
+  layout_ = StateLayout(num_bodies(), ne);
+  // A marker added on a flexible body with AddMarker stays at its undeformed place only if
+  // the body is rigid: give it zero shapes (it then moves with the reference frame).
+  for (auto& m : markers_)
+    if (ne[m.body] > 0 && m.shape_t.size() == 0) {
+      m.shape_t.setZero(3, ne[m.body]);
+      m.shape_r.setZero(3, ne[m.body]);
+    }
   equations_.clear();
   // Keep the equations grouped by element in element order.
   for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
@@ -267,6 +292,11 @@ Eigen::VectorXd System::InitialPositions() const {
   for (int b = 1; b < num_bodies(); ++b) {
     q.segment<3>(layout_.position(b)) = bodies_[b].p_WB;
     q.segment<4>(layout_.quaternion(b)) = QuaternionFromRotation(bodies_[b].R_WB);
+    const int ne = layout_.num_elastic(b);
+    if (ne) {
+      q.segment(layout_.elastic_q(b), ne).setZero();
+      if (bodies_[b].eta0.size()) q.segment(layout_.elastic_q(b), ne) = bodies_[b].eta0;
+    }
   }
   return q;
 }
@@ -276,6 +306,11 @@ Eigen::VectorXd System::InitialVelocities() const {
   for (int b = 1; b < num_bodies(); ++b) {
     v.segment<3>(layout_.velocity(b)) = bodies_[b].v_WB;
     v.segment<3>(layout_.angular_velocity(b)) = bodies_[b].R_WB.transpose() * bodies_[b].omega_W;
+    const int ne = layout_.num_elastic(b);
+    if (ne) {
+      v.segment(layout_.elastic_v(b), ne).setZero();
+      if (bodies_[b].eta_dot0.size()) v.segment(layout_.elastic_v(b), ne) = bodies_[b].eta_dot0;
+    }
   }
   return v;
 }

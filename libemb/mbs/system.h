@@ -18,12 +18,15 @@
 
 namespace emb::mbs {
 
-/// A frame fixed on a body.
+/// A frame fixed on a body. On a flexible body it moves with the deformation: its origin by
+/// shape_t eta and its axes by the rotation Exp(shape_r eta) (in B), e.g. the reference
+/// node of an interface with the rows of the body file's interface shapes.
 struct Marker {
   std::string name;
   int body{0};                                        ///< 0 = ground
-  Eigen::Vector3d p_BM{Eigen::Vector3d::Zero()};      ///< in B, from the CM [m]
-  Eigen::Matrix3d R_BM{Eigen::Matrix3d::Identity()};  ///< marker axes in B
+  Eigen::Vector3d p_BM{Eigen::Vector3d::Zero()};      ///< in B, from the CM [m] (undeformed)
+  Eigen::Matrix3d R_BM{Eigen::Matrix3d::Identity()};  ///< marker axes in B (undeformed)
+  Eigen::MatrixXd shape_t, shape_r;                   ///< 3 x ne, empty on rigid bodies
 };
 
 /// What kind of constraint element produced an equation.
@@ -65,6 +68,12 @@ class System {
   /// @throws InputError for an unknown body, a duplicate name or non-orthonormal axes.
   int AddMarker(const std::string& name, const std::string& body_name, const Eigen::Vector3d& p_BM,
                 const Eigen::Matrix3d& R_BM);
+  /// A marker on a flexible body that follows the deformation with the translation and
+  /// rotation shapes (3 x ne each, in B, per unit modal coordinate).
+  /// @throws InputError if the body is not flexible or the shapes do not have its ne columns.
+  int AddFlexibleMarker(const std::string& name, const std::string& body_name,
+                        const Eigen::Vector3d& p_BM, const Eigen::Matrix3d& R_BM,
+                        const Eigen::MatrixXd& shape_t, const Eigen::MatrixXd& shape_r);
   /// Adds a joint or primitive constraint between markers I (first body) and J.
   int AddJoint(const std::string& name, JointType type, const std::string& marker_i,
                const std::string& marker_j);
@@ -116,7 +125,8 @@ class System {
   int FindMarker(const std::string& name) const;   ///< @throws InputError with did-you-mean
   int FindElement(const std::string& name) const;  ///< @throws InputError with did-you-mean
 
-  /// The initial q (7 per moving body) and v (6 per moving body) from the bodies' data.
+  /// The initial q (7 per moving body, then the modal coordinates) and v (6 per moving body,
+  /// then the modal rates) from the bodies' data.
   Eigen::VectorXd InitialPositions() const;
   Eigen::VectorXd InitialVelocities() const;
 

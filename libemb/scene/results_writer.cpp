@@ -82,12 +82,34 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
   residuals_ = file_.AddSeries("/residuals", 2);
   file_.SetAttribute("/residuals", "columns",
                      std::string("max |Phi| (m or rad), max |C v + Phi_t| (m/s or rad/s)"));
+  const mbs::StateLayout& L = system.layout();
+  if (L.num_elastic_total() > 0) {
+    std::vector<std::string> flexible;
+    std::vector<double> counts;
+    for (int b = 1; b < system.num_bodies(); ++b)
+      if (L.num_elastic(b)) {
+        flexible.push_back(system.body(b).name);
+        counts.push_back(L.num_elastic(b));
+      }
+    file_.WriteStrings("/model/flexible_bodies", flexible);
+    file_.WriteDoubles("/model/num_modes", counts, {static_cast<std::uint64_t>(counts.size())});
+    eta_ = file_.AddSeries("/state/eta", L.num_elastic_total());
+    eta_dot_ = file_.AddSeries("/state/eta_dot", L.num_elastic_total());
+    file_.SetAttribute("/state/eta", "columns",
+                       std::string("modal coordinates of /model/flexible_bodies, body after "
+                                   "body (/model/num_modes each) [kg^0.5 m]"));
+  }
   file_.Flush();
 }
 
 void ResultsWriter::Write(const mbs::Sample& s) {
   file_.Append(time_, &s.t);
   file_.Append(q_, s.q.data());
+  if (eta_ >= 0) {
+    const int rigid_q = 7 * system_.layout().num_moving(), rigid_v = 6 * system_.layout().num_moving();
+    file_.Append(eta_, s.q.data() + rigid_q);
+    file_.Append(eta_dot_, s.v.data() + rigid_v);
+  }
   file_.Append(v_, s.v.data());
   file_.Append(vdot_, s.vdot.data());
   const Eigen::VectorXd e = Euler(system_, s.q);

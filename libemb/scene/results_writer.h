@@ -30,6 +30,10 @@
 ///   /energy             [N, 5] kinetic, gravity potential, elastic, total (J),
 ///                       dissipated power (W)
 ///   /residuals          [N, 2] max |Phi| (m or rad), max |C v + Phi_t| (m/s or rad/s)
+///   with flexible bodies also
+///   /model/flexible_bodies [nf] names, /model/num_modes [nf]
+///   /state/eta, /state/eta_dot [N, sum num_modes] modal coordinates and rates, body after
+///                       body (/state/q and /state/v hold the rigid-body part only)
 
 #include <fstream>
 #include <memory>
@@ -56,6 +60,7 @@ class ResultsWriter {
   const mbs::System& system_;
   TimeSeriesFile file_;
   int time_, q_, v_, vdot_, euler_, lambda_, force_, torque_, energy_, residuals_;
+  int eta_{-1}, eta_dot_{-1};
 };
 
 /// A CSV file with a header line "t,<channel>,..." and one line per sample.

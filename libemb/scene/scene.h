@@ -28,6 +28,7 @@ struct Scene {
   mbs::System system;  ///< finalized
   mbs::AnalysisSettings analysis;
   OutputSpec output;
+  std::vector<std::string> notes;  ///< what the loader decided, e.g. the modes a part kept
 };
 
 /// Reads and validates a scene file; output paths become relative to its directory

@@ -1,6 +1,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <numbers>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "libemb/mbs/bushing.h"
 #include "libemb/mbs/rotation.h"
 #include "libemb/mbs/spring_damper.h"
+#include "libemb/scene/body_file_part.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
 #include "libemb/scene/yaml_reader.h"
@@ -20,24 +22,72 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sys) {
+// Parts read from body files, by part name (for the markers on their interfaces).
+using BodyFileParts = std::map<std::string, BodyFilePart>;
+
+// A path in the scene relative to the scene file's directory.
+std::string ScenePath(const std::string& file, const std::string& p) {
+  if (std::filesystem::path(p).is_absolute()) return p;
+  return (std::filesystem::path(file).parent_path() / p).lexically_normal().string();
+}
+
+BodyFileOptions ReadBodyFileOptions(MapReader& rb, bool flexible) {
+  BodyFileOptions o;
+  o.flexible = flexible;
+  o.max_modes = rb.GetInt("modes", -1);
+  o.fmax_hz = rb.GetDouble("fmax_hz", -1.0);
+  if (rb.Has("geometric_stiffening"))
+    o.geometric_stiffening = rb.GetBool("geometric_stiffening", true) ? 1 : 0;
+  else
+    rb.Optional("geometric_stiffening");
+  o.expect_mesh_hash = rb.GetString("expect_mesh_hash", "");
+  return o;
+}
+
+void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sys,
+                BodyFileParts* parts, std::vector<std::string>* notes) {
   EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'bodies': expected a list");
   for (const auto& node : list) {
     MapReader r(node, file, "body");
     mbs::RigidBody b;
     b.name = r.GetString("name");
-    MapReader rb(node, file, "body '" + b.name + "'");
+    const std::string what = "body '" + b.name + "'";
+    MapReader rb(node, file, what);
     rb.GetString("name");
-    b.mass = rb.GetDouble("mass");
-    const YAML::Node in = rb.Require("inertia");
-    b.inertia_B = ReadInertia(in, file, "body '" + b.name + "' inertia");
-    b.p_WB = rb.GetVector3("position", Vector3d::Zero());
+    const std::string model = rb.GetString("model", "rigid");
+    EMB_THROW_IF(model != "rigid" && model != "cms",
+                 Where(file, node) << ": " << what << " model: expected 'rigid' or 'cms', got '"
+                                   << model << "'");
+    const bool from_file = rb.Has("body_file");
+    EMB_THROW_IF(model == "cms" && !from_file,
+                 Where(file, node) << ": " << what << ": model 'cms' needs a body_file (from "
+                                   << "emb reduce)");
+    const Vector3d position = rb.GetVector3("position", Vector3d::Zero());
+    Matrix3d R = Matrix3d::Identity();
     if (const YAML::Node o = rb.Optional("orientation"))
-      b.R_WB = ReadOrientation(o, file, "body '" + b.name + "' orientation");
+      R = ReadOrientation(o, file, what + " orientation");
     b.v_WB = rb.GetVector3("velocity", Vector3d::Zero());
     b.omega_W = rb.GetVector3("angular_velocity", Vector3d::Zero());
-    rb.Finish();
     try {
+      if (from_file) {
+        for (const char* key : {"mass", "inertia"})
+          EMB_THROW_IF(rb.Has(key), what << ": '" << key << "' comes from the body file; "
+                                         << "remove it");
+        const std::string path = ScenePath(file, rb.GetString("body_file"));
+        const BodyFileOptions options = ReadBodyFileOptions(rb, model == "cms");
+        rb.Finish();
+        b.p_WB = position;
+        BodyFilePart part = LoadBodyFilePart(path, options, position, R, &b);
+        notes->push_back(part.note);
+        (*parts)[b.name] = std::move(part);
+      } else {
+        b.mass = rb.GetDouble("mass");
+        const YAML::Node in = rb.Require("inertia");
+        b.inertia_B = ReadInertia(in, file, what + " inertia");
+        b.p_WB = position;
+        b.R_WB = R;
+        rb.Finish();
+      }
       sys->AddBody(b);
     } catch (const InputError& e) {
       EMB_THROW(InputError, Where(file, node) << ": " << e.what());
@@ -45,7 +95,8 @@ void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sy
   }
 }
 
-void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* sys) {
+void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* sys,
+                 const BodyFileParts& parts) {
   EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'markers': expected a list");
   for (const auto& node : list) {
     MapReader r0(node, file, "marker");
@@ -57,6 +108,10 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
     EMB_THROW_IF(frame != "body" && frame != "world",
                  Where(file, node) << ": marker '" << name
                                    << "' frame: expected 'body' or 'world', got '" << frame << "'");
+    const std::string interface = r.GetString("interface", "");
+    EMB_THROW_IF(!interface.empty() && r.Has("position"),
+                 Where(file, node) << ": marker '" << name
+                                   << "': give either an interface or a position, not both");
     const Vector3d p = r.GetVector3("position", Vector3d::Zero());
     Matrix3d R = Matrix3d::Identity();
     if (const YAML::Node o = r.Optional("orientation"))
@@ -64,14 +119,35 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
     r.Finish();
     try {
       const int b = sys->FindBody(body);
+      const mbs::RigidBody& rb = sys->body(b);
+      const auto part = parts.find(body);
       Vector3d p_BM = p;
       Matrix3d R_BM = R;
       if (frame == "world") {  // given at the initial configuration
-        const mbs::RigidBody& rb = sys->body(b);
         p_BM = rb.R_WB.transpose() * (p - rb.p_WB);
         R_BM = rb.R_WB.transpose() * R;
+      } else if (part != parts.end()) {  // mesh coordinates
+        p_BM = p - part->second.com_mesh;
       }
-      sys->AddMarker(name, body, p_BM, R_BM);
+      if (interface.empty()) {
+        EMB_THROW_IF(rb.elastic != nullptr,
+                     "marker '" << name << "': body '" << body
+                                << "' is flexible; expected `interface: NAME` (a marker must "
+                                   "sit on an interface node to follow the deformation)");
+        sys->AddMarker(name, body, p_BM, R_BM);
+        continue;
+      }
+      EMB_THROW_IF(part == parts.end(), "marker '" << name << "': body '" << body
+                                                   << "' has no body_file, so no interfaces");
+      const BodyFilePart& bp = part->second;
+      const int k = bp.FindInterface(body, interface);
+      const Vector3d point = bp.interface_points[k] - bp.com_mesh;
+      if (rb.elastic == nullptr) {
+        sys->AddMarker(name, body, point, R_BM);
+      } else {
+        sys->AddFlexibleMarker(name, body, point, R_BM, bp.interface_shapes.middleRows(6 * k, 3),
+                               bp.interface_shapes.middleRows(6 * k + 3, 3));
+      }
     } catch (const InputError& e) {
       EMB_THROW(InputError, Where(file, node) << ": " << e.what());
     }
@@ -211,8 +287,9 @@ Scene ParseScene(const std::string& text, const std::string& source) {
     scene.system.SetGravity(r.GetVector3("gravity"));
   else
     r.Optional("gravity");
-  ReadBodies(r.Require("bodies"), source, &scene.system);
-  if (const YAML::Node n = r.Optional("markers")) ReadMarkers(n, source, &scene.system);
+  BodyFileParts parts;
+  ReadBodies(r.Require("bodies"), source, &scene.system, &parts, &scene.notes);
+  if (const YAML::Node n = r.Optional("markers")) ReadMarkers(n, source, &scene.system, parts);
   if (const YAML::Node n = r.Optional("joints")) ReadJoints(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("motions")) ReadMotions(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("couplers")) ReadCouplers(n, source, &scene.system);

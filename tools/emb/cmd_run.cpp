@@ -82,6 +82,8 @@ struct RunCommand {
     s.Add("status", "status", std::string(mbs::Name(r.status)));
     if (!r.message.empty()) s.Add("message", "message", r.message);
     s.Add("bodies", "moving bodies", run.system.layout().num_moving());
+    s.Add("modal_coordinates", "modal coordinates", run.system.layout().num_elastic_total());
+    if (!sc.notes.empty()) s.Add("parts", "parts", sc.notes);
     s.Add("equations", "constraint equations", run.system.num_equations());
     s.Add("gruebler_dof", "Gruebler-Kutzbach DOF", run.dof.gruebler_dof);
     s.Add("true_dof", "true DOF", run.dof.true_dof);

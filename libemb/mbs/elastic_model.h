@@ -1,0 +1,87 @@
+#pragma once
+/// @file
+/// The elastic part of a flexible body in the floating frame of reference (seed eqs.
+/// 1.27–1.30): modal coordinates eta, the inertia invariants that couple them with the rigid
+/// motion, the modal stiffness and damping and, optionally, geometric (stress) stiffening.
+///
+/// Frame: the body frame B of a flexible body has its origin at the *undeformed* centre of
+/// mass and the axes of the mesh. A material point at xbar (from the CM, in B) is at
+///   r = p_WB + R_WB (xbar + Phi(xbar) eta),
+/// with Phi the elastic mode shapes (mass-orthonormal, free of rigid motion). The invariants
+/// (Shabana's form, cms/inertia_invariants.h, shifted to the CM) are
+///   St = ∫ρ Phi (3 x ne),  Ibar_kl = ∫ρ xbar_k Phi_l (1 x ne),  Sbar_kl = ∫ρ Phi_k^T Phi_l
+/// (ne x ne) and Jbar = ∫ρ xbar xbar^T. With u = xbar + Phi eta the deformed position,
+///   c(eta) = ∫ρ u = St eta,   B_k(eta) = ∫ρ u Phi_k^T (3 x 3, k = mode),
+///   A(eta) = ∫ρ u u^T,        J(eta) = tr(A) I - A,
+/// the velocities v = [v_WB (W), omega_B (B), eta'] and M(eta) v' = f give
+///   M = [ m I        -R [c x]     R St
+///         [c x] R^T   J            [∫ρ u x Phi_k]_k
+///         St^T R^T    (sym.)       Mee = sum_i Sbar_ii ]
+///   f_t = m g - R (w x (w x c) + 2 w x St eta')
+///   f_r = c x R^T g - w x J w - 2 sum_l eta'_l (tr(B_l) w - B_l^T w)
+///   f_e = St^T R^T g - [w^T B_k w - |w|^2 tr B_k]_k - 2 G(w)^T eta' - K eta - D eta'
+///         - K_G(w, a) eta
+/// with w = omega_B and G(w) = w_x (S_yz - S_zy) + w_y (S_zx - S_xz) + w_z (S_xy - S_yx).
+/// Nothing is dropped: with mean-axis modes c and the rigid-elastic coupling vanish at
+/// eta = 0, but the terms are evaluated for every eta.
+///
+/// Geometric stiffening (optional, from the reduction): K_G(w, a) = sum_p c_p(w) K_p +
+/// sum_k a_k K_{a,k} with c = (wx^2, wy^2, wz^2, wx wy, wy wz, wz wx) and a = R^T(v'_WB - g),
+/// the acceleration of the frame origin less gravity in B.
+
+#include <Eigen/Dense>
+#include <array>
+#include <string>
+
+namespace emb::mbs {
+
+struct ElasticModel {
+  std::string source;                  ///< e.g. the body file, for messages
+  double mass{0.0};                    ///< [kg]
+  Eigen::Matrix3d second_moment;       ///< Jbar about the CM [kg m^2]
+  Eigen::MatrixXd St;                  ///< 3 x ne
+  Eigen::MatrixXd Ibar;                ///< 9 x ne, row 3k+l = Ibar_kl, about the CM
+  std::array<Eigen::MatrixXd, 9> Sbar; ///< [3k+l] = Sbar_kl (ne x ne)
+  Eigen::MatrixXd K, D;                ///< modal stiffness and damping (ne x ne)
+  Eigen::VectorXd frequencies_hz;      ///< of the kept modes (for reports)
+  /// Geometric stiffening (present only if the body file has it and it is switched on).
+  bool geometric_stiffening{false};
+  std::array<Eigen::MatrixXd, 6> kg_centrifugal;   ///< per product c_p(w)
+  std::array<Eigen::MatrixXd, 3> kg_translational; ///< per a_k
+
+  int num_modes() const { return static_cast<int>(K.rows()); }
+  /// Inertia tensor about the CM of the undeformed body: tr(Jbar) I - Jbar.
+  Eigen::Matrix3d RigidInertia() const;
+  /// @throws InputError naming `name` if sizes disagree, K is not symmetric positive
+  /// semi-definite or the modal mass is not positive definite.
+  void Validate(const std::string& name) const;
+  /// The model restricted to modes `keep` (indices into the current modes).
+  ElasticModel Subset(const std::vector<int>& keep) const;
+};
+
+/// Inertia terms of one flexible body at one state: the mass matrix and every velocity-,
+/// gravity- and deformation-dependent generalised force of the file comment, in the
+/// body's velocity coordinates [v_WB, omega_B, eta'] (6 + ne).
+struct FlexibleTerms {
+  Eigen::MatrixXd mass;   ///< M(eta)
+  Eigen::VectorXd force;  ///< f (gravity, quadratic velocity, elastic, damping, K_G)
+  /// Derivatives for the iteration matrix: d f / d[v_WB, omega_B, eta'] and
+  /// d f / d[delta p, delta pi, eta] (the terms that matter for Newton: velocity products,
+  /// the elastic, centrifugal and geometric stiffness, gravity through R; the derivatives
+  /// of M(eta) v' are left out).
+  Eigen::MatrixXd damping, stiffness;
+  double kinetic_energy{0.0};
+  double elastic_energy{0.0};  ///< eta^T K eta / 2
+  double gravity_energy{0.0};  ///< -m g.p_WB - g.R c(eta)
+  double dissipated_power{0.0};
+};
+
+/// Evaluates FlexibleTerms. `a_B` is the frame origin's acceleration less gravity in B for
+/// the translational geometric stiffness (zero if unknown). Cost O(ne^2).
+FlexibleTerms CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
+                                const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& v_WB,
+                                const Eigen::Vector3d& omega_B, const Eigen::VectorXd& eta,
+                                const Eigen::VectorXd& eta_dot, const Eigen::Vector3d& g_W,
+                                const Eigen::Vector3d& a_B, bool with_derivatives);
+
+}  // namespace emb::mbs
