@@ -23,10 +23,12 @@
 /// damping -D_ab (force_jacobian.h). It is assembled block by block (per body, per kernel
 /// term, per force element) through a MatrixAssembler, into a dense matrix for the dense
 /// solver or into a compressed-column matrix whose structure is fixed at the first call
-/// (KLU): O(number of blocks) per evaluation, no n x n work on the sparse path.
+/// (KLU): O(number of blocks) per evaluation, no n x n work on the sparse path. Flexible
+/// bodies: see FlexibleColumns().
 
 #include <Eigen/Dense>
 #include <string>
+#include <vector>
 
 #include "libemb/integrators/dae_problem.h"
 #include "libemb/mbs/constraint_eval.h"
@@ -86,6 +88,13 @@ class GglDae final : public DaeProblem {
                             SparseMatrixd* jacobian) const override;
 
  private:
+  // The q-columns of flexible bodies (rigid part and modal coordinates): their analytic
+  // second-derivative terms through the interface markers are incomplete (the derivatives of
+  // the marker map E, kinematics.h), so the iteration matrix takes them from central
+  // differences of the residual instead, 2 residuals per column.
+  std::vector<int> FlexibleColumns() const;
+  Eigen::VectorXd DifferenceColumn(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                   const Eigen::Ref<const Eigen::VectorXd>& yp, int j) const;
   // The iteration matrix through `assembler` (begun by the caller; finished here).
   void AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                         MatrixAssembler* assembler) const;

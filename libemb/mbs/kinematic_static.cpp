@@ -37,12 +37,12 @@ StaticEval EvalStatic(const System& sys, const Eigen::VectorXd& q, const Eigen::
 }
 
 // K = dR/d[x, lambda] = [df/dx - sum_k lambda_k K_k, -C^T; C, 0] in x = [delta p, delta pi].
-Eigen::MatrixXd StaticJacobian(const System& sys, const StaticEval& e,
+Eigen::MatrixXd StaticJacobian(const System& sys, const StaticEval& e, const Eigen::VectorXd& q,
                                const Eigen::VectorXd& lambda, double t,
                                ConstraintWorkspace* ws) {
   const int nv = sys.layout().nv(), m = sys.num_equations();
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(nv + m, nv + m);
-  K.topLeftCorner(nv, nv) = CalcTangentStiffness(sys, e.bodies, lambda, t, ws);
+  K.topLeftCorner(nv, nv) = CalcTangentStiffness(sys, q, Eigen::VectorXd(), lambda, t, ws);
   const Eigen::MatrixXd C(e.C);
   K.block(0, nv, nv, m) = -C.transpose();
   K.block(nv, 0, m, nv) = C;
@@ -116,7 +116,7 @@ StaticReport SolveStatic(const System& sys, double t, const AnalysisSettings& s,
       rep.status = NewtonStatus::kMaxIterations;
       return rep;
     }
-    const Eigen::MatrixXd K = StaticJacobian(sys, e, *lambda, t, ws);
+    const Eigen::MatrixXd K = StaticJacobian(sys, e, *q, *lambda, t, ws);
     const Eigen::VectorXd step = -K.completeOrthogonalDecomposition().solve(e.r);
     const Eigen::VectorXd w = weights(e);
     const double phi0 = 0.5 * e.r.cwiseProduct(w).squaredNorm();

@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "libemb/common/error.h"
+#include "libemb/mbs/assembly.h"
 #include "libemb/mbs/constraint_eval.h"
 #include "libemb/mbs/dynamics.h"
 #include "libemb/mbs/force_jacobian.h"
@@ -17,10 +18,11 @@
 
 namespace emb::mbs {
 
-Eigen::MatrixXd CalcTangentStiffness(const System& sys, const std::vector<BodyKinematics>& bodies,
-                                     const Eigen::VectorXd& lambda, double t,
-                                     ConstraintWorkspace* ws) {
+Eigen::MatrixXd CalcTangentStiffness(const System& sys, const Eigen::VectorXd& q,
+                                     const Eigen::VectorXd& v, const Eigen::VectorXd& lambda,
+                                     double t, ConstraintWorkspace* ws) {
   const StateLayout& L = sys.layout();
+  const auto bodies = CalcBodyKinematics(sys, q, v);
   DenseForceJacobian forces(L);
   const auto& elements = sys.force_elements();
   for (std::size_t k = 0; k < elements.size(); ++k) {
@@ -51,6 +53,30 @@ Eigen::MatrixXd CalcTangentStiffness(const System& sys, const std::vector<BodyKi
                          -lambda[term.equation] * T[s].transpose() *
                              term.hessian.block<6, 6>(6 * s, 6 * u) * T[u]);
   });
+  // Flexible bodies' columns: central differences of f - C^T lambda in x (rigid part
+  // through ApplyDisplacement, modal coordinates directly); h ~ eps^(1/3) x scale.
+  auto load = [&](const Eigen::VectorXd& qx) {
+    const auto bx = CalcBodyKinematics(sys, qx, v);
+    const ConstraintEval c = CalcConstraints(sys, bx, t, ws);
+    return Eigen::VectorXd(CalcGeneralizedForces(sys, bx, t, ws) - c.jacobian.transpose() * lambda);
+  };
+  for (int b = 1; b < sys.num_bodies(); ++b) {
+    const int ne = L.num_elastic(b);
+    if (!ne) continue;
+    std::vector<int> cols;
+    for (int i = 0; i < StateLayout::kVPerBody; ++i) cols.push_back(L.velocity(b) + i);
+    for (int i = 0; i < ne; ++i) cols.push_back(L.elastic_v(b) + i);
+    for (int j : cols) {
+      const double h = j >= L.elastic_v(b) ? 6e-6 * std::max(1e-3, std::abs(q[L.elastic_q(b) + j - L.elastic_v(b)]))
+                                            : 6e-6;
+      Eigen::VectorXd dx = Eigen::VectorXd::Zero(L.nv());
+      dx[j] = h;
+      const Eigen::VectorXd fp = load(ApplyDisplacement(sys, q, dx));
+      dx[j] = -h;
+      const Eigen::VectorXd fm = load(ApplyDisplacement(sys, q, dx));
+      K.col(j) = (fp - fm) / (2.0 * h);
+    }
+  }
   return K;
 }
 
@@ -93,7 +119,7 @@ LinearModes CalcLinearModes(const System& system, const Eigen::VectorXd& q,
   const Eigen::VectorXd v = v_in.size() ? v_in : Eigen::VectorXd::Zero(nv);
   const auto bodies = CalcBodyKinematics(system, q, v);
   const Eigen::MatrixXd M = CalcMassMatrix(system, bodies);
-  const Eigen::MatrixXd K = -CalcTangentStiffness(system, bodies, lambda, t, workspace);
+  const Eigen::MatrixXd K = -CalcTangentStiffness(system, q, v, lambda, t, workspace);
   const Eigen::MatrixXd G = CalcVelocityStiffness(system, bodies, t, workspace);
   const Eigen::MatrixXd C(CalcConstraints(system, bodies, t, workspace).jacobian);
   // Null space of C from a complete orthogonal decomposition of C^T.

@@ -23,13 +23,13 @@ namespace emb::mbs {
 class System;
 class ConstraintWorkspace;
 
-/// df/dx - sum_k lambda_k d(C_k^T)/dx (nv x nv) at v = 0 in x = [delta p, delta pi, eta]:
-/// the force elements' analytic stiffness, the flexible bodies' elastic, centrifugal,
-/// geometric and gravity terms and the constraints' second derivatives weighted by lambda.
-Eigen::MatrixXd CalcTangentStiffness(const System& system,
-                                     const std::vector<BodyKinematics>& bodies,
-                                     const Eigen::VectorXd& lambda, double t,
-                                     ConstraintWorkspace* workspace);
+/// df/dx - sum_k lambda_k d(C_k^T)/dx (nv x nv) at (q, v) (v empty: zero) in
+/// x = [delta p, delta pi, eta]: the force elements' analytic stiffness and the constraints'
+/// second derivatives weighted by lambda; the columns of flexible bodies' coordinates are
+/// central differences of f - C^T lambda (see GglDae::FlexibleColumns for why).
+Eigen::MatrixXd CalcTangentStiffness(const System& system, const Eigen::VectorXd& q,
+                                     const Eigen::VectorXd& v, const Eigen::VectorXd& lambda,
+                                     double t, ConstraintWorkspace* workspace);
 
 struct LinearModes {
   /// Ascending. Symmetric case: negative for unstable directions (-|f|). First-order case:
