@@ -107,6 +107,11 @@ struct Sample {
   /// Per reaction port [F_J, T_J] (reactions.h): row e is element e (its first port), then
   /// the couplers' second ports (System::reaction_ports()).
   Eigen::MatrixXd reactions;
+  /// Per force element [F, T] on its first marker's body in its second marker's axes
+  /// (ForceElement::CalcLoad); NaN rows for elements that report none.
+  Eigen::MatrixXd force_loads;
+  /// Per sensor (System::sensors) [R_JW (p_I - p_J), rotation vector of R_J^T R_I].
+  Eigen::MatrixXd sensors;
   Energies energies;
   double position_residual{0.0};  ///< max |Phi|
   double velocity_residual{0.0};  ///< max |C v + Phi_t|

@@ -110,6 +110,14 @@ void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sin
   jac.ScatterTo(sink);
 }
 
+bool Bushing::DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const {
+  const State s = Calc(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
+                       CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
+  const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
+  *load << m.head<3>(), s.inv_jacobian.transpose() * m.tail<3>();
+  return true;
+}
+
 double Bushing::DoCalcPotentialEnergy(const ForceContext& ctx) const {
   const State s = Calc(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
                        CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));

@@ -40,6 +40,7 @@ class Bushing final : public ForceElement {
   double DoCalcPotentialEnergy(const ForceContext& ctx) const override;
   double DoCalcDissipatedPower(const ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override { return {i_, j_}; }
+  bool DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const override;
 
  private:
   struct State {

@@ -49,6 +49,12 @@ class ForceElement {
   /// Continuous-angle slots it needs in the ConstraintWorkspace (e.g. a crank angle over a
   /// 720 degree cycle).
   int num_angle_slots() const { return DoNumAngleSlots(); }
+  /// For output: the force [N] and moment [N m] the element applies to the body of its first
+  /// marker, in its second marker's axes (bearing and mount loads); false if the element
+  /// does not report one (e.g. applied loads, which are inputs).
+  bool CalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const {
+    return DoCalcLoad(ctx, load);
+  }
 
  protected:
   virtual void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const = 0;
@@ -57,6 +63,9 @@ class ForceElement {
   virtual double DoCalcDissipatedPower(const ForceContext&) const { return 0.0; }
   virtual std::vector<int> DoMarkers() const = 0;
   virtual int DoNumAngleSlots() const { return 0; }
+  virtual bool DoCalcLoad(const ForceContext&, Eigen::Matrix<double, 6, 1>*) const {
+    return false;
+  }
 
  private:
   std::string name_;

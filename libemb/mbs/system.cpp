@@ -203,6 +203,15 @@ void System::AddForceElement(std::shared_ptr<const ForceElement> element) {
   forces_.push_back(std::move(element));
 }
 
+void System::AddSensor(const std::string& name, const std::string& marker_i,
+                       const std::string& marker_j) {
+  CheckNotFinalized("AddSensor");
+  CheckNewName(name, "sensor");
+  for (const auto& s : sensors_)
+    EMB_THROW_IF(s.name == name, "sensor '" << name << "' is defined twice");
+  sensors_.push_back({name, FindMarker(marker_i), FindMarker(marker_j)});
+}
+
 void System::Finalize() {
   CheckNotFinalized("Finalize");
   std::vector<int> ne;

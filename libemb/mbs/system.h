@@ -29,6 +29,14 @@ struct Marker {
   Eigen::MatrixXd shape_t, shape_r;                   ///< 3 x ne, empty on rigid bodies
 };
 
+/// An output-only measurement: the pose of marker I relative to marker J, reported as
+/// [R_JW (p_I - p_J); rotation vector of R_J^T R_I] (e.g. the torsion of a crank nose
+/// against the flywheel, or a journal's eccentricity in its bearing).
+struct Sensor {
+  std::string name;
+  int marker_i{-1}, marker_j{-1};
+};
+
 /// What kind of constraint element produced an equation.
 enum class ElementKind { kJoint, kMotion, kCoupler };
 
@@ -85,6 +93,9 @@ class System {
   int AddCoupler(const std::string& name, const std::string& joint1, JointCoordinate c1,
                  const std::string& joint2, JointCoordinate c2, double ratio, double offset);
   void AddForceElement(std::shared_ptr<const ForceElement> element);
+  /// Adds a sensor of marker I relative to marker J (output only).
+  void AddSensor(const std::string& name, const std::string& marker_i,
+                 const std::string& marker_j);
   /// Gravity acceleration in W [m/s^2].
   void SetGravity(const Eigen::Vector3d& g_W) { gravity_W_ = g_W; }
 
@@ -107,6 +118,7 @@ class System {
   const std::vector<ScalarEquation>& equations() const { return equations_; }
   int num_equations() const { return static_cast<int>(equations_.size()); }
   const std::vector<std::shared_ptr<const ForceElement>>& force_elements() const { return forces_; }
+  const std::vector<Sensor>& sensors() const { return sensors_; }
   const Eigen::Vector3d& gravity() const { return gravity_W_; }
   int num_angle_slots() const { return num_angle_slots_; }
   /// First angle slot of force element k (-1 if it needs none).
@@ -142,6 +154,7 @@ class System {
   std::vector<ScalarEquation> pending_;
   std::vector<ScalarEquation> equations_;
   std::vector<std::shared_ptr<const ForceElement>> forces_;
+  std::vector<Sensor> sensors_;
   std::vector<std::string> removed_;
   Eigen::Vector3d gravity_W_{Eigen::Vector3d::Zero()};
   StateLayout layout_;

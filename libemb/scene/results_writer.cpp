@@ -99,12 +99,38 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
                        std::string("modal coordinates of /model/flexible_bodies, body after "
                                    "body (/model/num_modes each) [kg^0.5 m]"));
   }
+  std::vector<std::string> forces, sensors;
+  for (const auto& f : system.force_elements()) forces.push_back(f->name());
+  for (const auto& s : system.sensors()) sensors.push_back(s.name);
+  file_.WriteStrings("/model/force_elements", forces);
+  file_.WriteStrings("/model/sensors", sensors);
+  if (!forces.empty()) {
+    loads_ = file_.AddSeries("/forces/load", 6 * static_cast<int>(forces.size()));
+    file_.SetAttribute("/forces/load", "columns",
+                       std::string("per /model/force_elements: force x y z [N] and moment x y z "
+                                   "[N m] on the first marker's body, in the second marker's "
+                                   "axes (NaN: not reported)"));
+  }
+  if (!sensors.empty()) {
+    sensors_ = file_.AddSeries("/sensors", 6 * static_cast<int>(sensors.size()));
+    file_.SetAttribute("/sensors", "columns",
+                       std::string("per /model/sensors: position of I in J's axes [m], "
+                                   "rotation vector of R_J^T R_I [rad]"));
+  }
   file_.Flush();
 }
 
 void ResultsWriter::Write(const mbs::Sample& s) {
   file_.Append(time_, &s.t);
   file_.Append(q_, s.q.data());
+  if (loads_ >= 0) {
+    const Eigen::MatrixXd rows = s.force_loads.transpose();  // column-major: 6 per element
+    file_.Append(loads_, rows.data());
+  }
+  if (sensors_ >= 0) {
+    const Eigen::MatrixXd rows = s.sensors.transpose();
+    file_.Append(sensors_, rows.data());
+  }
   if (eta_ >= 0) {
     const int rigid_q = 7 * system_.layout().num_moving(), rigid_v = 6 * system_.layout().num_moving();
     file_.Append(eta_, s.q.data() + rigid_q);
@@ -144,6 +170,26 @@ void ResultsWriter::Finish(const mbs::RunResult& r) {
   file_.Flush();
 }
 
+namespace {
+
+int ElementIndex(const mbs::System& system, const std::string& name) {
+  for (std::size_t k = 0; k < system.elements().size(); ++k)
+    if (system.elements()[k].name == name) return static_cast<int>(k);
+  return -1;
+}
+int ForceElementIndex(const mbs::System& system, const std::string& name) {
+  for (std::size_t k = 0; k < system.force_elements().size(); ++k)
+    if (system.force_elements()[k]->name() == name) return static_cast<int>(k);
+  return -1;
+}
+int SensorIndex(const mbs::System& system, const std::string& name) {
+  for (std::size_t k = 0; k < system.sensors().size(); ++k)
+    if (system.sensors()[k].name == name) return static_cast<int>(k);
+  return -1;
+}
+
+}  // namespace
+
 std::vector<std::string> ValidChannelNames(const mbs::System& system) {
   std::vector<std::string> n;
   const char* xyz[] = {"x", "y", "z"};
@@ -160,6 +206,11 @@ std::vector<std::string> ValidChannelNames(const mbs::System& system) {
     if (e.kind == mbs::ElementKind::kCoupler)
       for (const char* q : {"F2", "T2"})
         for (const char* c : xyz) n.push_back(e.name + "." + q + "." + c);
+  for (const auto& f : system.force_elements())
+    for (const char* q : {"F", "T"})
+      for (const char* c : xyz) n.push_back(f->name() + "." + q + "." + c);
+  for (const auto& s : system.sensors())
+    for (const char* c : {"dx", "dy", "dz", "rx", "ry", "rz"}) n.push_back(s.name + "." + c);
   for (const char* c : {"kinetic", "gravity", "elastic", "total"})
     n.push_back(std::string("energy.") + c);
   n.push_back("residual.position");
@@ -191,6 +242,12 @@ CsvWriter::CsvWriter(const std::string& path, const mbs::System& system,
       ch = {Channel::Kind::kEnergy, 0, comp_index({"kinetic", "gravity", "elastic", "total"})};
     } else if (owner == "residual") {
       ch = {Channel::Kind::kResidual, 0, comp_index({"position", "velocity"})};
+    } else if (SensorIndex(system, owner) >= 0) {
+      ch = {Channel::Kind::kSensor, SensorIndex(system, owner),
+            comp_index({"dx", "dy", "dz", "rx", "ry", "rz"})};
+    } else if ((quantity == "F" || quantity == "T") && ElementIndex(system, owner) < 0) {
+      ch = {Channel::Kind::kForceElement, ForceElementIndex(system, owner),
+            comp_index(comps) + (quantity == "T" ? 3 : 0)};
     } else if (quantity == "F" || quantity == "T") {
       ch = {quantity == "F" ? Channel::Kind::kForce : Channel::Kind::kTorque,
             system.FindElement(owner), comp_index(comps)};
@@ -244,6 +301,12 @@ void CsvWriter::Write(const mbs::Sample& s) {
       case Channel::Kind::kEuler:
         v = mbs::Euler313FromRotation(
             mbs::RotationFromQuaternion(s.q.segment<4>(L.quaternion(c.index))))[c.component];
+        break;
+      case Channel::Kind::kForceElement:
+        v = s.force_loads(c.index, c.component);
+        break;
+      case Channel::Kind::kSensor:
+        v = s.sensors(c.index, c.component);
         break;
       case Channel::Kind::kForce:
         v = s.reactions(c.index, c.component);

@@ -30,6 +30,11 @@
 ///   /energy             [N, 5] kinetic, gravity potential, elastic, total (J),
 ///                       dissipated power (W)
 ///   /residuals          [N, 2] max |Phi| (m or rad), max |C v + Phi_t| (m/s or rad/s)
+///   /model/force_elements, /model/sensors  names
+///   /forces/load        [N, 6 nf] per force element F (N) and T (N m) on its first
+///                       marker's body in its second marker's axes (NaN if not reported)
+///   /sensors            [N, 6 ns] per sensor: position of marker I in J's axes (m) and the
+///                       rotation vector of R_J^T R_I (rad)
 ///   with flexible bodies also
 ///   /model/flexible_bodies [nf] names, /model/num_modes [nf]
 ///   /state/eta, /state/eta_dot [N, sum num_modes] modal coordinates and rates, body after
@@ -60,7 +65,7 @@ class ResultsWriter {
   const mbs::System& system_;
   TimeSeriesFile file_;
   int time_, q_, v_, vdot_, euler_, lambda_, force_, torque_, energy_, residuals_;
-  int eta_{-1}, eta_dot_{-1};
+  int eta_{-1}, eta_dot_{-1}, loads_{-1}, sensors_{-1};
 };
 
 /// A CSV file with a header line "t,<channel>,..." and one line per sample.
@@ -69,7 +74,9 @@ class ResultsWriter {
 /// <element>.F.{x,y,z} and <element>.T.{x,y,z} (reactions, joint axes; for a coupler at its
 /// first joint), <coupler>.F2.{x,y,z} and <coupler>.T2.{x,y,z} (a coupler's reaction at its
 /// second joint),
-/// energy.{kinetic,gravity,elastic,total}, residual.{position,velocity}.
+/// <force element>.F.{x,y,z} and .T.{x,y,z} (its load, ForceElement::CalcLoad),
+/// <sensor>.{dx,dy,dz,rx,ry,rz}, energy.{kinetic,gravity,elastic,total},
+/// residual.{position,velocity}.
 class CsvWriter {
  public:
   /// @throws InputError for an unknown channel (with a did-you-mean) or an unwritable file.
@@ -88,7 +95,9 @@ class CsvWriter {
       kForce,
       kTorque,
       kEnergy,
-      kResidual
+      kResidual,
+      kForceElement,
+      kSensor
     } kind;
     int index;      // body or reaction port
     int component;  // 0..3

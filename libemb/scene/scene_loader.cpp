@@ -213,6 +213,23 @@ void ReadCouplers(const YAML::Node& list, const std::string& file, mbs::System* 
   }
 }
 
+void ReadSensors(const YAML::Node& list, const std::string& file, mbs::System* sys) {
+  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'sensors': expected a list");
+  for (const auto& node : list) {
+    MapReader r0(node, file, "sensor");
+    const std::string name = r0.GetString("name");
+    MapReader r(node, file, "sensor '" + name + "'");
+    r.GetString("name");
+    const std::string i = r.GetString("i"), j = r.GetString("j");
+    r.Finish();
+    try {
+      sys->AddSensor(name, i, j);
+    } catch (const InputError& e) {
+      EMB_THROW(InputError, Where(file, node) << ": sensor '" << name << "': " << e.what());
+    }
+  }
+}
+
 void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::AnalysisSettings* s) {
   MapReader r(node, file, "analysis");
   s->type = mbs::ParseAnalysisType(r.GetString("type", "dynamic"));
@@ -294,6 +311,7 @@ Scene ParseScene(const std::string& text, const std::string& source) {
   if (const YAML::Node n = r.Optional("motions")) ReadMotions(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("couplers")) ReadCouplers(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("forces")) ReadForces(n, source, &scene.system);
+  if (const YAML::Node n = r.Optional("sensors")) ReadSensors(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("analysis")) ReadAnalysis(n, source, &scene.analysis);
   if (const YAML::Node n = r.Optional("output")) ReadOutput(n, source, &scene.output);
   r.Finish();
