@@ -114,7 +114,7 @@ Eigen::MatrixXd CalcVelocityStiffness(const System& sys, const std::vector<BodyK
 
 LinearModes CalcLinearModes(const System& system, const Eigen::VectorXd& q,
                             const Eigen::VectorXd& v_in, double t, const Eigen::VectorXd& lambda,
-                            ConstraintWorkspace* workspace) {
+                            ConstraintWorkspace* workspace, bool undamped) {
   const int nv = system.layout().nv();
   const Eigen::VectorXd v = v_in.size() ? v_in : Eigen::VectorXd::Zero(nv);
   const auto bodies = CalcBodyKinematics(system, q, v);
@@ -138,7 +138,7 @@ LinearModes CalcLinearModes(const System& system, const Eigen::VectorXd& q,
   if (n == 0) return out;
   const Eigen::MatrixXd Mz = Z.transpose() * M * Z, Kz = Z.transpose() * K * Z;
   const Eigen::MatrixXd Gz = Z.transpose() * G * Z;
-  if (Gz.cwiseAbs().maxCoeff() == 0.0) {
+  if (undamped || Gz.cwiseAbs().maxCoeff() == 0.0) {
     const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(
         0.5 * (Kz + Kz.transpose()), 0.5 * (Mz + Mz.transpose()));
     if (eig.info() != Eigen::Success)

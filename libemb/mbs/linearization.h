@@ -41,10 +41,11 @@ struct LinearModes {
 };
 
 /// Frequencies of the model linearised at (q, v) (v empty: zero) with multipliers `lambda`
-/// (zero: unloaded). Cost O(nv^3). @throws NumericalError if Z^T M Z is not positive
-/// definite or an eigen-solve fails.
+/// (zero: unloaded); `undamped` drops G (dampers, gyroscopic terms) for the undamped natural
+/// frequencies and mode shapes. Cost O(nv^3). @throws NumericalError if Z^T M Z is not
+/// positive definite or an eigen-solve fails.
 LinearModes CalcLinearModes(const System& system, const Eigen::VectorXd& q,
                             const Eigen::VectorXd& v, double t, const Eigen::VectorXd& lambda,
-                            ConstraintWorkspace* workspace);
+                            ConstraintWorkspace* workspace, bool undamped = false);
 
 }  // namespace emb::mbs
