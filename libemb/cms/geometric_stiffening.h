@@ -69,7 +69,7 @@ Eigen::MatrixXd InertialLoadFields(const Mesh& mesh, const Eigen::Vector3d& refe
 /// elastic mode shapes Φ (3·nodes × ne); `pattern` is the K of AssembleSystem.
 /// Symmetrised (½(A + Aᵀ)) against round-off.
 /// @throws InputError for mismatched sizes.
-/// Cost: 9 × (stress recovery + assembly, ~ an assembly of K) + 9 × (nnz(K) + 3 N ne)·ne flops.
+/// Cost: 9 × (stress recovery + assembly, ~ an assembly of K) + 9 × (nnz(K)/3 + N ne)·2 ne flops.
 GeometricStiffness ReduceGeometricStiffness(const Mesh& mesh, const IsotropicMaterial& material,
                                             const SparseMatrix& pattern,
                                             const Eigen::MatrixXd& responses,

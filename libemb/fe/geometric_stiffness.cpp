@@ -45,22 +45,22 @@ int Find(const SparseMatrix& A, int row, int col) {
   const int* begin = A.innerIndexPtr() + A.outerIndexPtr()[col];
   const int* end = A.innerIndexPtr() + A.outerIndexPtr()[col + 1];
   const int* it = std::lower_bound(begin, end, row);
-  EMB_THROW_IF(it == end || *it != row, "geometric stiffness: the sparsity pattern has no entry ("
+  EMB_THROW_IF(it == end || *it != row, "geometric stiffness: the node pattern has no entry ("
                                             << row << ", " << col
-                                            << "); expected the stiffness K of the same mesh");
+                                            << "); expected the pattern of the same mesh");
   return static_cast<int>(it - A.innerIndexPtr());
 }
 
 template <CellType T>
 void GeometricBlock(const Mesh& mesh, const CellBlock& block, const Eigen::Matrix3d* sigma, int np,
-                    SparseMatrix& KG) {
+                    SparseMatrix& S) {
   using Element = SolidElement<T>;
   constexpr int kN = Element::kNodes;
   EMB_THROW_IF(np != Element::NumStressPoints(),
                "geometric stiffness: " << np << " stress points per " << Name(T)
                                        << " cell; expected " << Element::NumStressPoints());
   typename Element::ScalarMass s;
-  double* val = KG.valuePtr();
+  double* val = S.valuePtr();
   for (int c = 0; c < block.num_cells(); ++c) {
     const int* nodes = block.cell(c);
     const auto X = CellCoords<T>(mesh, nodes);
@@ -68,13 +68,7 @@ void GeometricBlock(const Mesh& mesh, const CellBlock& block, const Eigen::Matri
         Element::CalcGeometricStiffness(X, sigma + static_cast<std::size_t>(c) * np, s);
     CheckCell<T>(mesh, block, c, X, det);
     for (int b = 0; b < kN; ++b)
-      for (int a = 0; a < kN; ++a) {
-        // The three diagonal entries of block (a, b) lie at the same offset in the columns of
-        // node b, as the pattern stores full 3×3 node blocks.
-        const int first = Find(KG, 3 * nodes[a], 3 * nodes[b]);
-        const int offset = first - KG.outerIndexPtr()[3 * nodes[b]];
-        for (int i = 0; i < 3; ++i) val[KG.outerIndexPtr()[3 * nodes[b] + i] + offset + i] += s(a, b);
-      }
+      for (int a = 0; a < kN; ++a) val[Find(S, nodes[a], nodes[b])] += s(a, b);
   }
 }
 
@@ -108,20 +102,37 @@ StressField UniformStressField(const Mesh& mesh, const Eigen::Matrix3d& sigma) {
   return f;
 }
 
-SparseMatrix AssembleGeometricStiffness(const Mesh& mesh, const StressField& stress,
-                                        const SparseMatrix& pattern) {
-  const int n = 3 * mesh.num_nodes();
-  EMB_THROW_IF(pattern.rows() != n || pattern.cols() != n || !pattern.isCompressed(),
-               "geometric stiffness: pattern " << pattern.rows() << " x " << pattern.cols()
-                                               << "; expected the compressed K of " << n
-                                               << " unknowns");
+SparseMatrix NodePattern(const SparseMatrix& K) {
+  EMB_THROW_IF(K.rows() != K.cols() || K.rows() % 3 != 0 || !K.isCompressed(),
+               "node pattern: expected a compressed square matrix of 3 x nodes rows, got "
+                   << K.rows() << " x " << K.cols());
+  const int n = static_cast<int>(K.rows() / 3);
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(K.nonZeros() / 9);
+  for (int b = 0; b < n; ++b)
+    for (SparseMatrix::InnerIterator it(K, 3 * b); it; ++it)
+      if (it.row() % 3 == 0) t.emplace_back(it.row() / 3, b, 0.0);
+  SparseMatrix P(n, n);
+  P.setFromTriplets(t.begin(), t.end());
+  P.makeCompressed();
+  return P;
+}
+
+SparseMatrix AssembleNodalGeometricStiffness(const Mesh& mesh, const StressField& stress,
+                                             const SparseMatrix& node_pattern) {
+  const int n = mesh.num_nodes();
+  EMB_THROW_IF(node_pattern.rows() != n || node_pattern.cols() != n || !node_pattern.isCompressed(),
+               "geometric stiffness: node pattern " << node_pattern.rows() << " x "
+                                                    << node_pattern.cols()
+                                                    << "; expected the compressed pattern of "
+                                                    << n << " nodes");
   EMB_THROW_IF(stress.values.size() != mesh.blocks.size() ||
                    stress.points.size() != mesh.blocks.size(),
                "geometric stiffness: stresses for " << stress.values.size()
                                                     << " cell blocks; expected "
                                                     << mesh.blocks.size());
-  SparseMatrix KG = pattern;
-  std::fill(KG.valuePtr(), KG.valuePtr() + KG.nonZeros(), 0.0);
+  SparseMatrix S = node_pattern;
+  std::fill(S.valuePtr(), S.valuePtr() + S.nonZeros(), 0.0);
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
     const CellBlock& block = mesh.blocks[b];
     EMB_THROW_IF(stress.values[b].size() !=
@@ -131,9 +142,23 @@ SparseMatrix AssembleGeometricStiffness(const Mesh& mesh, const StressField& str
                                                << " cells x " << stress.points[b] << " points");
     DispatchSolid(block.type, [&](auto type) {
       GeometricBlock<decltype(type)::value>(mesh, block, stress.cell(static_cast<int>(b), 0),
-                                            stress.points[b], KG);
+                                            stress.points[b], S);
     });
   }
+  return S;
+}
+
+SparseMatrix AssembleGeometricStiffness(const Mesh& mesh, const StressField& stress,
+                                        const SparseMatrix& pattern) {
+  const int N = 3 * mesh.num_nodes();
+  EMB_THROW_IF(pattern.rows() != N || pattern.cols() != N,
+               "geometric stiffness: pattern " << pattern.rows() << " x " << pattern.cols()
+                                               << "; expected the K of " << N << " unknowns");
+  const SparseMatrix S = AssembleNodalGeometricStiffness(mesh, stress, NodePattern(pattern));
+  SparseMatrix KG = pattern;
+  for (int col = 0; col < N; ++col)
+    for (SparseMatrix::InnerIterator it(KG, col); it; ++it)
+      it.valueRef() = it.row() % 3 == col % 3 ? S.coeff(it.row() / 3, col / 3) : 0.0;
   return KG;
 }
 

@@ -42,12 +42,22 @@ StressField CalcStressField(const Mesh& mesh, const IsotropicMaterial& material,
 /// The same stress `sigma` [Pa] at every quadrature point (a uniform prestress).
 StressField UniformStressField(const Mesh& mesh, const Eigen::Matrix3d& sigma);
 
-/// Assembles K_σ of `stress` [N/m] into the sparsity pattern of `pattern` (the K of
-/// AssembleSystem for the same mesh: full storage, 3×3 node blocks); entries outside the
-/// diagonal of each block stay stored zeros.
-/// @throws InputError if `pattern` does not fit the mesh or `stress` was made for another
-///   mesh, or for an inverted cell.
+/// The node-level pattern (nodes × nodes) of a matrix with 3×3 node blocks, e.g. the K of
+/// AssembleSystem: entry (a, b) where K has block (a, b).
+/// @throws InputError if `K` is not square with a multiple of 3 rows.
+SparseMatrix NodePattern(const SparseMatrix& K);
+
+/// The scalar geometric stiffness S (nodes × nodes) [N/m] of `stress`, K_σ = S ⊗ I₃ (node
+/// blocks S_ab I₃), assembled into `node_pattern` (NodePattern of the mesh's K).
+/// @throws InputError if the pattern does not fit the mesh or lacks an entry of a cell, if
+///   `stress` was made for another mesh, or for an inverted cell.
 /// Cost: O(cells · points · nodes²) flops plus a binary search per node pair.
+SparseMatrix AssembleNodalGeometricStiffness(const Mesh& mesh, const StressField& stress,
+                                             const SparseMatrix& node_pattern);
+
+/// K_σ of `stress` [N/m] (3·nodes square) in the sparsity pattern of `pattern` (the K of
+/// AssembleSystem for the same mesh: full storage, 3×3 node blocks); entries outside the
+/// diagonal of each block stay stored zeros. Throws as AssembleNodalGeometricStiffness.
 SparseMatrix AssembleGeometricStiffness(const Mesh& mesh, const StressField& stress,
                                         const SparseMatrix& pattern);
 
