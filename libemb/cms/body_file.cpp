@@ -1,5 +1,6 @@
 #include "libemb/cms/body_file.h"
 
+#include <array>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -74,6 +75,32 @@ class Codec {
       v = h5_.ReadInts(path);
     digest_.Add(v.data(), sizeof(int) * v.size());
   }
+  // k matrices of one size as a (k, rows, cols) dataset.
+  template <std::size_t k>
+  void Stack(const std::string& path, std::array<Eigen::MatrixXd, k>& A) {
+    if (writing_) {
+      const std::uint64_t rows = A[0].rows(), cols = A[0].cols();
+      std::vector<double> v;
+      v.reserve(k * rows * cols);
+      for (const auto& a : A) {
+        EMB_CHECK(std::uint64_t(a.rows()) == rows && std::uint64_t(a.cols()) == cols);
+        const RowMajor r = a;
+        v.insert(v.end(), r.data(), r.data() + r.size());
+      }
+      h5_.Write(path, v.data(), {std::uint64_t(k), rows, cols});
+      digest_.Add(v.data(), sizeof(double) * v.size());
+      return;
+    }
+    const auto shape = h5_.Shape(path);
+    EMB_THROW_IF(shape.size() != 3 || shape[0] != k,
+                 "'" << h5_.path() << "': " << path << ": expected a (" << k
+                     << ", rows, cols) dataset, got " << shape.size() << " dimensions");
+    const std::vector<double> v = h5_.ReadDoubles(path);
+    const std::size_t block = shape[1] * shape[2];
+    for (std::size_t i = 0; i < k; ++i)
+      A[i] = Eigen::Map<const RowMajor>(v.data() + i * block, shape[1], shape[2]);
+    digest_.Add(v.data(), sizeof(double) * v.size());
+  }
   void Scalar(const std::string& object, const std::string& name, double& x) {
     if (writing_)
       h5_.SetAttribute(object, name, x);
@@ -82,12 +109,29 @@ class Codec {
     digest_.Add(&x, sizeof x);
   }
   std::string Hex() const { return digest_.Hex(); }
+  bool writing() const { return writing_; }
+  bool Exists(const std::string& path) const { return h5_.Exists(path); }
 
  private:
   H5File& h5_;
   bool writing_;
   Digest digest_;
 };
+
+// The optional stress-stiffening group: absent when not computed (and in files written before
+// it existed), so it adds nothing to their digest.
+void TransferGeometricStiffness(Codec& c, GeometricStiffness& g) {
+  if (c.writing() ? !g.present : !c.Exists(kGeometricStiffnessGroup)) return;
+  const std::string group = kGeometricStiffnessGroup;
+  c.Stack(group + "/centrifugal", g.centrifugal);
+  c.Stack(group + "/translational", g.translational);
+  Eigen::VectorXd point = g.reference_point;
+  c.Vector(group + "/reference_point", point);
+  EMB_THROW_IF(point.size() != 3, "'" << group << "/reference_point': expected 3 values, got "
+                                      << point.size());
+  g.reference_point = point;
+  g.present = true;
+}
 
 // The numeric content of a body, in one fixed order.
 void Transfer(Codec& c, ReducedBody& b) {
@@ -128,6 +172,7 @@ void Transfer(Codec& c, ReducedBody& b) {
     if (inv.Sbar[k].size() == ne * ne) stacked.middleRows(k * ne, ne) = inv.Sbar[k];
   c.Matrix("/invariants/Sbar", stacked);
   for (int k = 0; k < 9; ++k) inv.Sbar[k] = stacked.middleRows(k * ne, ne);
+  TransferGeometricStiffness(c, b.geometric_stiffness);
 }
 
 // The parts of a body that Transfer reads or writes (not the large mesh shapes).
@@ -142,6 +187,7 @@ ReducedBody NumericContent(const ReducedBody& b) {
   c.damping_ratios = b.damping_ratios;
   c.interface_shapes = b.interface_shapes;
   c.invariants = b.invariants;
+  c.geometric_stiffness = b.geometric_stiffness;
   return c;
 }
 
@@ -208,6 +254,13 @@ void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const 
     Codec codec(h5, true);
     Transfer(codec, content);
     h5.SetAttribute("/", "content_digest", codec.Hex());
+    if (body.geometric_stiffness.present) {
+      h5.SetAttribute(kGeometricStiffnessGroup, "support", body.geometric_stiffness.support);
+      h5.SetAttribute(kGeometricStiffnessGroup, "centrifugal_products",
+                      std::string(kCentrifugalProducts));
+      h5.SetAttribute(kGeometricStiffnessGroup, "translational_components",
+                      std::string("ax, ay, az"));
+    }
 
     // Certificate.
     const std::string c = "/certificate";
@@ -344,6 +397,22 @@ ReducedBody ReadBodyFile(const std::string& path, BodyFileInfo* info_out) {
                              << ": the file was modified after it was written; refusing it");
   const int nr = static_cast<int>(b.K.rows());
   const int ne = static_cast<int>(b.modes.elastic.cols());
+  GeometricStiffness& g = b.geometric_stiffness;
+  if (g.present) {
+    g.support = h5.ReadStringAttribute(kGeometricStiffnessGroup, "support");
+    const std::string products =
+        h5.ReadStringAttribute(kGeometricStiffnessGroup, "centrifugal_products");
+    EMB_THROW_IF(products != kCentrifugalProducts,
+                 "body file '" << path << "': " << kGeometricStiffnessGroup
+                               << ": expected the product order '" << kCentrifugalProducts
+                               << "', got '" << products << "'");
+    EMB_THROW_IF(g.centrifugal[0].rows() != ne || g.centrifugal[0].cols() != ne ||
+                     g.translational[0].rows() != ne || g.translational[0].cols() != ne,
+                 "body file '" << path << "': " << kGeometricStiffnessGroup
+                               << ": expected (k, " << ne << ", " << ne << ") matrices, got ("
+                               << g.centrifugal[0].rows() << ", " << g.centrifugal[0].cols()
+                               << ")");
+  }
   EMB_THROW_IF(b.K.cols() != nr || b.M.rows() != nr || b.D.rows() != nr || b.modes.elastic.rows() != nr ||
                    b.modes.frequencies_hz.size() != ne ||
                    b.interface_shapes.rows() != 6 * static_cast<int>(b.interfaces.size()),

@@ -9,8 +9,8 @@
 ///
 ///   /                      @format "emb.body", @format_version 1, @emb_version, @units,
 ///                          @content_digest (FNV-1a of every numeric dataset below except
-///                          /mesh and /modes/mesh_shapes, in a fixed order: a changed byte is
-///                          detected on reading)
+///                          /mesh and /modes/mesh_shapes, in a fixed order, /geometric_stiffness
+///                          last if present: a changed byte is detected on reading)
 ///   /provenance            @command @source @mesh_hash @options @element_types
 ///                          @interfaces ("name:coupling@x,y,z; ...") @selection @shift_hz
 ///   /material              @name @youngs_modulus [Pa] @poisson_ratio @density [kg/m³]
@@ -38,6 +38,15 @@
 ///                          @static_note @static_error @reduction_log
 ///     rigid_hz (6), pairs (k, 6): full_mode, full_hz, reduced_mode, reduced_hz,
 ///     relative_error, mac; failures (strings)
+///   /geometric_stiffness   (optional: absent if reduced with --no-geometric-stiffness and in
+///                          files written before it existed; see geometric_stiffening.h)
+///                          @support "interfaces held" | "inertia relief"
+///                          @centrifugal_products "wx^2, wy^2, wz^2, wx*wy, wy*wz, wz*wx"
+///                          @translational_components "ax, ay, az"
+///     centrifugal (6, ne, ne) K_G,p = Φᵀ K_σ(σ_p) Φ per unit product c_p(ω) [-]
+///     translational (3, ne, ne) K_G,6+k per unit a_k [1/m] (a: frame-origin acceleration
+///                          minus gravity, in B)
+///     reference_point (3)  c̄, the undeformed centre of mass: the origin of B [m]
 ///   /mesh …                the mesh (see mesh_io.h), and
 ///   /modes/mesh_shapes     (ne, n, 3) Φ = T X at every node  — both only if kept
 ///
@@ -53,6 +62,7 @@ namespace emb {
 
 inline constexpr const char* kBodyFormat = "emb.body";
 inline constexpr int kBodyFormatVersion = 1;
+inline constexpr const char* kGeometricStiffnessGroup = "/geometric_stiffness";
 
 /// What a body file records besides the body.
 struct BodyFileInfo {

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/cms/geometric_stiffening.h"
 #include "libemb/cms/interface_partition.h"
 #include "libemb/fe/modal_analysis.h"
 #include "libemb/linalg/extended_product.h"
@@ -148,8 +150,33 @@ void CheckEigen(const EigenResult& r, const char* what) {
     EMB_THROW(NumericalError, what << " eigen-solve " << Name(r.status) << ": " << r.message);
 }
 
+// Inertia relief: the load less its rigid-body inertia forces, F − M R (RᵀMR)⁻¹ Rᵀ F, is
+// self-equilibrated; the part pinned 3-2-1 (by multipliers on six unknowns, which then carry no
+// reaction) deforms under it, and its rigid motion is removed M-orthogonally (Rᵀ M u = 0).
+Eigen::MatrixXd SolveInertiaRelief(const Mesh& mesh, const SystemMatrices& sys,
+                                   const Eigen::MatrixXd& F) {
+  const int N = sys.num_dofs();
+  const Eigen::MatrixXd R = RigidBodyModes(mesh);
+  const Eigen::MatrixXd MR = sys.M * R;
+  const Eigen::LDLT<Eigen::MatrixXd> rigid_mass((R.transpose() * MR).eval());
+  const Eigen::MatrixXd balanced = F - MR * rigid_mass.solve(R.transpose() * F);
+  const std::vector<int> pins = PinUnknowns(mesh, PartitionByInterfaces(mesh, {}));
+  std::vector<Eigen::Triplet<double>> t;
+  for (int k = 0; k < 6; ++k) t.emplace_back(k, pins[k], 1.0);
+  SparseMatrix G(6, N);
+  G.setFromTriplets(t.begin(), t.end());
+  const PinnedConstrainedSolver pinned(sys.K, R, pins, G);
+  if (!pinned.ok())
+    EMB_THROW(NumericalError, "inertia relief: the part pinned 3-2-1 could not be solved: "
+                                  << pinned.message());
+  Eigen::MatrixXd U = pinned.Solve(balanced, Eigen::MatrixXd::Zero(6, F.cols()));
+  U -= R * rigid_mass.solve(MR.transpose() * U);
+  return U;
+}
+
 ReductionBasis BuildFreeFree(const Mesh& mesh, const SystemMatrices& sys,
-                             const ReductionOptions& o, const ProgressFn& progress) {
+                             const ReductionOptions& o, const ProgressFn& progress,
+                             const Eigen::MatrixXd& static_loads) {
   ReductionBasis b;
   b.free_free = true;
   b.num_boundary = 6;
@@ -177,6 +204,12 @@ ReductionBasis BuildFreeFree(const Mesh& mesh, const SystemMatrices& sys,
   b.rigid = Eigen::MatrixXd::Zero(6 + ne, 6);
   b.rigid.topRows(6).setIdentity();
   for (const auto& [name, s] : b.eig.times.phases) b.times.Add(name, s);
+  if (static_loads.cols() > 0) {
+    sw.Restart();
+    b.static_responses = SolveInertiaRelief(mesh, sys, static_loads);
+    b.static_support = kSupportInertiaRelief;
+    b.times.Add("static load cases", sw.seconds());
+  }
   return b;
 }
 
@@ -228,7 +261,8 @@ Eigen::MatrixXd RigidBodyModes(const Mesh& mesh) {
 
 ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
                                    const std::vector<Interface>& interfaces,
-                                   const ReductionOptions& o, const ProgressFn& progress) {
+                                   const ReductionOptions& o, const ProgressFn& progress,
+                                   const Eigen::MatrixXd& static_loads) {
   const ModeSelection& sel = o.selection;
   EMB_THROW_IF(sel.kind == ModeSelection::Kind::kCount && sel.count < 0,
                "number of modes: expected 0 or more, got " << sel.count);
@@ -239,7 +273,10 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   EMB_THROW_IF(sys.num_dofs() != 3 * mesh.num_nodes(),
                "reduction: the matrices (" << sys.num_dofs() << " unknowns) do not belong to the "
                                            << "mesh (" << mesh.num_nodes() << " nodes)");
-  if (interfaces.empty()) return BuildFreeFree(mesh, sys, o, progress);
+  EMB_THROW_IF(static_loads.cols() > 0 && static_loads.rows() != sys.num_dofs(),
+               "reduction: static loads of " << static_loads.rows() << " rows; expected "
+                                             << sys.num_dofs());
+  if (interfaces.empty()) return BuildFreeFree(mesh, sys, o, progress, static_loads);
 
   ReductionBasis b;
   b.interfaces = interfaces;
@@ -299,13 +336,14 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   Eigen::MatrixXd RI(ni, 6);
   for (int k = 0; k < ni; ++k) RI.row(k) = R.row(interior[k]);
   Eigen::MatrixXd Psi;
+  std::unique_ptr<PinnedConstrainedSolver> pinned;
   if (slaved.empty()) {
     // Only RBE3 averages hold the part: K_II is singular and K_II − σM nearly so in the rigid
     // directions; pin it instead (pinned_solver.h: one more factorisation, unshifted). With no
     // slaved unknowns the interior rigid motions are the full ones.
-    const PinnedConstrainedSolver pinned(KII, R, PinUnknowns(mesh, part), C);
-    if (!pinned.ok()) ThrowUnrestrained(mesh, interfaces, pinned.message());
-    Psi = pinned.Solve(rhs, Q);
+    pinned = std::make_unique<PinnedConstrainedSolver>(KII, R, PinUnknowns(mesh, part), C);
+    if (!pinned->ok()) ThrowUnrestrained(mesh, interfaces, pinned->message());
+    Psi = pinned->Solve(rhs, Q);
     b.static_iterations = PinnedConstrainedSolver::kRefinementSteps;
   } else {
     Psi = SolveByShiftedRefinement(solver, KII, C, rhs, Q, b.static_iterations, progress);
@@ -341,6 +379,29 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
     b.static_residual = worst;
   }
   b.times.Add("constraint modes", sw.seconds());
+
+  // Static load cases with the interfaces held: the constraint-mode equations with q = 0.
+  if (static_loads.cols() > 0) {
+    sw.Restart();
+    const int nl = static_cast<int>(static_loads.cols());
+    Eigen::MatrixXd FI(ni, nl);
+    for (int k = 0; k < ni; ++k) FI.row(k) = static_loads.row(interior[k]);
+    const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(C.rows(), nl);
+    Eigen::MatrixXd UI;
+    if (pinned) {
+      UI = pinned->Solve(FI, zero);
+    } else {
+      int iterations = 0;
+      UI = SolveByShiftedRefinement(solver, KII, C, FI, zero, iterations, {});
+      if (iterations < 0)
+        EMB_THROW(NumericalError, "the static load cases with the interfaces held did not "
+                                  "converge: the interior stiffness is (nearly) singular");
+    }
+    b.static_responses = Eigen::MatrixXd::Zero(N, nl);  // slaved unknowns: u_S = T_S·0 = 0
+    for (int k = 0; k < ni; ++k) b.static_responses.row(interior[k]) = UI.row(k);
+    b.static_support = kSupportInterfacesHeld;
+    b.times.Add("static load cases", sw.seconds());
+  }
 
   // T in full unknowns.
   sw.Restart();

@@ -80,6 +80,13 @@ struct ReductionBasis {
   /// Reduced coordinates of the six rigid motions about the origin (translations x, y, z,
   /// rotations x, y, z): (nr × 6), exact by construction.
   Eigen::MatrixXd rigid;
+  /// Static responses (N × k) to the `static_loads` given to BuildReductionBasis (empty if
+  /// none): with every interface held (q = 0: RBE2 reference nodes fixed, RBE3 averages zero),
+  /// solved like the constraint modes on the same factorisation; for the free-free basis by
+  /// inertia relief (load less its rigid-body inertia forces F − M R (RᵀMR)⁻¹ Rᵀ F, part
+  /// pinned 3-2-1, rigid motion then removed M-orthogonally: Rᵀ M u = 0).
+  Eigen::MatrixXd static_responses;
+  std::string static_support;          ///< "interfaces held" or "inertia relief"
   PhaseTimes times;                    ///< "constraint modes", "factorisation", "eigen-solve", ...
 };
 
@@ -97,9 +104,12 @@ EigenResult SolveLowestModes(ShiftInvertSolver& solver, EigenSolverOptions optio
 /// free-free basis).
 /// @throws InputError for more modes than interior unknowns, interfaces that leave part of
 ///   the mesh unrestrained (naming the floating region), dependent interface constraints.
+/// `static_loads` (N × k, may be empty): loads whose static responses are wanted too
+/// (ReductionBasis::static_responses), phase "static load cases".
 /// @throws NumericalError when the eigen-solve or the constraint modes fail their checks.
 ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
                                    const std::vector<Interface>& interfaces,
-                                   const ReductionOptions& options, const ProgressFn& progress = {});
+                                   const ReductionOptions& options, const ProgressFn& progress = {},
+                                   const Eigen::MatrixXd& static_loads = Eigen::MatrixXd());
 
 }  // namespace emb

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/fe/mass_properties.h"
 #include "libemb/linalg/extended_product.h"
 
 namespace emb {
@@ -31,7 +32,18 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   const std::vector<Interface> interfaces = ResolveInterfaces(mesh, job.interfaces);
   body.times.Add("interfaces", sw.seconds());
 
-  ReductionBasis basis = BuildReductionBasis(mesh, sys, interfaces, job.reduction, progress);
+  // The nine inertial load cases about the undeformed centre of mass (geometric_stiffening.h).
+  Eigen::MatrixXd inertial_loads;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double load_seconds = 0.0;
+  if (job.geometric_stiffness) {
+    sw.Restart();
+    centre = CalcMassProperties(mesh, material.density).center_of_mass;
+    inertial_loads = sys.M * InertialLoadFields(mesh, centre);
+    load_seconds = sw.seconds();
+  }
+  ReductionBasis basis =
+      BuildReductionBasis(mesh, sys, interfaces, job.reduction, progress, inertial_loads);
   for (const auto& [name, s] : basis.times.phases) body.times.Add(name, s);
   body.interfaces = basis.interfaces;
   body.free_free = basis.free_free;
@@ -90,6 +102,16 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   body.certificate = CertifyReduction(mesh, sys, material.density, basis, body.K, body.M,
                                       body.modes, Phi, job.certificate, progress);
   body.times.Add("certificate", sw.seconds());
+
+  if (job.geometric_stiffness) {
+    sw.Restart();
+    if (progress) progress("geometric stiffness", 0.0);
+    body.geometric_stiffness =
+        ReduceGeometricStiffness(mesh, material, sys.K, basis.static_responses, Phi);
+    body.geometric_stiffness.reference_point = centre;
+    body.geometric_stiffness.support = basis.static_support;
+    body.times.Add("geometric stiffness", load_seconds + sw.seconds());
+  }
   if (job.keep_mesh_shapes) body.mesh_shapes = std::move(Phi);
   return body;
 }

@@ -4,6 +4,7 @@
 ///
 ///     K, M (FE)  →  Craig–Bampton basis T  →  K̂ = TᵀKT, M̂ = TᵀMT  →  orthonormal modes X
 ///     →  inertia invariants of Φ = T X  →  damping D̂  →  certificate
+///     →  geometric stiffening K_G,p = Φᵀ K_σ(σ_p) Φ of nine inertial load cases (optional)
 ///
 /// The reduced coordinates are z = (q_1, …, q_nb, η) (six per interface, then the kept
 /// fixed-interface modal coordinates); the elastic coordinates of the floating frame are
@@ -16,6 +17,7 @@
 
 #include "libemb/cms/certificate.h"
 #include "libemb/cms/craig_bampton.h"
+#include "libemb/cms/geometric_stiffening.h"
 #include "libemb/cms/inertia_invariants.h"
 #include "libemb/cms/interface.h"
 #include "libemb/cms/orthonormal_modes.h"
@@ -39,6 +41,10 @@ struct ReductionJob {
   DampingModel damping;
   CertificateOptions certificate;
   bool keep_mesh_shapes{true};            ///< keep Φ = T X at all nodes (for animation)
+  /// Compute the stress-stiffening matrices of the nine inertial load cases
+  /// (geometric_stiffening.h); costs nine static solves on the existing factorisation plus
+  /// nine stress recoveries and geometric-stiffness assemblies.
+  bool geometric_stiffness{true};
 };
 
 /// A reduced flexible body: everything a multibody run (and Python) needs.
@@ -55,6 +61,7 @@ struct ReducedBody {
   Eigen::MatrixXd interface_shapes;    ///< 6·nb × ne: (t, θ) of every interface per mode
   InertiaInvariants invariants;        ///< of the elastic modes Φ = T X
   ReductionCertificate certificate;
+  GeometricStiffness geometric_stiffness;  ///< present unless the job switched it off
   Eigen::MatrixXd mesh_shapes;         ///< 3n × ne, empty unless kept
   int num_fe_dofs{0};
   PhaseTimes times;

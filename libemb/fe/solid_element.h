@@ -9,6 +9,13 @@
 /// The consistent mass is M_ab = m_ab I with m_ab = Σ_q w det J ρ N_a N_b.
 /// The Jacobian must be positive at every quadrature point; the smallest det J is returned so
 /// that the caller can name an inverted or degenerate element.
+///
+/// Prestress (geometric stiffness): from nodal displacements U (3 × kNodes), the small-strain
+/// Cauchy stress at stiffness-rule point q is σ_q = λ tr(ε) I + 2μ ε, ε = ½(H + Hᵀ), H = U Gᵀ;
+/// the initial-stress matrix of a stress field σ is K_σ,ab = s_ab I with
+///     s_ab = Σ_q w det J g_aᵀ σ_q g_b      (g_a: column a of G)
+/// i.e. ∫ Gᵀ S(σ) G dV with S = blockdiag(σ, σ, σ): the second variation of ∫ σ : E dV with the
+/// Green–Lagrange strain, ½ ∫ σ_ij u_k,i u_k,j dV.
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -25,21 +32,17 @@ class SolidElement {
   using NodeCoords = Eigen::Matrix<double, 3, kNodes>;
   using Stiffness = Eigen::Matrix<double, kDofs, kDofs>;
   using ScalarMass = Eigen::Matrix<double, kNodes, kNodes>;
+  using NodalVectors = Eigen::Matrix<double, 3, kNodes>;
+
+  /// Number of stiffness-rule quadrature points (where stresses live).
+  static int NumStressPoints() { return StiffnessData().size; }
 
   /// Stiffness K_e (kDofs × kDofs, dof 3a+i = component i of node a) of the cell with node
   /// coordinates X [m]; λ, μ [Pa]. Returns min det J over the quadrature points; if it is
   /// ≤ 0 the cell is inverted and K_e must not be used.
   static double CalcStiffness(const NodeCoords& X, double lambda, double mu, Stiffness& K) {
-    const auto& q = StiffnessData();
     K.setZero();
-    double min_det = std::numeric_limits<double>::infinity();
-    for (int p = 0; p < q.size; ++p) {
-      const Eigen::Matrix3d J = X * q.dN[p].transpose();  // J_ij = ∂x_i/∂ξ_j
-      const double det = J.determinant();
-      min_det = std::min(min_det, det);
-      if (!(det > 0.0)) return min_det;
-      const Eigen::Matrix<double, 3, kNodes> G = J.transpose().inverse() * q.dN[p];
-      const double c = q.w[p] * det;
+    return ForEachStiffnessPoint(X, [&](int, double c, const Gradient& G) {
       const Eigen::Matrix<double, kNodes, kNodes> S = c * mu * (G.transpose() * G);
       for (int b = 0; b < kNodes; ++b)
         for (int a = 0; a < kNodes; ++a)
@@ -48,8 +51,30 @@ class SolidElement {
               K(3 * a + i, 3 * b + j) +=
                   c * (lambda * G(i, a) * G(j, b) + mu * G(j, a) * G(i, b)) +
                   (i == j ? S(a, b) : 0.0);
-    }
-    return min_det;
+    });
+  }
+
+  /// Cauchy stress σ_q [Pa] at the NumStressPoints() stiffness-rule points of the cell with
+  /// node coordinates X [m] and nodal displacements U [m]; λ, μ [Pa]. `sigma` must hold
+  /// NumStressPoints() matrices. Returns min det J (≤ 0: inverted, σ not valid).
+  static double CalcStresses(const NodeCoords& X, const NodalVectors& U, double lambda, double mu,
+                             Eigen::Matrix3d* sigma) {
+    return ForEachStiffnessPoint(X, [&](int p, double, const Gradient& G) {
+      const Eigen::Matrix3d H = U * G.transpose();  // H_ij = ∂u_i/∂x_j
+      const Eigen::Matrix3d eps = 0.5 * (H + H.transpose());
+      sigma[p] = lambda * eps.trace() * Eigen::Matrix3d::Identity() + 2.0 * mu * eps;
+    });
+  }
+
+  /// Scalar geometric (initial-stress) stiffness s_ab = Σ_q w det J g_aᵀ σ_q g_b [N/m] of the
+  /// stresses σ_q at the stiffness-rule points (as CalcStresses returns them); the 3-D matrix
+  /// is s ⊗ I₃. Returns min det J.
+  static double CalcGeometricStiffness(const NodeCoords& X, const Eigen::Matrix3d* sigma,
+                                       ScalarMass& s) {
+    s.setZero();
+    return ForEachStiffnessPoint(X, [&](int p, double dv, const Gradient& G) {
+      s.noalias() += dv * (G.transpose() * (sigma[p] * G));
+    });
   }
 
   /// Scalar consistent mass m_ab (kNodes × kNodes) with density ρ [kg/m³]; the 3-D mass is
@@ -87,6 +112,24 @@ class SolidElement {
   }
 
  private:
+  using Gradient = Eigen::Matrix<double, 3, kNodes>;
+  // Calls f(p, w det J, G) at every stiffness-rule point p while det J > 0; returns min det J
+  // (the first non-positive one stops the loop).
+  template <typename F>
+  static double ForEachStiffnessPoint(const NodeCoords& X, F&& f) {
+    const auto& q = StiffnessData();
+    double min_det = std::numeric_limits<double>::infinity();
+    for (int p = 0; p < q.size; ++p) {
+      const Eigen::Matrix3d J = X * q.dN[p].transpose();  // J_ij = ∂x_i/∂ξ_j
+      const double det = J.determinant();
+      min_det = std::min(min_det, det);
+      if (!(det > 0.0)) return min_det;
+      const Gradient G = J.transpose().inverse() * q.dN[p];
+      f(p, q.w[p] * det, G);
+    }
+    return min_det;
+  }
+
   // Shape functions tabulated at the quadrature points, once per type.
   struct Tabulated {
     int size{0};

@@ -67,28 +67,68 @@ TEST(BodyFile, RoundTripsBitForBit) {
   std::filesystem::remove(path);
 }
 
-TEST(BodyFile, RefusesATamperedFile) {
-  const Fixture f;
-  const std::string path = TempPath("tampered.h5");
-  WriteBodyFile(path, "", f.body, f.info, nullptr);
-  {  // Change one stiffness entry in place, as an editor (or a disk error) would.
-    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-    ASSERT_GE(file, 0);
-    const hid_t ds = H5Dopen2(file, "/reduced/K", H5P_DEFAULT);
-    const int n = static_cast<int>(f.body.K.rows());
-    std::vector<double> k(std::size_t(n) * n);
-    ASSERT_GE(H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, k.data()), 0);
-    k[n + 1] *= 1.0 + 1e-12;
-    ASSERT_GE(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, k.data()), 0);
-    H5Dclose(ds);
-    H5Fclose(file);
-  }
+// Changes entry `index` of dataset `name` in place, as an editor (or a disk error) would.
+void ChangeOneEntry(const std::string& path, const char* name, std::size_t index) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hid_t ds = H5Dopen2(file, name, H5P_DEFAULT);
+  ASSERT_GE(ds, 0);
+  const hid_t space = H5Dget_space(ds);
+  std::vector<double> v(H5Sget_simple_extent_npoints(space));
+  H5Sclose(space);
+  ASSERT_LT(index, v.size());
+  ASSERT_GE(H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), 0);
+  v[index] *= 1.0 + 1e-12;
+  ASSERT_GE(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), 0);
+  H5Dclose(ds);
+  H5Fclose(file);
+}
+
+void ExpectDigestRefusal(const std::string& path) {
   try {
     ReadBodyFile(path);
     FAIL() << "a tampered file was read";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("content digest"), std::string::npos) << e.what();
   }
+}
+
+TEST(BodyFile, RefusesATamperedFile) {
+  const Fixture f;
+  const std::string path = TempPath("tampered.h5");
+  for (const char* dataset : {"/reduced/K", "/geometric_stiffness/centrifugal"}) {
+    SCOPED_TRACE(dataset);
+    WriteBodyFile(path, "", f.body, f.info, nullptr);
+    ChangeOneEntry(path, dataset, static_cast<std::size_t>(f.body.K.rows()) + 1);
+    ExpectDigestRefusal(path);
+  }
+  std::filesystem::remove(path);
+}
+
+// The stress-stiffening group round-trips bit for bit; a body without it (reduced with
+// geometric_stiffness off, or a file written before the group existed: the same bytes) reads
+// with present = false.
+TEST(BodyFile, GeometricStiffnessRoundTripsAndIsOptional) {
+  const Fixture f;
+  const GeometricStiffness& g = f.body.geometric_stiffness;
+  ASSERT_TRUE(g.present);
+  const std::string path = TempPath("geometric.h5");
+  WriteBodyFile(path, "", f.body, f.info, nullptr);
+  const GeometricStiffness r = ReadBodyFile(path).geometric_stiffness;
+  ASSERT_TRUE(r.present);
+  for (int p = 0; p < 6; ++p) EXPECT_TRUE(Identical(r.centrifugal[p], g.centrifugal[p]));
+  for (int k = 0; k < 3; ++k) EXPECT_TRUE(Identical(r.translational[k], g.translational[k]));
+  EXPECT_TRUE(Identical(r.reference_point, g.reference_point));
+  EXPECT_EQ(r.support, g.support);
+
+  ReducedBody without = f.body;
+  without.geometric_stiffness = GeometricStiffness{};
+  WriteBodyFile(path, "", without, f.info, nullptr);
+  BodyFileInfo info;
+  const ReducedBody b = ReadBodyFile(path, &info);
+  EXPECT_FALSE(b.geometric_stiffness.present);
+  EXPECT_TRUE(Identical(b.K, f.body.K));
+  EXPECT_EQ(b.geometric_stiffness.Describe(), "none");
   std::filesystem::remove(path);
 }
 

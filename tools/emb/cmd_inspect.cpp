@@ -40,6 +40,7 @@ struct InspectCommand {
     s.Add("reduced_coordinates", "reduced coordinates", static_cast<long long>(body.K.rows()));
     s.Add("elastic_modes", "elastic modes", static_cast<long long>(body.modes.frequencies_hz.size()));
     s.Add("damping", "damping", body.damping.Describe());
+    s.Add("geometric_stiffness", "geometric stiffening", body.geometric_stiffness.Describe());
     const InertiaInvariants& inv = body.invariants;
     s.Add("mass_kg", "mass [kg]", inv.mass);
     const Eigen::Vector3d c = inv.CenterOfMass();

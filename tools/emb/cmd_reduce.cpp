@@ -37,6 +37,7 @@ struct ReduceCommand {
   bool no_reference{false};
   bool no_static_check{false};
   bool no_mesh_shapes{false};
+  bool no_geometric_stiffness{false};
   bool no_xdmf{false};
   bool allow_failed_certificate{false};
   std::string output;
@@ -81,6 +82,7 @@ struct ReduceCommand {
       job.damping.ratio = damping_ratio;
     }
     job.keep_mesh_shapes = !no_mesh_shapes;
+    job.geometric_stiffness = !no_geometric_stiffness;
     if (free_free) {
       EMB_THROW_IF(!interfaces.empty(), "--free-free and --interface exclude each other");
     } else if (!interfaces.empty()) {
@@ -194,6 +196,7 @@ struct ReduceCommand {
     s.Add("elastic_modes", "elastic modes", static_cast<long long>(body.modes.frequencies_hz.size()));
     s.Add("dropped", "dependent vectors dropped", static_cast<long long>(body.modes.num_dropped));
     s.Add("damping", "damping", body.damping.Describe());
+    s.Add("geometric_stiffness", "geometric stiffening", body.geometric_stiffness.Describe());
     for (const auto& [name, secs] : times.phases) s.Add("seconds_" + name, "time " + name + " [s]", secs);
     s.Add("seconds_total", "time total [s]", times.Total());
     s.Add("peak_memory_mb", "peak memory [MB]", PeakResidentBytes() / 1e6);
@@ -285,6 +288,10 @@ void RegisterReduceCommand(CLI::App& app) {
                 "Skip the static exactness check in the certificate (saves one factorisation)");
   cmd->add_flag("--no-mesh-shapes", st->no_mesh_shapes,
                 "Do not store the mesh and the mode shapes at all nodes (smaller file, no animation)");
+  cmd->add_flag("--no-geometric-stiffness", st->no_geometric_stiffness,
+                "Do not compute the stress-stiffening matrices of the nine inertial load cases "
+                "(centrifugal about the centre of mass, uniform acceleration; saves nine static "
+                "solves, stress recoveries and geometric-stiffness assemblies)");
   cmd->add_flag("--no-xdmf", st->no_xdmf, "Do not write the .xdmf file next to the .h5");
   cmd->add_flag("--allow-failed-certificate", st->allow_failed_certificate,
                 "Write the body file even if the certificate fails (the exit code is still 3)");
