@@ -105,13 +105,19 @@ VelocityProjection ProjectVelocities(const System& system, const Eigen::VectorXd
   const auto bodies = CalcBodyKinematics(system, q, v0);
   const ConstraintEval c = CalcConstraints(system, bodies, t, workspace);
   const Eigen::MatrixXd M = CalcMassMatrix(system, bodies);
-  const auto n = M.rows(), m = c.jacobian.rows();
+  // Only the rigid-body velocities move (as in the position assembly): the modal rates of
+  // flexible bodies keep their initial values, else the cheapest correction in the
+  // kinetic-energy metric would be a burst of elastic velocity.
+  const Eigen::Index n = StateLayout::kVPerBody * system.layout().num_moving();
+  const Eigen::Index m = c.jacobian.rows();
+  const Eigen::MatrixXd C(c.jacobian);
+  const Eigen::MatrixXd Mr = M.topLeftCorner(n, n);
   Eigen::VectorXd rhs(n + m);
-  rhs << M * v0, -c.phi_t;
-  const Eigen::VectorXd x =
-      SolveKkt(Kkt(M, Eigen::MatrixXd(c.jacobian)), rhs, "velocity projection");
+  rhs << Mr * v0.head(n), -c.phi_t - C.rightCols(M.rows() - n) * v0.tail(M.rows() - n);
+  const Eigen::VectorXd x = SolveKkt(Kkt(Mr, C.leftCols(n)), rhs, "velocity projection");
   VelocityProjection p;
-  p.v = x.head(n);
+  p.v = v0;
+  p.v.head(n) = x.head(n);
   const Eigen::VectorXd dv = p.v - v0;
   const double e0 = v0.dot(M * v0);
   const double de = dv.dot(M * dv);

@@ -20,7 +20,8 @@ namespace emb::mbs {
 
 Eigen::MatrixXd CalcTangentStiffness(const System& sys, const Eigen::VectorXd& q,
                                      const Eigen::VectorXd& v, const Eigen::VectorXd& lambda,
-                                     double t, ConstraintWorkspace* ws) {
+                                     double t, ConstraintWorkspace* ws,
+                                     const Eigen::VectorXd& vdot) {
   const StateLayout& L = sys.layout();
   const auto bodies = CalcBodyKinematics(sys, q, v);
   DenseForceJacobian forces(L);
@@ -58,7 +59,8 @@ Eigen::MatrixXd CalcTangentStiffness(const System& sys, const Eigen::VectorXd& q
   auto load = [&](const Eigen::VectorXd& qx) {
     const auto bx = CalcBodyKinematics(sys, qx, v);
     const ConstraintEval c = CalcConstraints(sys, bx, t, ws);
-    return Eigen::VectorXd(CalcGeneralizedForces(sys, bx, t, ws) - c.jacobian.transpose() * lambda);
+    return Eigen::VectorXd(CalcGeneralizedForces(sys, bx, t, ws, vdot.size() ? &vdot : nullptr) -
+                           c.jacobian.transpose() * lambda);
   };
   for (int b = 1; b < sys.num_bodies(); ++b) {
     const int ne = L.num_elastic(b);
@@ -114,12 +116,13 @@ Eigen::MatrixXd CalcVelocityStiffness(const System& sys, const std::vector<BodyK
 
 LinearModes CalcLinearModes(const System& system, const Eigen::VectorXd& q,
                             const Eigen::VectorXd& v_in, double t, const Eigen::VectorXd& lambda,
-                            ConstraintWorkspace* workspace, bool undamped) {
+                            ConstraintWorkspace* workspace, bool undamped,
+                            const Eigen::VectorXd& vdot) {
   const int nv = system.layout().nv();
   const Eigen::VectorXd v = v_in.size() ? v_in : Eigen::VectorXd::Zero(nv);
   const auto bodies = CalcBodyKinematics(system, q, v);
   const Eigen::MatrixXd M = CalcMassMatrix(system, bodies);
-  const Eigen::MatrixXd K = -CalcTangentStiffness(system, q, v, lambda, t, workspace);
+  const Eigen::MatrixXd K = -CalcTangentStiffness(system, q, v, lambda, t, workspace, vdot);
   const Eigen::MatrixXd G = CalcVelocityStiffness(system, bodies, t, workspace);
   const Eigen::MatrixXd C(CalcConstraints(system, bodies, t, workspace).jacobian);
   // Null space of C from a complete orthogonal decomposition of C^T.

@@ -27,9 +27,12 @@ class ConstraintWorkspace;
 /// x = [delta p, delta pi, eta]: the force elements' analytic stiffness and the constraints'
 /// second derivatives weighted by lambda; the columns of flexible bodies' coordinates are
 /// central differences of f - C^T lambda (see GglDae::FlexibleColumns for why).
+/// `vdot` (may be empty) gives the frame accelerations for flexible bodies' translational
+/// geometric stiffness (dynamics.h).
 Eigen::MatrixXd CalcTangentStiffness(const System& system, const Eigen::VectorXd& q,
                                      const Eigen::VectorXd& v, const Eigen::VectorXd& lambda,
-                                     double t, ConstraintWorkspace* workspace);
+                                     double t, ConstraintWorkspace* workspace,
+                                     const Eigen::VectorXd& vdot = {});
 
 struct LinearModes {
   /// Ascending. Symmetric case: negative for unstable directions (-|f|). First-order case:
@@ -41,11 +44,13 @@ struct LinearModes {
 };
 
 /// Frequencies of the model linearised at (q, v) (v empty: zero) with multipliers `lambda`
-/// (zero: unloaded); `undamped` drops G (dampers, gyroscopic terms) for the undamped natural
+/// (zero: unloaded) and accelerations `vdot` (may be empty; SolveAccelerations gives both for
+/// a steady motion); `undamped` drops G (dampers, gyroscopic terms) for the undamped natural
 /// frequencies and mode shapes. Cost O(nv^3). @throws NumericalError if Z^T M Z is not
 /// positive definite or an eigen-solve fails.
 LinearModes CalcLinearModes(const System& system, const Eigen::VectorXd& q,
                             const Eigen::VectorXd& v, double t, const Eigen::VectorXd& lambda,
-                            ConstraintWorkspace* workspace, bool undamped = false);
+                            ConstraintWorkspace* workspace, bool undamped = false,
+                            const Eigen::VectorXd& vdot = {});
 
 }  // namespace emb::mbs

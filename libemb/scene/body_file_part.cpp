@@ -98,13 +98,25 @@ BodyFilePart LoadBodyFilePart(const std::string& path, const BodyFileOptions& op
     return part;
   }
   auto model = std::make_shared<mbs::ElasticModel>(full.Subset(keep));
-  // Geometric stiffening: used when the file has it unless switched off.
-  const bool has_kg = false;  // the body file does not store it yet
+  // Geometric stiffening: used when the file has it unless switched off. The file's data are
+  // about the CM (the origin of B here), per c_p(omega) and per a_k.
+  const bool has_kg = rb.geometric_stiffness.present;
   EMB_THROW_IF(options.geometric_stiffening == 1 && !has_kg,
                "part '" << name << "': geometric_stiffening: true, but " << path
-                        << " has no geometric stiffness data (reduce it again with a "
-                           "version of emb reduce that stores it)");
-  model->geometric_stiffening = false;
+                        << " has no geometric stiffness data (reduce it again without "
+                           "--no-geometric-stiffness)");
+  model->geometric_stiffening = has_kg && options.geometric_stiffening != 0;
+  if (model->geometric_stiffening) {
+    auto square = [&](const Eigen::MatrixXd& A) {
+      Eigen::MatrixXd out(keep.size(), keep.size());
+      for (std::size_t i = 0; i < keep.size(); ++i)
+        for (std::size_t j = 0; j < keep.size(); ++j) out(i, j) = A(keep[i], keep[j]);
+      return out;
+    };
+    for (int p = 0; p < 6; ++p) model->kg_centrifugal[p] = square(rb.geometric_stiffness.centrifugal[p]);
+    for (int k = 0; k < 3; ++k)
+      model->kg_translational[k] = square(rb.geometric_stiffness.translational[k]);
+  }
   part.interface_shapes.resize(rb.interface_shapes.rows(), static_cast<int>(keep.size()));
   for (std::size_t j = 0; j < keep.size(); ++j)
     part.interface_shapes.col(static_cast<int>(j)) = rb.interface_shapes.col(keep[j]);

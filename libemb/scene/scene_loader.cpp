@@ -75,9 +75,19 @@ void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sy
                                          << "remove it");
         const std::string path = ScenePath(file, rb.GetString("body_file"));
         const BodyFileOptions options = ReadBodyFileOptions(rb, model == "cms");
+        std::vector<double> eta0;
+        if (rb.Has("modal_coordinates")) eta0 = rb.GetDoubles("modal_coordinates");
+        else rb.Optional("modal_coordinates");
         rb.Finish();
         b.p_WB = position;
         BodyFilePart part = LoadBodyFilePart(path, options, position, R, &b);
+        if (!eta0.empty()) {
+          EMB_THROW_IF(static_cast<int>(eta0.size()) != b.num_modes(),
+                       what << " modal_coordinates: expected " << b.num_modes()
+                            << " initial modal coordinates (the modes kept), got "
+                            << eta0.size());
+          b.eta0 = Eigen::Map<const Eigen::VectorXd>(eta0.data(), eta0.size());
+        }
         notes->push_back(part.note);
         (*parts)[b.name] = std::move(part);
       } else {

@@ -48,7 +48,11 @@ TEST(FlexibleBody, FreeFloatingBodyConservesMomentaAndEnergy) {
   bar.modes = 6;
   std::ostringstream yaml;
   // Tumbling about a skew axis: the centrifugal load deforms the bar and makes it vibrate.
+  // Geometric stiffening off: its linearised, spin-dependent stiffness is not the gradient of
+  // an energy, so with it the energy would drift by O(eta^T K_G eta) (Southwell is tested
+  // in southwell_test.cpp).
   yaml << "bodies:\n  - {name: bar, model: cms, body_file: " << testing::FlexibleBarFile(bar)
+       << ", geometric_stiffening: false"
        << ", velocity: [0.3, -0.1, 0.2], angular_velocity: [20.0, 300.0, 40.0]}\n"
        << "analysis: {type: dynamic, t_end: 0.05, output_step: 0.005, rtol: 1.0e-10, "
           "atol: 1.0e-13}\n";
