@@ -185,7 +185,11 @@ void GglDae::DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::V
                             Eigen::Ref<Eigen::MatrixXd> J) const {
   assembler_.BeginDense(J);
   AssembleJacobian(t, cj, y, &assembler_);
-  for (int j : FlexibleColumns()) J.col(j) = DifferenceColumn(t, cj, y, yp, j);
+  const std::vector<int> cols = FlexibleColumns();
+  if (cols.empty()) return;
+  Eigen::VectorXd r0(layout_.size());
+  if (!DoCalcResidual(t, y, yp, r0)) return;
+  for (int j : cols) J.col(j) = DifferenceColumn(t, cj, y, yp, r0, j);
 }
 
 void GglDae::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
@@ -194,8 +198,12 @@ void GglDae::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Ei
   assembler_.BeginSparse(J, layout_.size(), layout_.size());
   AssembleJacobian(t, cj, y, &assembler_);
   // The flexible columns are full in the structure (AssembleJacobian): overwrite them.
-  for (int j : FlexibleColumns()) {
-    const Eigen::VectorXd col = DifferenceColumn(t, cj, y, yp, j);
+  const std::vector<int> cols = FlexibleColumns();
+  if (cols.empty()) return;
+  Eigen::VectorXd r0(layout_.size());
+  if (!DoCalcResidual(t, y, yp, r0)) return;
+  for (int j : cols) {
+    const Eigen::VectorXd col = DifferenceColumn(t, cj, y, yp, r0, j);
     for (int k = J->outerIndexPtr()[j]; k < J->outerIndexPtr()[j + 1]; ++k)
       J->valuePtr()[k] = col[J->innerIndexPtr()[k]];
   }
@@ -216,21 +224,18 @@ std::vector<int> GglDae::FlexibleColumns() const {
 Eigen::VectorXd GglDae::DifferenceColumn(double t, double cj,
                                          const Eigen::Ref<const Eigen::VectorXd>& y,
                                          const Eigen::Ref<const Eigen::VectorXd>& yp,
-                                         int j) const {
-  // Central difference of F(y + h e_j, y' + cj h e_j): truncation O(h^2 F''') and
-  // cancellation O(eps |F| / h); h ~ eps^(1/3) scaled by the coordinate (quaternion entries
-  // and modal coordinates are O(1e-3 .. 1)).
-  const double h = 6e-6 * std::max(1e-3, std::abs(y[j]));
+                                         const Eigen::VectorXd& r0, int j) const {
+  // Forward difference of F(y + h e_j, y' + cj h e_j) from F(y, y') = r0: truncation
+  // O(h F'') and cancellation O(eps |F| / h), both ~1e-8 relative with h ~ sqrt(eps) scaled
+  // by the coordinate (quaternion entries and modal coordinates are O(1e-3 .. 1)): ample
+  // for a Newton iteration matrix, at one residual per column.
+  const double h = 1.5e-8 * std::max(1e-3, std::abs(y[j]));
   const int n = layout_.size();
-  Eigen::VectorXd y1 = y, yp1 = yp, rp(n), rm(n);
+  Eigen::VectorXd y1 = y, yp1 = yp, rp(n);
   y1[j] = y[j] + h;
   yp1[j] = yp[j] + cj * h;
-  const bool ok_p = DoCalcResidual(t, y1, yp1, rp);
-  y1[j] = y[j] - h;
-  yp1[j] = yp[j] - cj * h;
-  const bool ok_m = DoCalcResidual(t, y1, yp1, rm);
-  if (!ok_p || !ok_m) return Eigen::VectorXd::Zero(n);
-  return (rp - rm) / (2.0 * h);
+  if (!DoCalcResidual(t, y1, yp1, rp)) return Eigen::VectorXd::Zero(n);
+  return (rp - r0) / h;
 }
 
 void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,

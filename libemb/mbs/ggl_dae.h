@@ -91,10 +91,11 @@ class GglDae final : public DaeProblem {
   // The q-columns of flexible bodies (rigid part and modal coordinates): their analytic
   // second-derivative terms through the interface markers are incomplete (the derivatives of
   // the marker map E, kinematics.h), so the iteration matrix takes them from central
-  // differences of the residual instead, 2 residuals per column.
+  // differences of the residual instead, one residual per column.
   std::vector<int> FlexibleColumns() const;
   Eigen::VectorXd DifferenceColumn(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
-                                   const Eigen::Ref<const Eigen::VectorXd>& yp, int j) const;
+                                   const Eigen::Ref<const Eigen::VectorXd>& yp,
+                                   const Eigen::VectorXd& r0, int j) const;
   // The iteration matrix through `assembler` (begun by the caller; finished here).
   void AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                         MatrixAssembler* assembler) const;

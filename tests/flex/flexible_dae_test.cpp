@@ -10,6 +10,7 @@
 #include "libemb/mbs/ggl_dae.h"
 #include "libemb/scene/scene.h"
 #include "tests/support/flexible_bar.h"
+#include "tests/support/dae_differences.h"
 
 namespace emb {
 namespace {
@@ -74,19 +75,7 @@ TEST(FlexibleDae, IterationMatrixMatchesCentralDifferences) {
   const int n = dae.size();
   Eigen::MatrixXd J(n, n);
   dae.CalcJacobian(t, cj, c.y, c.yp, J);
-  Eigen::MatrixXd Jfd(n, n);
-  const double h = 1e-7;
-  for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd yp1 = c.y, ym1 = c.y, ypp1 = c.yp, ypm1 = c.yp;
-    yp1[j] += h;
-    ym1[j] -= h;
-    ypp1[j] += cj * h;
-    ypm1[j] -= cj * h;
-    Eigen::VectorXd rp(n), rm(n);
-    dae.CalcResidual(t, yp1, ypp1, rp);
-    dae.CalcResidual(t, ym1, ypm1, rm);
-    Jfd.col(j) = (rp - rm) / (2 * h);
-  }
+  const Eigen::MatrixXd Jfd = testing::DifferenceIterationMatrix(dae, t, cj, c.y, c.yp, 1e-7);
   // Per row, relative to the row's largest entry. The q-columns of the flexible body are
   // differences in the DAE too (with another step), the rest is analytic; what is left out
   // analytically (d(M(eta) v')/dq, with v' ~ 1e2) and the two difference errors

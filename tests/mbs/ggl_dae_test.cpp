@@ -11,6 +11,7 @@
 #include "libemb/mbs/analysis.h"
 #include "libemb/mbs/spring_damper.h"
 #include "tests/mbs/test_models.h"
+#include "tests/support/dae_differences.h"
 
 namespace emb::mbs {
 namespace {
@@ -90,19 +91,7 @@ TEST_P(GglJacobian, MatchesCentralDifferences) {
   const int n = dae.size();
   Eigen::MatrixXd J(n, n);
   dae.CalcJacobian(t, cj, c.y, c.yp, J);
-  Eigen::MatrixXd Jfd(n, n);
-  const double h = 1e-6;
-  for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd yp1 = c.y, ym1 = c.y, ypp1 = c.yp, ypm1 = c.yp;
-    yp1[j] += h;
-    ym1[j] -= h;
-    ypp1[j] += cj * h;  // d/d(eps) of F(y + eps e_j, y' + cj eps e_j)
-    ypm1[j] -= cj * h;
-    Eigen::VectorXd rp(n), rm(n);
-    dae.CalcResidual(t, yp1, ypp1, rp);
-    dae.CalcResidual(t, ym1, ypm1, rm);
-    Jfd.col(j) = (rp - rm) / (2 * h);
-  }
+  const Eigen::MatrixXd Jfd = emb::testing::DifferenceIterationMatrix(dae, t, cj, c.y, c.yp, 1e-6);
   const double scale = Jfd.cwiseAbs().maxCoeff();
   Eigen::Index row = 0, col = 0;
   const double err = (J - Jfd).cwiseAbs().maxCoeff(&row, &col);

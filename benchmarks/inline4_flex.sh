@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Inline-4 engine with a flexible (CMS) crankshaft: wall time per engine cycle against the
+# error in nose torsion and main-bearing force, for 0/10/20/40 kept modes, against a
+# many-mode, tight-tolerance reference; and an IDA tolerance sweep at 20 modes.
+#   benchmarks/inline4_flex.sh [modes|tolerance|all]
+# Needs out/crankshaft_i4.h5 (tools/setup.sh run makes it). Results: out/bench_inline4/,
+# table from benchmarks/inline4_table.py (printed, and written as Markdown next to the runs).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+emb=${EMB:-$root/build/tools/emb/emb}
+what=${1:-all}
+dir=$root/out/bench_inline4
+mkdir -p "$dir"
+scene=$root/tools/scenes/inline4.yaml
+[ -f "$root/out/crankshaft_i4.h5" ] || { echo "run tools/setup.sh run first (out/crankshaft_i4.h5)" >&2; exit 1; }
+
+run() {  # run NAME MODES RTOL ATOL
+  local name=$1 modes=$2 rtol=$3 atol=$4
+  sed -e "s#modes: 20 #modes: $modes #" -e "s#body_file: ../../out/#body_file: $root/out/#" \
+      -e "s#file: ../../out/inline4.h5#file: $dir/$name.h5#" -e "s#csv: ../../out/inline4.csv#csv: $dir/$name.csv#" \
+      "$scene" > "$dir/$name.yaml"
+  if [ "$modes" = 0 ]; then sed -i "s#    model: cms #    model: rigid#" "$dir/$name.yaml"; fi
+  "$emb" run "$dir/$name.yaml" -q --json --rtol "$rtol" --atol "$atol" > "$dir/$name.json"
+  echo "$name: $(/usr/bin/python3 -c "import json; d=json.load(open('$dir/$name.json'))['summary']; print(d['status'], d['steps'], 'steps', round(d['seconds_run'], 2), 's')")"
+}
+
+if [ "$what" = modes ] || [ "$what" = all ]; then
+  run ref 126 1e-8 1e-11
+  for m in 0 10 20 40; do run modes$m "$m" 1e-6 1e-9; done
+fi
+if [ "$what" = tolerance ] || [ "$what" = all ]; then
+  for r in 1e-4 1e-5 1e-6 1e-7; do
+    a=$(/usr/bin/python3 -c "print($r * 1e-3)")
+    run tol$r 20 "$r" "$a"
+  done
+fi
+/usr/bin/python3 "$root/benchmarks/inline4_table.py" "$dir" | tee "$dir/table.md"
