@@ -184,6 +184,8 @@ if __name__ == "__main__":
          "bushing", "dyno"),
         ("inline4_rigid_ocvirk", "short-bearing (Ocvirk) hydrodynamic mains, dynamometer at 3000 rpm",
          3000, "ocvirk", "dyno"),
+        ("inline4_rigid_ocvirk_6000", "short-bearing (Ocvirk) hydrodynamic mains, dynamometer at 6000 rpm",
+         6000, "ocvirk", "dyno"),
         ("inline4_rigid_free", "bushing mains, free crank from 3000 rpm against a speed-proportional brake",
          3000, "bushing", "brake"),
     ]
