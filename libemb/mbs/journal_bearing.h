@@ -21,7 +21,9 @@
 /// Film force on the journal (J's axes, in the bearing plane)
 ///   F = -mu R L^3 int_{n.u > 0} (n . u) n / h^3 dphi,
 /// integrated by 64-point Gauss-Legendre over the half circle (nodes fixed relative to the
-/// direction of u). The integrand vanishes at both ends, so the derivatives of the integral
+/// direction of u): relative error < 1e-11 up to eps = 0.95, ~1e-5 at 0.99, ~1e-2 at 0.999
+/// (the film's pole approaches the real axis); the force stays smooth and its Jacobian
+/// exact for the sum. The integrand vanishes at both ends, so the derivatives of the integral
 /// are the integral of the derivatives; the analytic Jacobian is the exact derivative of the
 /// quadrature sum. Torque on the journal about z_J:
 ///   T = -(e x F) . z / 2  -  2 pi mu R^3 L w / (c sqrt(1 - eps^2)),   eps = |e| / c,

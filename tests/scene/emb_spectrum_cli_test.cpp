@@ -38,7 +38,7 @@ TEST_F(EmbSpectrumCli, FourCylinderOrdersAsTableJsonAndCsv) {
   const double o2 = doc["orders"][4]["amplitude"];
   EXPECT_NEAR(mean, 314.16, 1.0);  // rad/s at 3000 rpm
   // Identical cylinders firing every 180 deg: order 1 vanishes but for the start-up
-  // transient of the bushings in this first cycle (measured 4 % of order 2; 2e-4 in the
+  // transient of the bushings in this first cycle (measured 4 % of order 2; 2e-5 in the
   // second cycle); order 2 is the firing order (~0.1 rad/s).
   EXPECT_GT(o2, 0.01);
   EXPECT_LT(o1, 0.1 * o2);
