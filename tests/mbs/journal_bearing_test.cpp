@@ -28,8 +28,9 @@ constexpr double kPi = std::numbers::pi;
 // A main bearing of a passenger-car engine: D = 55 mm, L = 24 mm, c = 30 um, SAE 10W-40 hot.
 JournalBearingParameters Main() { return {0.0275, 0.024, 30e-6, 0.01}; }
 
-// 64-point Gauss on a half circle: relative error < 1e-11 up to eps = 0.95 (the pole
-// estimate in journal_bearing.cpp); 1e-9 leaves margin for the closed forms' round-off.
+// 64-point Gauss on a half circle (journal_bearing.h): steady rotation puts the minimum
+// film at an end of the interval (< 1e-13 up to eps = 0.99); pure squeeze puts it in the
+// middle (worst case, < 1e-13 at 0.85, the largest squeeze eps here). 1e-9 leaves margin.
 constexpr double kQuadratureTolerance = 1e-9;
 
 // int_{-pi/2}^{pi/2} cos^2 / (1 - eps cos)^3 dphi = J0''(eps)/2 with
