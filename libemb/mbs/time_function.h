@@ -21,7 +21,9 @@ struct FunctionValue {
 ///  - harmonic:   f = offset + amplitude sin(omega x + phase);
 ///  - table:      piecewise-linear through (x_i, y_i), x strictly increasing, held constant
 ///                outside; optionally periodic with period x_last - x_first
-///                (f'' = 0 inside intervals; use it for loads, not for motions).
+///                (f'' = 0 inside intervals; use it for loads, not for motions);
+///  - periodic spline: the periodic cubic spline (C2) through (x_i, y_i), period
+///                x_last - x_first, y_last = y_first (e.g. a cylinder pressure curve).
 class TimeFunction {
  public:
   /// f = 0.
@@ -32,6 +34,9 @@ class TimeFunction {
   static TimeFunction Harmonic(double amplitude, double omega, double phase, double offset);
   /// @throws InputError if sizes differ, fewer than 2 points, or x not strictly increasing.
   static TimeFunction Table(std::vector<double> x, std::vector<double> y, bool periodic);
+  /// @throws InputError as Table, for fewer than 3 points, or if y_last != y_first
+  /// (relative 1e-9 of max |y|).
+  static TimeFunction PeriodicSpline(std::vector<double> x, std::vector<double> y);
 
   FunctionValue Eval(double x) const;
   double operator()(double x) const { return Eval(x).f; }
@@ -39,10 +44,11 @@ class TimeFunction {
   std::string Describe() const;
 
  private:
-  enum class Kind { kPolynomial, kHarmonic, kTable };
+  enum class Kind { kPolynomial, kHarmonic, kTable, kSpline };
   Kind kind_{Kind::kPolynomial};
   std::vector<double> c_{0.0};  // polynomial coefficients, or (amplitude, omega, phase, offset)
   std::vector<double> x_, y_;
+  std::vector<double> m_;  // spline second derivatives at x_ (m_.back() = m_.front())
   bool periodic_{false};
 };
 

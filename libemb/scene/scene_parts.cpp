@@ -8,6 +8,7 @@
 #include "libemb/mbs/bushing.h"
 #include "libemb/mbs/rotation.h"
 #include "libemb/mbs/spring_damper.h"
+#include "libemb/scene/engine_parts.h"
 
 namespace emb::scene {
 namespace {
@@ -172,19 +173,32 @@ mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
     auto x = t.GetDoubles("x");
     auto y = t.GetDoubles("y");
     const bool periodic = t.GetBool("periodic", false);
+    const std::string interpolation = t.GetString("interpolation", "linear");
     t.Finish();
+    EMB_THROW_IF(interpolation != "linear" && !(interpolation == "cubic" && periodic),
+                 Where(file, tn) << ": " << what
+                                 << " table interpolation: expected 'linear', or 'cubic' with "
+                                    "periodic: true, got '"
+                                 << interpolation << "'");
     try {
-      f = mbs::TimeFunction::Table(std::move(x), std::move(y), periodic);
+      f = interpolation == "cubic" ? mbs::TimeFunction::PeriodicSpline(std::move(x), std::move(y))
+                                   : mbs::TimeFunction::Table(std::move(x), std::move(y), periodic);
     } catch (const InputError& e) {
       EMB_THROW(InputError, Where(file, tn) << ": " << what << ": " << e.what());
     }
   } else {
     r.Optional("table");
   }
+  if (r.Has("cylinder_pressure")) {
+    ++given;
+    f = ReadCylinderPressure(r.Require("cylinder_pressure"), file, what + " cylinder_pressure");
+  } else {
+    r.Optional("cylinder_pressure");
+  }
   r.Finish();
   EMB_THROW_IF(given != 1, Where(file, n) << ": " << what
                                           << ": expected exactly one of constant, polynomial, "
-                                             "rpm, harmonic, table; got "
+                                             "rpm, harmonic, table, cylinder_pressure; got "
                                           << given);
   return f;
 }
@@ -233,6 +247,8 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
         else
           r.Optional("damping_factor");
         sys->AddForceElement(std::make_shared<mbs::Bushing>(name, i, j, K, D));
+      } else if (type == "journal-bearing") {
+        ReadJournalBearing(r, name, sys);
       } else if (type == "force" || type == "torque") {
         const int m = sys->FindMarker(r.GetString("marker"));
         const std::string frame = r.GetString("frame", "world");
@@ -246,9 +262,15 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
         const mbs::TimeFunction f = ReadFunction(r.Require("function"), file, what + " function");
         mbs::LoadArgument arg;
         if (const YAML::Node an = r.Optional("argument")) {
-          // {joint: name, unit: rad|deg, offset: 0}: the function of a joint's rotation angle.
+          // {joint: name, unit: rad|deg, offset: 0}: the function of a joint's rotation angle;
+          // {i: marker, j: marker, ...}: of the angle of x_I about z_J without a joint.
           MapReader a(an, file, what + " argument");
-          const std::string joint = a.GetString("joint");
+          const bool by_markers = !a.Has("joint") && a.Has("i");
+          const std::string joint = by_markers ? "" : a.GetString("joint");
+          if (by_markers) {
+            arg.marker_i = sys->FindMarker(a.GetString("i"));
+            arg.marker_j = sys->FindMarker(a.GetString("j"));
+          }
           const std::string unit = a.GetString("unit", "rad");
           arg.offset = a.GetDouble("offset", 0.0);
           a.Finish();
@@ -257,11 +279,13 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
                                                            << " argument unit: expected 'rad' or "
                                                               "'deg', got '"
                                                            << unit << "'");
-          const mbs::ConstraintElement& je = sys->elements().at(sys->FindElement(joint));
-          mbs::CoordinateKernel(je.type, mbs::JointCoordinate::kRotation, joint);  // checks type
+          if (!by_markers) {
+            const mbs::ConstraintElement& je = sys->elements().at(sys->FindElement(joint));
+            mbs::CoordinateKernel(je.type, mbs::JointCoordinate::kRotation, joint);  // checks
+            arg.marker_i = je.marker_i;
+            arg.marker_j = je.marker_j;
+          }
           arg.joint_angle = true;
-          arg.marker_i = je.marker_i;
-          arg.marker_j = je.marker_j;
           arg.scale = unit == "deg" ? 180.0 / std::numbers::pi : 1.0;
         }
         sys->AddForceElement(std::make_shared<mbs::AppliedLoad>(
@@ -274,9 +298,10 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
         EMB_THROW(InputError,
                   what << ": unknown type '" << type
                        << "': expected one of spring-damper, rotational-spring-damper, "
-                          "bushing, force, torque"
+                          "bushing, journal-bearing, force, torque"
                        << mbs::DidYouMean(type, {"spring-damper", "rotational-spring-damper",
-                                                 "bushing", "force", "torque"}));
+                                                 "bushing", "journal-bearing", "force",
+                                                 "torque"}));
       }
     } catch (const InputError& e) {
       const std::string msg = e.what();

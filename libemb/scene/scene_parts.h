@@ -25,14 +25,16 @@ Eigen::Matrix3d ReadOrientation(const YAML::Node& n, const std::string& file,
 
 /// {constant: c} | {polynomial: [c0, c1, ...]} | {rpm: N} (angle 2 pi N/60 t [rad]) |
 /// {harmonic: {amplitude, frequency_hz, phase, offset}} |
-/// {table: {x: [...], y: [...], periodic: false}}.
+/// {table: {x: [...], y: [...], periodic: false, interpolation: linear|cubic}} |
+/// {cylinder_pressure: {...}} (engine_parts.h).
 mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
                                const std::string& what);
 
 /// "rotation" or "translation" from key `key` of r.
 mbs::JointCoordinate ReadCoordinate(MapReader& r, const std::string& key);
 
-/// The 'forces' list: spring-damper, rotational-spring-damper, bushing, force, torque.
+/// The 'forces' list: spring-damper, rotational-spring-damper, bushing, journal-bearing,
+/// force, torque.
 void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sys);
 
 }  // namespace emb::scene

@@ -16,6 +16,7 @@
 #include "libemb/mbs/bushing.h"
 #include "libemb/mbs/rotation.h"
 #include "libemb/mbs/spring_damper.h"
+#include "tests/mbs/force_jacobian_check.h"
 #include "tests/mbs/test_models.h"
 
 namespace emb::mbs {
@@ -238,24 +239,13 @@ TEST_P(ForceJacobian, EveryElementMatchesCentralDifferences) {
   for (std::size_t k = 0; k < sys.force_elements().size(); ++k) {
     const ForceElement& fe = *sys.force_elements()[k];
     const int slot = sys.force_angle_slot(static_cast<int>(k));
-    auto forces = [&](const Eigen::VectorXd& qq, const Eigen::VectorXd& vv) {
-      const auto bodies = CalcBodyKinematics(sys, qq, vv);
-      Eigen::VectorXd f = Eigen::VectorXd::Zero(L.nv());
-      fe.AddForces({&sys, &bodies, t, &ws, slot}, f);
-      return f;
-    };
     const auto bodies = CalcBodyKinematics(sys, q, v);
     DenseForceJacobian analytic(L);
     fe.AddForceJacobian({&sys, &bodies, t, &ws, slot}, &analytic);
-    Eigen::MatrixXd K(L.nv(), L.nv()), D(L.nv(), L.nv());
-    for (int j = 0; j < L.nv(); ++j) {
-      Eigen::VectorXd dx = Eigen::VectorXd::Zero(L.nv());
-      dx[j] = h;
-      K.col(j) = (forces(ApplyDisplacement(sys, q, dx), v) -
-                  forces(ApplyDisplacement(sys, q, -dx), v)) /
-                 (2 * h);
-      D.col(j) = (forces(q, v + dx) - forces(q, v - dx)) / (2 * h);
-    }
+    const testing::NumericForceJacobian fd =
+        testing::CentralDifferenceJacobian(sys, static_cast<int>(k), q, v, t, h, &ws);
+    const Eigen::MatrixXd& K = fd.stiffness;
+    const Eigen::MatrixXd& D = fd.damping;
     const double scale = std::max({1.0, K.cwiseAbs().maxCoeff(), D.cwiseAbs().maxCoeff()});
     EXPECT_LT((analytic.stiffness() - K).cwiseAbs().maxCoeff(), kDerivativeTolerance * scale)
         << fe.name() << " stiffness, scale " << scale;

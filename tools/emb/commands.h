@@ -21,5 +21,7 @@ void RegisterInspectCommand(CLI::App& app);
 /// `emb dof SCENE` and `emb run SCENE` (multibody scenes).
 void RegisterDofCommand(CLI::App& app);
 void RegisterRunCommand(CLI::App& app);
+/// `emb spectrum RESULTS --channel NAME` (engine-order spectrum of a results channel).
+void RegisterSpectrumCommand(CLI::App& app);
 
 }  // namespace emb::cli

@@ -7,6 +7,7 @@
 //   emb inspect FILE          what is inside a body file
 //   emb dof SCENE             degrees of freedom and redundant constraints of a multibody scene
 //   emb run SCENE             run a multibody scene (kinematic/static/dynamic), results to HDF5
+//   emb spectrum RESULTS      engine-order spectrum of a results channel over whole cycles
 // Sample run:
 //   emb modes meshes/crankshaft_i4.geo --modes 20 -o crank_modes.h5
 // Inputs: a gmsh geometry (.geo with parameters, .step, .brep) or a mesh (.msh, .unv, .bdf).
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
   RegisterInspectCommand(app);
   RegisterDofCommand(app);
   RegisterRunCommand(app);
+  RegisterSpectrumCommand(app);
   // Name an unknown subcommand (CLI11 would only say that one is required).
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;

@@ -1,0 +1,29 @@
+#pragma once
+/// @file
+/// Scene readers for engine parts (internal to emb_scene): the `journal-bearing` force
+/// element and the `cylinder_pressure` function.
+
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+#include "libemb/mbs/system.h"
+#include "libemb/mbs/time_function.h"
+#include "libemb/scene/yaml_reader.h"
+
+namespace emb::scene {
+
+/// {name, type: journal-bearing, i, j, radius, length, clearance, viscosity}: adds a
+/// mbs::JournalBearing. `r` has read name and type.
+void ReadJournalBearing(MapReader& r, const std::string& name, mbs::System* sys);
+
+/// {bore, stroke, rod, compression_ratio, intake_pressure, exhaust_pressure,
+///  crankcase_pressure, polytropic_exponent, fired, combustion_start_deg,
+///  combustion_duration_deg, wiebe_a, wiebe_m, heat_released | peak_pressure,
+///  exhaust_opening_deg, blowdown_deg, step_deg, output: force | pressure}
+/// (mbs::CylinderPressureSettings; defaults there): the piston force (p - p_crankcase) A [N]
+/// or the pressure p [Pa] as a function of the crank angle [deg] from firing TDC.
+mbs::TimeFunction ReadCylinderPressure(const YAML::Node& n, const std::string& file,
+                                       const std::string& what);
+
+}  // namespace emb::scene

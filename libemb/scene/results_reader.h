@@ -1,0 +1,30 @@
+#pragma once
+/// @file
+/// Reading channels back from a multibody results file (results_writer.h layout) by the
+/// CSV channel names, for post-processing (emb spectrum, plots).
+
+#include <string>
+#include <vector>
+
+namespace emb::scene {
+
+/// One channel of a results file: the time samples and the values.
+struct ResultsChannel {
+  std::vector<double> time;
+  std::vector<double> values;
+};
+
+/// Channels: <body>.p|v|omega.{x,y,z} (omega in W, as in the CSV), <port>.F|T.{x,y,z}
+/// (reactions in J's axes), energy.{kinetic,gravity,elastic,total,dissipated}.
+/// @throws InputError for a file that is not emb-mbs-results or an unknown channel (with
+/// a did-you-mean).
+ResultsChannel ReadResultsChannel(const std::string& path, const std::string& channel);
+
+/// The rotation angle [deg] of `body` about the world axis `axis` ("x", "y" or "z"),
+/// unwrapped across turns and shifted so that it starts at `start_deg`: the angle of the
+/// body's image of a unit vector u normal to the axis, atan2((R u) . (a x u), (R u) . u).
+/// @throws InputError as ReadResultsChannel, for an unknown body or axis.
+ResultsChannel ReadBodyRotationAngle(const std::string& path, const std::string& body,
+                                     const std::string& axis, double start_deg);
+
+}  // namespace emb::scene

@@ -1,0 +1,129 @@
+// Engine scenes: the inline-4 rigid-crank scenes load with the expected DOF and run a few
+// output steps; the cylinder_pressure function puts (p - p_crankcase) A on the piston at
+// the cylinder's phase; the journal-bearing and cylinder_pressure keys are checked.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/analysis.h"
+#include "libemb/mbs/cylinder_pressure.h"
+#include "libemb/mbs/dof_analysis.h"
+#include "libemb/scene/scene.h"
+
+namespace emb::scene {
+namespace {
+
+std::string ScenePath(const std::string& name) {
+  return std::string(EMB_SOURCE_DIR) + "/tools/scenes/" + name;
+}
+
+struct EngineCase {
+  const char* file;
+  int dof;
+};
+class Inline4Scene : public ::testing::TestWithParam<EngineCase> {};
+
+TEST_P(Inline4Scene, LoadsWithItsDofAndRuns) {
+  Scene sc = LoadScene(ScenePath(GetParam().file));
+  mbs::ConstraintWorkspace ws(sc.system);
+  const mbs::AssemblyResult a =
+      mbs::AssemblePositions(sc.system, sc.system.InitialPositions(), 0.0, &ws);
+  ASSERT_TRUE(a.converged) << a.message;
+  const mbs::DofReport r = mbs::AnalyzeDof(sc.system, a.q, 0.0, &ws);
+  EXPECT_EQ(r.true_dof, GetParam().dof);
+  EXPECT_TRUE(r.redundant.empty());
+  // 10 degrees of crank angle (the full two-cycle runs are in tools/scenes/README.md).
+  sc.analysis.t_end = 5 * sc.analysis.output_step;
+  const mbs::RunResult run = mbs::RunAnalysis(mbs::PrepareRun(sc.system, sc.analysis),
+                                              sc.analysis, [](const mbs::Sample&) {});
+  EXPECT_TRUE(run.ok()) << run.message;
+}
+
+// Crank on 5 bushings (6 DOF); on 5 films with a thrust in-plane joint (5 DOF).
+INSTANTIATE_TEST_SUITE_P(Scenes, Inline4Scene,
+                         ::testing::Values(EngineCase{"inline4_rigid.yaml", 6},
+                                           EngineCase{"inline4_rigid_ocvirk.yaml", 5},
+                                           EngineCase{"inline4_rigid_free.yaml", 6}));
+
+TEST(Inline4Scene, GasForceFollowsTheFiringOrder) {
+  // At crank angle 0 cylinder 1 is at firing TDC, 4 at gas-exchange TDC, 2 and 3 at BDC
+  // (3 before its firing, 2 after intake): the force on each piston crown is
+  // (p(theta_k) - 1 bar) A with theta_k = 0 - firing angle.
+  const Scene sc = LoadScene(ScenePath("inline4_rigid.yaml"));
+  const mbs::System& sys = sc.system;
+  const mbs::CylinderPressure c{mbs::CylinderPressureSettings{}};
+  const auto bodies = mbs::CalcBodyKinematics(sys, sys.InitialPositions(), sys.InitialVelocities());
+  const std::pair<int, double> firing[] = {{1, 0.0}, {3, 180.0}, {4, 360.0}, {2, 540.0}};
+  for (const auto& [k, angle] : firing) {
+    const std::string name = "gas_" + std::to_string(k);
+    const auto& fes = sys.force_elements();
+    const auto it = std::find_if(fes.begin(), fes.end(), [&](const auto& fe) { return fe->name() == name; });
+    ASSERT_NE(it, fes.end()) << name;
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(sys.layout().nv());
+    (*it)->AddForces({&sys, &bodies, 0.0, nullptr, -1}, f);
+    const int piston = sys.FindBody("piston_" + std::to_string(k));
+    const double expected = -(c.pressure()(720.0 - angle) - 1.0e5) * c.piston_area();
+    // The spline evaluated at the same grid point: round-off only.
+    EXPECT_NEAR(f[sys.layout().velocity(piston) + 2], expected, 1e-9 * std::abs(expected) + 1e-9)
+        << name;
+  }
+}
+
+const char* kBase = R"(
+bodies:
+  - {name: pin, mass: 1.0, inertia: [1.0e-3, 1.0e-3, 1.0e-3]}
+markers:
+  - {name: shell, body: ground, position: [0, 0, 0]}
+  - {name: journal, body: pin, position: [0, 0, 0]}
+analysis: {type: dynamic, t_end: 0.01, output_step: 0.001}
+)";
+
+void ExpectError(const std::string& forces, std::initializer_list<std::string> parts) {
+  try {
+    ParseScene(std::string(kBase) + forces, "bad.yaml");
+    FAIL() << "expected an InputError for " << forces;
+  } catch (const InputError& e) {
+    for (const auto& p : parts)
+      EXPECT_NE(std::string(e.what()).find(p), std::string::npos)
+          << "message '" << e.what() << "' lacks '" << p << "'";
+  }
+}
+
+TEST(EngineSceneKeys, JournalBearing) {
+  const std::string good =
+      "forces:\n  - {name: main, type: journal-bearing, i: journal, j: shell, radius: 0.0275,\n"
+      "     length: 0.024, clearance: 3.0e-5, viscosity: 0.01}\n";
+  EXPECT_NO_THROW(ParseScene(std::string(kBase) + good, "good.yaml"));
+  ExpectError("forces:\n  - {name: main, type: journal-bearing, i: journal, j: shell, radius: 0.01,\n"
+              "     length: 0.024, clearance: 3.0e-5, viscosity: 0.01}\n",
+              {"bad.yaml:9", "journal bearing 'main'", "L/D"});
+  ExpectError("forces:\n  - {name: main, type: journal-bearing, i: journal, j: shell, radius: 0.0275,\n"
+              "     length: 0.024, clearance: 3.0e-5, viscosity: 0.01, viscosty: 1}\n",
+              {"viscosty", "did you mean"});
+  ExpectError("forces:\n  - {name: main, type: journal-baring, i: journal, j: shell}\n",
+              {"did you mean 'journal-bearing'"});
+}
+
+TEST(EngineSceneKeys, CylinderPressure) {
+  auto gas = [](const std::string& fn) {
+    return "forces:\n  - {name: gas, type: force, marker: journal, direction: [0, 0, -1],\n"
+           "     function: " + fn + "}\n";
+  };
+  EXPECT_NO_THROW(ParseScene(std::string(kBase) + gas("{cylinder_pressure: {fired: false}}"), "g.yaml"));
+  ExpectError(gas("{cylinder_pressure: {heat_released: 1000, peak_pressure: 7.0e6}}"),
+              {"at most one of heat_released, peak_pressure"});
+  ExpectError(gas("{cylinder_pressure: {compression_ratio: 0.5}}"),
+              {"bad.yaml", "compression_ratio", "expected a value > 1"});
+  ExpectError(gas("{cylinder_pressure: {bor: 0.08}}"), {"bor", "did you mean 'bore'"});
+  ExpectError(gas("{cylinder_pressure: {output: torque}}"), {"expected 'force' or 'pressure'"});
+  ExpectError(gas("{table: {x: [0, 1, 2], y: [0, 1, 0], interpolation: cubic}}"),
+              {"'cubic' with periodic: true"});
+}
+
+}  // namespace
+}  // namespace emb::scene

@@ -1,0 +1,128 @@
+#!/usr/bin/python3
+"""Plots of an engine run: time traces of results channels and the engine-order spectrum.
+
+    /usr/bin/python3 tools/plots/engine_plots.py RESULTS.h5 \
+        --traces crank.omega.x,dyno_speed.T.z --spectrum dyno_speed.T.z --angle crank \
+        [--orders 12] [--out DIR] [--emb build/tools/emb/emb]
+
+Writes DIR/<results stem>_traces.png (one panel per channel against the crank angle, or the
+time with --time) and DIR/<results stem>_spectrum_<channel>.png (amplitude vs engine order,
+computed by `emb spectrum --json`, so the numbers are the CLI's). Channel names as in
+`emb spectrum --help`: <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z}, energy.<column>.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+
+import h5py
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from scipy.spatial.transform import Rotation  # noqa: E402
+
+ENERGY = ["kinetic", "gravity", "elastic", "total", "dissipated"]
+
+
+def names(f, path):
+    return [s.decode() if isinstance(s, bytes) else s for s in f[path][:]]
+
+
+def rotations(f, b):
+    e = f["state/q"][:, 7 * b + 3:7 * b + 7]  # w, x, y, z
+    return Rotation.from_quat(np.c_[e[:, 1:], e[:, :1]])
+
+
+def channel(f, name):
+    """The values of a channel (same conventions as libemb/scene/results_reader.h)."""
+    owner, _, comp = name.rpartition(".")
+    if name.startswith("energy."):
+        return f["energy"][:, ENERGY.index(name[7:])]
+    owner, _, quantity = owner.rpartition(".")
+    c = "xyz".index(comp)
+    if quantity in ("F", "T"):
+        p = names(f, "model/reaction_ports").index(owner)
+        key = "reactions/force" if quantity == "F" else "reactions/torque"
+        return f[key][:].reshape(len(f["time"]), -1)[:, 3 * p + c]
+    b = names(f, "model/bodies").index(owner)
+    if quantity == "p":
+        return f["state/q"][:, 7 * b + c]
+    if quantity == "v":
+        return f["state/v"][:, 6 * b + c]
+    if quantity == "omega":  # omega_B in the file, W in the channel
+        return rotations(f, b).apply(f["state/v"][:, 6 * b + 3:6 * b + 6])[:, c]
+    raise SystemExit(f"engine_plots: unknown channel '{name}'")
+
+
+def crank_angle(f, body, axis):
+    """Unwrapped rotation angle [deg] of `body` about a world axis, 0 at the first sample."""
+    a = "xyz".index(axis)
+    u, ax = np.eye(3)[(a + 1) % 3], np.eye(3)[a]
+    r = rotations(f, names(f, "model/bodies").index(body)).apply(u)
+    ang = np.unwrap(np.arctan2(r @ np.cross(ax, u), r @ u))
+    return np.degrees(ang - ang[0])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("results")
+    ap.add_argument("--traces", default="", help="comma-separated channels to plot")
+    ap.add_argument("--spectrum", default="", help="channel for the order spectrum")
+    ap.add_argument("--angle", default="crank", help="body whose rotation is the crank angle")
+    ap.add_argument("--axis", default="x", help="world axis of the crank rotation")
+    ap.add_argument("--time", action="store_true", help="traces against time instead of angle")
+    ap.add_argument("--orders", default="12")
+    ap.add_argument("--out", default=".")
+    ap.add_argument("--emb", default=os.path.join("build", "tools", "emb", "emb"))
+    args = ap.parse_args()
+    stem = os.path.splitext(os.path.basename(args.results))[0]
+    os.makedirs(args.out, exist_ok=True)
+    written = []
+    with h5py.File(args.results, "r") as f:
+        traces = [c for c in args.traces.split(",") if c]
+        if traces:
+            x = f["time"][:] if args.time else crank_angle(f, args.angle, args.axis)
+            fig, axes = plt.subplots(len(traces), 1, sharex=True, figsize=(9, 2.4 * len(traces)),
+                                     squeeze=False)
+            for ax, name in zip(axes[:, 0], traces):
+                ax.plot(x, channel(f, name), lw=0.8)
+                ax.set_ylabel(name)
+                ax.grid(alpha=0.3)
+            if not args.time:
+                for ax in axes[:, 0]:
+                    ax.set_xticks(np.arange(0, x[-1] + 1, 180))
+            axes[-1, 0].set_xlabel("time [s]" if args.time else "crank angle [deg]")
+            fig.suptitle(f"{stem}: {f.attrs.get('scene', '')}", fontsize=9)
+            fig.tight_layout()
+            path = os.path.join(args.out, f"{stem}_traces.png")
+            fig.savefig(path, dpi=120)
+            written.append(path)
+    if args.spectrum:
+        cmd = [args.emb, "spectrum", args.results, "--channel", args.spectrum, "--angle", args.angle,
+               "--axis", args.axis, "--orders", args.orders, "--json"]
+        run = subprocess.run(cmd, capture_output=True, text=True)
+        if run.returncode != 0:
+            sys.exit(f"engine_plots: {' '.join(cmd)} failed:\n{run.stderr}")
+        data = json.loads(run.stdout)
+        orders = [r["order"] for r in data["orders"] if r["order"] > 0]
+        amps = [r["amplitude"] for r in data["orders"] if r["order"] > 0]
+        fig, ax = plt.subplots(figsize=(9, 3.5))
+        ax.bar(orders, amps, width=0.3)
+        ax.set_xlabel("engine order (per crank revolution)")
+        ax.set_ylabel(f"amplitude of {args.spectrum}")
+        ax.set_title(f"{stem}: {args.spectrum}, {data['summary']['cycles']} cycle(s), "
+                     f"mean {data['summary']['mean']:.4g}", fontsize=9)
+        ax.set_xticks(np.arange(0, float(args.orders) + 0.5, 1.0))
+        ax.grid(alpha=0.3)
+        fig.tight_layout()
+        path = os.path.join(args.out, f"{stem}_spectrum_{args.spectrum.replace('.', '_')}.png")
+        fig.savefig(path, dpi=120)
+        written.append(path)
+    for p in written:
+        print("wrote", p)
+
+
+if __name__ == "__main__":
+    main()
