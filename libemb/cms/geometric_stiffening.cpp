@@ -1,6 +1,5 @@
 #include "libemb/cms/geometric_stiffening.h"
 
-#include <array>
 #include <sstream>
 
 #include "libemb/common/error.h"
