@@ -1,6 +1,5 @@
 #include "libemb/cms/geometric_stiffening.h"
 
-#include <array>
 #include <sstream>
 
 #include "libemb/common/error.h"
@@ -61,19 +60,21 @@ GeometricStiffness ReduceGeometricStiffness(const Mesh& mesh, const IsotropicMat
                    << " unknowns, got " << responses.rows() << " x " << responses.cols()
                    << " and " << Phi.rows() << " x " << Phi.cols());
   // K_σ = S ⊗ I₃, so Φᵀ K_σ Φ = Σ_c Φ_cᵀ S Φ_c with Φ_c the rows of component c: a third of
-  // the sparse work of the 3-D matrix, whose off-diagonal block entries are zeros.
+  // the sparse work of the 3-D matrix, whose off-diagonal block entries are zeros. Φ row-major
+  // is P = [Φ_x Φ_y Φ_z] (n × 3ne) row-major, whose rows S · P reads contiguously.
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   const int n = mesh.num_nodes(), ne = static_cast<int>(Phi.cols());
-  std::array<Eigen::MatrixXd, 3> component;
-  for (int c = 0; c < 3; ++c)
-    component[c] = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynamic, 3>>(
-        Phi.data() + c, n, ne, Eigen::Stride<Eigen::Dynamic, 3>(Phi.outerStride(), 3));
+  const RowMajor phi = Phi;
+  const Eigen::Map<const RowMajor> P(phi.data(), n, 3 * ne);
   const SparseMatrix node_pattern = NodePattern(pattern);
   GeometricStiffness g;
   for (int p = 0; p < 9; ++p) {
     const SparseMatrix S = AssembleNodalGeometricStiffness(
         mesh, CalcStressField(mesh, material, responses.col(p)), node_pattern);
+    const RowMajor SP = S * P;
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(ne, ne);
-    for (int c = 0; c < 3; ++c) A.noalias() += component[c].transpose() * (S * component[c]);
+    for (int c = 0; c < 3; ++c)
+      A.noalias() += P.middleCols(c * ne, ne).transpose() * SP.middleCols(c * ne, ne);
     Eigen::MatrixXd& out = p < 6 ? g.centrifugal[p] : g.translational[p - 6];
     out = 0.5 * (A + A.transpose());
   }

@@ -43,6 +43,8 @@ TEST_F(ReduceCli, WritesACertifiedBodyThatInspectReads) {
   const auto k = nlohmann::json::parse(js.out);
   EXPECT_EQ(k["modes"].size(), 12u);  // 12 interface + 6 modal − 6 rigid coordinates
   EXPECT_EQ(k["summary"]["reduced_coordinates"], 18);
+  EXPECT_NE(k["summary"]["geometric_stiffness"].get<std::string>().find("interfaces held"),
+            std::string::npos);
   const emb::test::CliResult stale = Run("inspect out.h5 --expect-mesh-hash 0123456789abcdef");
   EXPECT_EQ(stale.exit_code, 1);
   EXPECT_NE(stale.err.find("stale basis"), std::string::npos) << stale.err;
@@ -54,15 +56,27 @@ TEST_F(ReduceCli, WithoutInterfacesFallsBackToFreeFree) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NE(j["summary"]["basis"].get<std::string>().find("free-free"), std::string::npos);
   EXPECT_EQ(j["summary"]["elastic_modes"], 5);
+  EXPECT_NE(j["summary"]["geometric_stiffness"].get<std::string>().find("inertia relief"),
+            std::string::npos);
   EXPECT_TRUE(fs::exists(dir_ / "out.h5"));
   EXPECT_FALSE(fs::exists(dir_ / "out.xdmf"));
+}
+
+TEST_F(ReduceCli, GeometricStiffnessCanBeSwitchedOff) {
+  const emb::test::CliResult r = Run(
+      "reduce bar.geo -i x0:rbe2 --modes 4 -o out.h5 -q --no-mesh-shapes --no-geometric-stiffness");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const emb::test::CliResult js = Run("inspect out.h5 --json");
+  ASSERT_EQ(js.exit_code, 0) << js.err;
+  EXPECT_EQ(nlohmann::json::parse(js.out)["summary"]["geometric_stiffness"], "none");
 }
 
 TEST_F(ReduceCli, HelpDocumentsTheOptions) {
   const emb::test::CliResult r = Run("reduce --help");
   EXPECT_EQ(r.exit_code, 0);
   for (const char* opt : {"--interface", "--modes", "--fmax", "--band", "--band-factor",
-                          "--damping-ratio", "--rayleigh", "--no-reference", "--free-free", "--json"})
+                          "--damping-ratio", "--rayleigh", "--no-reference", "--free-free", "--json",
+                          "--no-geometric-stiffness"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 
