@@ -25,7 +25,7 @@ run() {  # run NAME MODES RTOL ATOL
 }
 
 if [ "$what" = modes ] || [ "$what" = all ]; then
-  run ref 126 1e-8 1e-11
+  run ref 60 1e-7 1e-10
   for m in 0 10 20 40; do run modes$m "$m" 1e-6 1e-9; done
 fi
 if [ "$what" = tolerance ] || [ "$what" = all ]; then
