@@ -120,7 +120,41 @@ void FitSegment(const Integrals& g, const std::string& path, GeometryPart& part,
   part.x_max = g.center.x() + 0.5 * L;
 }
 
+// Width b of an elastic web arm: the option, else web_r_main + web_r_pin of the .geo (the
+// overrides first, then the declared defaults).
+double WebArmWidth(const BeamGenerationOptions& o, const std::string& path,
+                   const std::vector<std::pair<std::string, double>>& declared) {
+  if (o.web_width > 0.0) return o.web_width;
+  EMB_THROW_IF(o.web_width < 0.0 || !std::isfinite(o.web_width),
+               "beam generation: web width: expected > 0 m (or 0 for the geometry's), got "
+                   << o.web_width);
+  auto value = [&](const std::string& name) {
+    for (const auto& p : o.parameters)
+      if (p.first == name) return p.second;
+    for (const auto& p : declared)
+      if (p.first == name) return p.second;
+    EMB_THROW(InputError, "geometry '" << path << "': elastic webs need the web width: the file "
+                                          "declares no parameter '"
+                                       << name << "'; give the width (web_width) explicitly");
+  };
+  return value("web_r_main") + value("web_r_pin");
+}
+
+// The section of an elastic web arm: a t × b rectangle, t along y_B (= x_W), b along z_B.
+BeamSection WebArmSection(double t, double b, double poisson, const std::string& what) {
+  const double thin = std::min(t, b), wide = std::max(t, b), ratio = thin / wide;
+  const double J = wide * thin * thin * thin * (1.0 / 3.0 - 0.21 * ratio * (1.0 - std::pow(ratio, 4) / 12.0));
+  const double kappa = 10.0 * (1.0 + poisson) / (12.0 + 11.0 * poisson);
+  try {
+    return MakeGeneralSection(t * b, b * b * b * t / 12.0, t * t * t * b / 12.0, J, kappa);
+  } catch (const InputError& e) {
+    EMB_THROW(InputError, what << ": web arm section " << t << " m x " << b << " m: " << e.what());
+  }
+}
+
 }  // namespace
+
+const char* Name(WebModel webs) { return webs == WebModel::kRigid ? "rigid" : "elastic"; }
 
 GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
                                              const BeamGenerationOptions& o) {
@@ -240,6 +274,31 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
     }
     return part_node[i];
   };
+  // The node a segment ends on at rigid part i: the part's node, or with elastic webs and a
+  // segment off the part's axis the pin node at the end of a web arm (header comment).
+  auto attach_node = [&](size_t i, const GeometryPart& seg) {
+    const int node = rigid_node(i);
+    const Eigen::Vector3d& p_N = model.nodes()[node].p_W;
+    const double radial = (seg.axis_point_W.tail<2>() - p_N.tail<2>()).norm();
+    if (o.webs == WebModel::kRigid || radial <= tol) return node;
+    GeometryPart& web = parts[i];
+    if (web.pin_node >= 0) return web.pin_node;
+    const Eigen::Vector3d p_pin(p_N.x(), seg.axis_point_W.y(), seg.axis_point_W.z());
+    web.pin_node = model.AddNode(web.name + ":pin", p_pin);
+    const std::string what = "geometry '" + path + "': web '" + web.name + "'";
+    BeamElement arm;
+    arm.name = web.name + "#web";
+    arm.node_a = node;
+    arm.node_b = web.pin_node;
+    arm.section = WebArmSection(web.x_max - web.x_min, WebArmWidth(o, path, declared),
+                                o.material.poisson_ratio, what);
+    arm.material = o.material;
+    arm.material.density *= kWebArmDensityFraction;
+    arm.shear_deformable = o.shear_deformable;
+    arm.reference_W = Eigen::Vector3d::UnitX();
+    model.AddElement(arm);
+    return web.pin_node;
+  };
   int shared = -1;  // end node of the previous segment, shared by a coaxial successor
   for (size_t i = 0; i < parts.size(); ++i) {
     GeometryPart& p = parts[i];
@@ -263,7 +322,7 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
     int n0;
     Eigen::Vector3d off0 = Eigen::Vector3d::Zero(), off1 = Eigen::Vector3d::Zero();
     if (after_rigid) {
-      n0 = rigid_node(i - 1);
+      n0 = attach_node(i - 1, p);
       off0 = p0 - model.nodes()[n0].p_W;
     } else if (shared >= 0) {
       n0 = shared;
@@ -279,7 +338,7 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
       nodes.push_back(model.AddNode(name, p0 + (p1 - p0) * (static_cast<double>(k) / n_el)));
     }
     if (before_rigid) {
-      nodes.push_back(rigid_node(i + 1));
+      nodes.push_back(attach_node(i + 1, p));
       off1 = p1 - model.nodes()[nodes.back()].p_W;
       shared = -1;
     } else {

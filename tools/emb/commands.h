@@ -21,5 +21,7 @@ void RegisterInspectCommand(CLI::App& app);
 /// `emb dof SCENE` and `emb run SCENE` (multibody scenes).
 void RegisterDofCommand(CLI::App& app);
 void RegisterRunCommand(CLI::App& app);
+/// `emb compare PART` (beam vs CMS vs 3-D FE, issue 6).
+void RegisterCompareCommand(CLI::App& app);
 
 }  // namespace emb::cli

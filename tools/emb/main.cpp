@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   RegisterInspectCommand(app);
   RegisterDofCommand(app);
   RegisterRunCommand(app);
+  RegisterCompareCommand(app);
   // Name an unknown subcommand (CLI11 would only say that one is required).
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
