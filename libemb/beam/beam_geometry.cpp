@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "libemb/beam/beam_modal.h"
 #include "libemb/common/error.h"
 #include "libemb/mesh/gmsh_reader.h"
 #include "libemb/mesh/gmsh_session.h"
@@ -183,7 +184,9 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
                                        "declare them");
   const std::vector<std::string> args = GeoParameterArgs(path, overrides);
 
-  GeneratedBeamModel out{BeamModel(fs::path(path).stem().string(), o.stiffness_damping), {}, {},
+  EMB_THROW_IF(!(std::isfinite(o.damping_ratio) && o.damping_ratio >= 0.0),
+               "beam generation: damping ratio: expected >= 0, got " << o.damping_ratio);
+  GeneratedBeamModel out{BeamModel(fs::path(path).stem().string(), std::max(0.0, o.stiffness_damping)), {}, {},
                          path};
   std::vector<Integrals> integrals;
   {
@@ -357,6 +360,19 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
       if (k + 1 == n_el) e.offset_b_W = off1;
       p.elements.push_back(model.AddElement(e));
     }
+  }
+
+  if (o.stiffness_damping < 0.0) {
+    // ζ at the first elastic free-free mode (header): one dense solve of a small model.
+    const BeamModes modes = CalcBeamModes(AssembleBeamSystem(model, BeamMassType::kConsistent));
+    EMB_THROW_IF(!modes.ok(), "geometry '" << path << "': the beam model's modes (for its "
+                                              "damping) failed: "
+                                           << modes.message);
+    const int first = modes.num_rigid_modes;
+    EMB_THROW_IF(first >= modes.frequencies_hz.size(),
+                 "geometry '" << path << "': the beam model has no elastic mode to set its "
+                                         "damping at; give stiffness_damping");
+    model.SetStiffnessDamping(StiffnessDampingForRatio(o.damping_ratio, modes.frequencies_hz[first]));
   }
 
   // Mass properties of the exact geometry: all parts together.

@@ -71,7 +71,13 @@ struct BeamGenerationOptions {
   double max_element_length{0.02};    ///< [m], > 0
   int min_elements_per_segment{2};    ///< ≥ 1; rounded up to even (a node at mid-length)
   bool shear_deformable{true};        ///< Timoshenko segments
-  double stiffness_damping{0.01};     ///< β [s] of the model (beam_model.h)
+  /// β [s] of the model (beam_model.h); negative (the default) = derived: the ratio
+  /// `damping_ratio` at the generated model's first elastic free-free frequency f₁,
+  /// β = 2ζ/(2πf₁) (StiffnessDampingForRatio). Mode i then has ζ_i = ζ f_i/f₁: 1 % at the
+  /// first mode, like the CMS bodies' default modal ratio, and more above — never the
+  /// seed's literal β = 0.01 s, which makes every mode above 31.8 Hz overdamped.
+  double stiffness_damping{-1.0};
+  double damping_ratio{0.01};         ///< ζ at f₁ when β is derived, ≥ 0
   double contact_tolerance{1e-5};     ///< parts closer than this along x touch [m]
   WebModel webs{WebModel::kRigid};    ///< see the file comment
   /// Elastic webs: width b of the web arm's section [m]; 0 = web_r_main + web_r_pin of the

@@ -96,9 +96,16 @@ struct Context {
   std::vector<InterfaceSpec> interfaces;
 };
 
+// The beam model's options; of the meshing parameters only those its .geo declares (the
+// mesh's own, e.g. n_curv, may not exist in a separate beam geometry).
 BeamGenerationOptions GenerationOptions(const ComparisonOptions& o, WebModel webs) {
   BeamGenerationOptions g;
-  g.parameters = o.meshing.parameters;
+  const std::string& path = o.beam_geometry.empty() ? o.geometry : o.beam_geometry;
+  const auto declared = GeoParameters(path);
+  for (const auto& p : o.meshing.parameters)
+    if (path == o.geometry || std::any_of(declared.begin(), declared.end(),
+                                          [&](const auto& d) { return d.first == p.first; }))
+      g.parameters.push_back(p);
   g.material = o.material;
   g.max_element_length = o.beam_element_length;
   g.shear_deformable = o.shear_deformable;
@@ -249,7 +256,15 @@ void RunBeams(Context& c, WebModel webs, bool has_webs) {
     const Eigen::VectorXd hz = modes.frequencies_hz.tail(ne);
     const SampledShapes s =
         SampleBeamShapes(g.model, c.stations, modes.shapes.rightCols(ne));
-    const ModePairing pairing = PairModesByShape(c.reference_samples.values, s.values, hz);
+    // Only beam-like reference modes are paired: a shell mode's rigid fit is ~0, and the
+    // MAC of what is left says nothing.
+    std::vector<int> beam_like;
+    for (int j = 0; j < nref; ++j)
+      if (c.out.reference[j].beam_like) beam_like.push_back(j);
+    Eigen::MatrixXd ref(c.reference_samples.values.rows(), beam_like.size());
+    for (size_t k = 0; k < beam_like.size(); ++k)
+      ref.col(k) = c.reference_samples.values.col(beam_like[k]);
+    const ModePairing pairing = PairModesByShape(ref, s.values, hz);
     RouteResult r;
     r.name = std::string("beam ") + Name(mass) + suffix;
     r.method = "beam";
@@ -258,9 +273,10 @@ void RunBeams(Context& c, WebModel webs, bool has_webs) {
     r.seconds = t_generate + t_solve;
     r.pairing = "MAC";
     r.frequencies_hz = Eigen::VectorXd::Constant(nref, kNaN);
-    r.mac = pairing.score;
-    for (int j = 0; j < nref; ++j) {
-      const int i = pairing.match[j];
+    r.mac = Eigen::VectorXd::Constant(nref, kNaN);
+    for (size_t k = 0; k < beam_like.size(); ++k) {
+      const int j = beam_like[k], i = pairing.match[k];
+      r.mac[j] = pairing.score[k];
       if (i < 0) continue;
       r.frequencies_hz[j] = hz[i];
       if (mass == BeamMassType::kLumped) lumped_position[j] = first_elastic + i + 1;
@@ -320,6 +336,8 @@ PartComparison RunPartComparison(const ComparisonOptions& o, const ProgressFn& p
   for (int n : o.cms_modes)
     EMB_THROW_IF(n < 0, "CMS mode count: expected >= 0, got " << n);
   EMB_THROW_IF(o.webs.empty(), "web models: expected at least one (rigid, elastic)");
+  EMB_THROW_IF(!(std::isfinite(o.web_width) && o.web_width >= 0.0),
+               "web width: expected > 0 m (or 0 for the geometry's), got " << o.web_width);
   EMB_THROW_IF(!(o.shell_threshold > 0.0 && o.shell_threshold < 1.0),
                "shell threshold: expected in (0, 1), got " << o.shell_threshold);
   EMB_THROW_IF(!(o.same_part_tolerance > 0.0),
@@ -337,18 +355,6 @@ PartComparison RunPartComparison(const ComparisonOptions& o, const ProgressFn& p
   out.support = o.support;
   Context c{o, progress, out, {}, {}, {}, {}, {}, {}};
 
-  // The beam model first: it is cheap and rejects bad geometry before the 3-D work.
-  const GeneratedBeamModel probe =
-      MakeBeamModelFromGeometry(out.beam_geometry, GenerationOptions(o, WebModel::kRigid));
-  for (const GeometryPart& p : probe.parts)
-    if (p.kind == GeometryPart::Kind::kSegment && IsJournal(p.name)) c.journals.push_back(p.name);
-  std::sort(c.journals.begin(), c.journals.end());
-  const bool has_webs = !probe.model.rigid_parts().empty();
-  EMB_THROW_IF(o.support == SupportCase::kInstalled && c.journals.empty(),
-               "installed case: the part '" << out.beam_geometry
-                                            << "' has no main journals (beam segments "
-                                               "'main_journal_*') to support; use free-free");
-
   // The solid, not the beam parts: gmsh keeps a parameter set in one session (the beam
   // generator's beam_parts = 1) for the next, so the mesh names its own value.
   MeshingOptions meshing = o.meshing;
@@ -364,6 +370,20 @@ PartComparison RunPartComparison(const ComparisonOptions& o, const ProgressFn& p
   sw.Restart();
   c.sys = AssembleSystem(c.mesh, o.material, progress);
   out.assembly_seconds = sw.seconds();
+  // The beam model after the mesh: gmsh keeps global options set by a .geo for the next
+  // session in the process, and a separate beam geometry's (e.g. the tube's high-order
+  // optimisation) would slow the part's meshing several-fold.
+  const GeneratedBeamModel probe =
+      MakeBeamModelFromGeometry(out.beam_geometry, GenerationOptions(o, WebModel::kRigid));
+  for (const GeometryPart& p : probe.parts)
+    if (p.kind == GeometryPart::Kind::kSegment && IsJournal(p.name)) c.journals.push_back(p.name);
+  std::sort(c.journals.begin(), c.journals.end());
+  const bool has_webs = !probe.model.rigid_parts().empty();
+  EMB_THROW_IF(o.support == SupportCase::kInstalled && c.journals.empty(),
+               "installed case: the part '" << out.beam_geometry
+                                            << "' has no main journals (beam segments "
+                                               "'main_journal_*') to support; use free-free");
+
   out.fe_dofs = c.sys.num_dofs();
   out.fe_mass_kg = c.sys.mass;
   out.geometry_mass_kg = probe.geometry.mass;

@@ -27,7 +27,8 @@
 ///  - beam routes by shape: sampled at stations (station_sampling.h), MAC pairing with
 ///    degenerate groups (mode_pairing.h); a reference mode no beam mode matches (MAC < 0.5)
 ///    is unpaired. Reference modes whose cross-sections deform (ratio ≥ shell_threshold: shell,
-///    ovalling) are "not beam-like" and listed separately: no beam can represent them.
+///    ovalling) are "not beam-like", listed separately and never paired with a beam mode
+///    (their rigid fit is ~0, so a MAC would mean nothing): no beam can represent them.
 ///  - CMS by order: a Craig–Bampton model is a Rayleigh–Ritz approximation of the same 3-D
 ///    model, so by the min–max principle its k-th frequency bounds the k-th from above; the
 ///    order is the right pairing and every error is ≥ 0.
