@@ -34,6 +34,14 @@ def judged(route, mode):
     return route["method"] in ("cms", "fe") or mode[2]
 
 
+def route_color(name, r, routes):
+    """CMS routes in shades of blue by mode count; the others by method."""
+    if r["method"] != "cms":
+        return STYLE[r["method"]][0] if "consistent" not in name else "tab:red"
+    cms = [n for n, x in routes.items() if x["method"] == "cms"]
+    return plt.cm.Blues(0.4 + 0.6 * cms.index(name) / max(1, len(cms) - 1))
+
+
 def plot(path):
     title, routes = read(path)
     base = os.path.splitext(path)[0]
@@ -49,7 +57,7 @@ def plot(path):
             continue
         dashed = "--" if "elastic" in name else "-"
         ax.semilogy([p[0] for p in pts], [max(p[1], 1e-6) for p in pts], dashed, marker=marker,
-                    color=color if "consistent" not in name else "tab:red", label=name, alpha=0.8)
+                    color=route_color(name, r, routes), label=name, alpha=0.8)
     for m in shells or []:
         ax.axvline(m[0], color="grey", lw=0.5, ls=":")
     ax.set_xlabel("3-D mode number (dotted: shell modes no beam represents)")
@@ -65,19 +73,22 @@ def plot(path):
     for name, r in routes.items():
         if r["method"] == "fe":
             ax.axvline(r["seconds"], color="black", ls="--", lw=1)
-            ax.text(r["seconds"], 1e-3, " 3-D FE", rotation=90, va="bottom", fontsize=8)
+            ax.text(r["seconds"], 0.02, " 3-D FE (reference)", rotation=90, va="bottom",
+                    fontsize=8, transform=ax.get_xaxis_transform())
             continue
         errs = [abs(m[3]) for m in r["modes"] if judged(r, m) and not math.isnan(m[3])]
         if not errs:
             continue
         color, marker = STYLE[r["method"]]
-        ax.loglog(r["seconds"], max(max(errs), 1e-6), marker, color=color, ms=8)
-        ax.annotate(name, (r["seconds"], max(max(errs), 1e-6)), fontsize=7,
-                    xytext=(4, 2), textcoords="offset points")
+        face = "none" if "consistent" in name else color
+        ax.loglog(r["seconds"], max(max(errs), 1e-6), marker, color=route_color(name, r, routes),
+                  ms=8, mfc=face if r["method"] != "cms" else route_color(name, r, routes),
+                  label=name, alpha=0.8)
     ax.set_xlabel("wall time of the route [s]")
     ax.set_ylabel("max |frequency error| over the modes compared [%]")
     ax.set_title(f"Error vs wall time: {title}")
     ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(base + "_error_vs_time.png", dpi=110)
     plt.close(fig)

@@ -10,6 +10,7 @@
 #include "libemb/mbs/bushing.h"
 #include "libemb/mbs/rotation.h"
 #include "libemb/mbs/spring_damper.h"
+#include "libemb/scene/beam_part.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
 #include "libemb/scene/yaml_reader.h"
@@ -23,6 +24,14 @@ using Eigen::Vector3d;
 void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sys) {
   EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'bodies': expected a list");
   for (const auto& node : list) {
+    if (IsBeamPart(node)) {  // model: beam (beam_part.h)
+      try {
+        AddBeamPart(ReadBeamPart(node, file), sys);
+      } catch (const InputError& e) {
+        EMB_THROW(InputError, Where(file, node) << ": " << e.what());
+      }
+      continue;
+    }
     MapReader r(node, file, "body");
     mbs::RigidBody b;
     b.name = r.GetString("name");
