@@ -24,6 +24,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Headroom of the automatic TMM band over the highest reference frequency, so a beam mode
 // a little above it (beams are stiffer) is still found.
 constexpr double kTmmBandFactor = 1.25;
+// Beam modes offered to the MAC pairing per reference mode (a stiff beam's modes come in a
+// different order, and rigid-web crankshafts are ~2× too stiff).
+constexpr int kBeamCandidatesPerMode = 4;
 
 bool IsJournal(const std::string& name) { return name.rfind("main_journal_", 0) == 0; }
 
@@ -244,7 +247,11 @@ void RunBeams(Context& c, WebModel webs, bool has_webs) {
   for (BeamMassType mass : {BeamMassType::kLumped, BeamMassType::kConsistent}) {
     sw.Restart();
     const BeamSystem sys = AssembleBeamSystem(g.model, mass);
-    const BeamModes modes = CalcBeamModes(sys);
+    // Enough candidates for the pairing, not the whole spectrum: a stiff, nearly massless
+    // elastic web arm puts its top where eigenpairs cannot pass the round-off checks.
+    BeamModalOptions mo;
+    mo.num_modes = kBeamCandidatesPerMode * nref + 6;
+    const BeamModes modes = CalcBeamModes(sys, mo);
     const double t_solve = sw.seconds();
     if (!modes.ok())
       EMB_THROW(NumericalError, "beam modes (" << Name(mass) << suffix << "): " << modes.message);
