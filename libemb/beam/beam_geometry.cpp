@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "libemb/beam/beam_modal.h"
 #include "libemb/common/error.h"
 #include "libemb/mesh/gmsh_reader.h"
 #include "libemb/mesh/gmsh_session.h"
@@ -17,6 +18,7 @@ namespace {
 
 constexpr const char* kSegmentPrefix = "beam_segment_";
 constexpr const char* kRigidPrefix = "beam_rigid_";
+constexpr int kRigidBodyModes = 6;  // of a free-free model
 
 // Volume, centre and inertia about the centre of a set of OpenCASCADE volumes (density 1),
 // and their bounding box.
@@ -120,7 +122,41 @@ void FitSegment(const Integrals& g, const std::string& path, GeometryPart& part,
   part.x_max = g.center.x() + 0.5 * L;
 }
 
+// Width b of an elastic web arm: the option, else web_r_main + web_r_pin of the .geo (the
+// overrides first, then the declared defaults).
+double WebArmWidth(const BeamGenerationOptions& o, const std::string& path,
+                   const std::vector<std::pair<std::string, double>>& declared) {
+  if (o.web_width > 0.0) return o.web_width;
+  EMB_THROW_IF(o.web_width < 0.0 || !std::isfinite(o.web_width),
+               "beam generation: web width: expected > 0 m (or 0 for the geometry's), got "
+                   << o.web_width);
+  auto value = [&](const std::string& name) {
+    for (const auto& p : o.parameters)
+      if (p.first == name) return p.second;
+    for (const auto& p : declared)
+      if (p.first == name) return p.second;
+    EMB_THROW(InputError, "geometry '" << path << "': elastic webs need the web width: the file "
+                                          "declares no parameter '"
+                                       << name << "'; give the width (web_width) explicitly");
+  };
+  return value("web_r_main") + value("web_r_pin");
+}
+
+// The section of an elastic web arm: a t × b rectangle, t along y_B (= x_W), b along z_B.
+BeamSection WebArmSection(double t, double b, double poisson, const std::string& what) {
+  const double thin = std::min(t, b), wide = std::max(t, b), ratio = thin / wide;
+  const double J = wide * thin * thin * thin * (1.0 / 3.0 - 0.21 * ratio * (1.0 - std::pow(ratio, 4) / 12.0));
+  const double kappa = 10.0 * (1.0 + poisson) / (12.0 + 11.0 * poisson);
+  try {
+    return MakeGeneralSection(t * b, b * b * b * t / 12.0, t * t * t * b / 12.0, J, kappa);
+  } catch (const InputError& e) {
+    EMB_THROW(InputError, what << ": web arm section " << t << " m x " << b << " m: " << e.what());
+  }
+}
+
 }  // namespace
+
+const char* Name(WebModel webs) { return webs == WebModel::kRigid ? "rigid" : "elastic"; }
 
 GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
                                              const BeamGenerationOptions& o) {
@@ -149,7 +185,9 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
                                        "declare them");
   const std::vector<std::string> args = GeoParameterArgs(path, overrides);
 
-  GeneratedBeamModel out{BeamModel(fs::path(path).stem().string(), o.stiffness_damping), {}, {},
+  EMB_THROW_IF(!(std::isfinite(o.damping_ratio) && o.damping_ratio >= 0.0),
+               "beam generation: damping ratio: expected >= 0, got " << o.damping_ratio);
+  GeneratedBeamModel out{BeamModel(fs::path(path).stem().string(), std::max(0.0, o.stiffness_damping)), {}, {},
                          path};
   std::vector<Integrals> integrals;
   {
@@ -240,6 +278,31 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
     }
     return part_node[i];
   };
+  // The node a segment ends on at rigid part i: the part's node, or with elastic webs and a
+  // segment off the part's axis the pin node at the end of a web arm (header comment).
+  auto attach_node = [&](size_t i, const GeometryPart& seg) {
+    const int node = rigid_node(i);
+    const Eigen::Vector3d& p_N = model.nodes()[node].p_W;
+    const double radial = (seg.axis_point_W.tail<2>() - p_N.tail<2>()).norm();
+    if (o.webs == WebModel::kRigid || radial <= tol) return node;
+    GeometryPart& web = parts[i];
+    if (web.pin_node >= 0) return web.pin_node;
+    const Eigen::Vector3d p_pin(p_N.x(), seg.axis_point_W.y(), seg.axis_point_W.z());
+    web.pin_node = model.AddNode(web.name + ":pin", p_pin);
+    const std::string what = "geometry '" + path + "': web '" + web.name + "'";
+    BeamElement arm;
+    arm.name = web.name + "#web";
+    arm.node_a = node;
+    arm.node_b = web.pin_node;
+    arm.section = WebArmSection(web.x_max - web.x_min, WebArmWidth(o, path, declared),
+                                o.material.poisson_ratio, what);
+    arm.material = o.material;
+    arm.material.density *= kWebArmDensityFraction;
+    arm.shear_deformable = o.shear_deformable;
+    arm.reference_W = Eigen::Vector3d::UnitX();
+    model.AddElement(arm);
+    return web.pin_node;
+  };
   int shared = -1;  // end node of the previous segment, shared by a coaxial successor
   for (size_t i = 0; i < parts.size(); ++i) {
     GeometryPart& p = parts[i];
@@ -263,7 +326,7 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
     int n0;
     Eigen::Vector3d off0 = Eigen::Vector3d::Zero(), off1 = Eigen::Vector3d::Zero();
     if (after_rigid) {
-      n0 = rigid_node(i - 1);
+      n0 = attach_node(i - 1, p);
       off0 = p0 - model.nodes()[n0].p_W;
     } else if (shared >= 0) {
       n0 = shared;
@@ -279,7 +342,7 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
       nodes.push_back(model.AddNode(name, p0 + (p1 - p0) * (static_cast<double>(k) / n_el)));
     }
     if (before_rigid) {
-      nodes.push_back(rigid_node(i + 1));
+      nodes.push_back(attach_node(i + 1, p));
       off1 = p1 - model.nodes()[nodes.back()].p_W;
       shared = -1;
     } else {
@@ -298,6 +361,23 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
       if (k + 1 == n_el) e.offset_b_W = off1;
       p.elements.push_back(model.AddElement(e));
     }
+  }
+
+  if (o.stiffness_damping < 0.0) {
+    // ζ at the first elastic free-free mode (header): one dense solve of a small model.
+    // The lowest few only: a stiff, nearly massless web arm puts the top of the spectrum
+    // where its eigenpairs cannot pass the round-off checks, and f₁ is all that is needed.
+    BeamModalOptions mo;
+    mo.num_modes = kRigidBodyModes + 1;
+    const BeamModes modes = CalcBeamModes(AssembleBeamSystem(model, BeamMassType::kConsistent), mo);
+    EMB_THROW_IF(!modes.ok(), "geometry '" << path << "': the beam model's modes (for its "
+                                              "damping) failed: "
+                                           << modes.message);
+    const int first = modes.num_rigid_modes;
+    EMB_THROW_IF(first >= modes.frequencies_hz.size(),
+                 "geometry '" << path << "': the beam model has no elastic mode to set its "
+                                         "damping at; give stiffness_damping");
+    model.SetStiffnessDamping(StiffnessDampingForRatio(o.damping_ratio, modes.frequencies_hz[first]));
   }
 
   // Mass properties of the exact geometry: all parts together.

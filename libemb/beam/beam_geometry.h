@@ -29,6 +29,19 @@
 /// through a rigid end offset (node → segment end), so a crankpin off the axis hangs on the
 /// webs' nodes. Two touching rigid parts, a gap, an overlap or non-coaxial touching segments
 /// are InputErrors naming both parts.
+///
+/// Webs (BeamGenerationOptions::webs). kRigid (the seed's dummy parts): a segment off the
+/// rigid part's axis (a crankpin) hangs on the part's node through a rigid offset, so the web
+/// arm between the crank axis and the pin axis is infinitely stiff — the beam crankshaft is
+/// then ~2.7× too stiff in its first free-free mode. kElastic: the web arm becomes a beam
+/// element "<web>#web" from the part's node (on the crank axis) radially to a node "<web>:pin"
+/// on the pin axis in the same plane x = const, with a rectangular section of thickness t
+/// (the part's extent along x) by width b (web_width, or from the .geo parameters
+/// b = web_r_main + web_r_pin, the mean of the web's two end widths), Cowper's
+/// κ = 10(1+ν)/(12+11ν) and Roark's torsion constant J = b t³ (1/3 − 0.21 (t/b)(1 − (t/b)⁴/12))
+/// (b ≥ t). The arm is (nearly) massless — density kWebArmDensityFraction·ρ — because the
+/// web's mass and inertia stay in its rigid part; the pin segment ends on the pin node through
+/// an axial offset. Segments on the part's axis (journals, necks) keep their rigid offsets.
 
 #include <string>
 #include <utility>
@@ -39,6 +52,18 @@
 
 namespace emb {
 
+/// How the web of a crankshaft (a rigid part between a journal and a crankpin) is modelled.
+enum class WebModel {
+  kRigid,    ///< rigid offsets from the web's node to the crankpin (the seed's dummy parts)
+  kElastic,  ///< a rectangular beam arm from the crank axis to the pin axis (file comment)
+};
+/// "rigid" or "elastic".
+const char* Name(WebModel webs);
+
+/// The elastic web arm carries this fraction of the material's density: its mass is already
+/// in the web's rigid part (a fraction, not zero, keeps the element's mass matrices defined).
+inline constexpr double kWebArmDensityFraction = 1e-6;
+
 struct BeamGenerationOptions {
   /// .geo parameter overrides (DefineConstant names), e.g. {"stroke", 0.09}.
   std::vector<std::pair<std::string, double>> parameters;
@@ -46,8 +71,18 @@ struct BeamGenerationOptions {
   double max_element_length{0.02};    ///< [m], > 0
   int min_elements_per_segment{2};    ///< ≥ 1; rounded up to even (a node at mid-length)
   bool shear_deformable{true};        ///< Timoshenko segments
-  double stiffness_damping{0.01};     ///< β [s] of the model (beam_model.h)
+  /// β [s] of the model (beam_model.h); negative (the default) = derived: the ratio
+  /// `damping_ratio` at the generated model's first elastic free-free frequency f₁,
+  /// β = 2ζ/(2πf₁) (StiffnessDampingForRatio). Mode i then has ζ_i = ζ f_i/f₁: 1 % at the
+  /// first mode, like the CMS bodies' default modal ratio, and more above — never the
+  /// seed's literal β = 0.01 s, which makes every mode above 31.8 Hz overdamped.
+  double stiffness_damping{-1.0};
+  double damping_ratio{0.01};         ///< ζ at f₁ when β is derived, ≥ 0
   double contact_tolerance{1e-5};     ///< parts closer than this along x touch [m]
+  WebModel webs{WebModel::kRigid};    ///< see the file comment
+  /// Elastic webs: width b of the web arm's section [m]; 0 = web_r_main + web_r_pin of the
+  /// .geo (an InputError if it declares neither).
+  double web_width{0.0};
 };
 
 /// One named part of the geometry and what became of it.
@@ -64,6 +99,7 @@ struct GeometryPart {
   std::vector<int> elements;       ///< indices into the model's elements
   // Rigid parts only:
   int node{-1};                    ///< the part's node
+  int pin_node{-1};                ///< elastic webs: the node on the pin axis, else −1
 };
 
 struct GeneratedBeamModel {

@@ -23,6 +23,13 @@ BeamModel::BeamModel(std::string name, double stiffness_damping)
                               << stiffness_damping);
 }
 
+void BeamModel::SetStiffnessDamping(double stiffness_damping) {
+  EMB_THROW_IF(!(std::isfinite(stiffness_damping) && stiffness_damping >= 0.0),
+               "beam model '" << name_ << "': stiffness damping beta: expected >= 0 s, got "
+                              << stiffness_damping);
+  stiffness_damping_ = stiffness_damping;
+}
+
 void BeamModel::CheckNode(int node, const std::string& what) const {
   EMB_THROW_IF(node < 0 || node >= num_nodes(),
                what << ": node index: expected 0.." << num_nodes() - 1 << ", got " << node);

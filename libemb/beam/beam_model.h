@@ -20,6 +20,8 @@
 /// the seed's "1 %" read literally (as ADAMS's BEAM CRATIO) is β = 0.01 s, which gives mode i
 /// the damping ratio ζ_i = β ω_i / 2 — critical at 31.8 Hz, so every engine-order mode above
 /// that is overdamped. Use StiffnessDampingForRatio() for a ratio at a frequency instead.
+/// Defaults: a hand-built BeamModel is undamped (β = 0); a model generated from geometry
+/// gets ζ = 1 % at its first elastic frequency (BeamGenerationOptions).
 
 #include <Eigen/Core>
 #include <array>
@@ -74,7 +76,9 @@ struct Support {
 class BeamModel {
  public:
   /// @param stiffness_damping β [s] of D = β K (≥ 0), see the file comment.
-  explicit BeamModel(std::string name = "beam", double stiffness_damping = 0.01);
+  explicit BeamModel(std::string name = "beam", double stiffness_damping = 0.0);
+  /// Replaces β (e.g. once the model's first frequency is known). @throws InputError if < 0.
+  void SetStiffnessDamping(double stiffness_damping);
 
   /// @throws InputError for an empty or repeated name or a non-finite position.
   int AddNode(const std::string& name, const Eigen::Vector3d& p_W);

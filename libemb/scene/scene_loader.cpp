@@ -11,6 +11,7 @@
 #include "libemb/mbs/bushing.h"
 #include "libemb/mbs/rotation.h"
 #include "libemb/mbs/spring_damper.h"
+#include "libemb/scene/beam_part.h"
 #include "libemb/scene/body_file_part.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
@@ -48,6 +49,14 @@ void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sy
                 BodyFileParts* parts, std::vector<std::string>* notes) {
   EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'bodies': expected a list");
   for (const auto& node : list) {
+    if (IsBeamPart(node)) {  // model: beam (beam_part.h)
+      try {
+        AddBeamPart(ReadBeamPart(node, file), sys);
+      } catch (const InputError& e) {
+        EMB_THROW(InputError, Where(file, node) << ": " << e.what());
+      }
+      continue;
+    }
     MapReader r(node, file, "body");
     mbs::RigidBody b;
     b.name = r.GetString("name");

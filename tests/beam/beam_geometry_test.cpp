@@ -225,5 +225,64 @@ TEST(BeamGeometry, BadGeometryIsNamed) {
   EXPECT_NE(m.find("beam_parts = 1 is for the beam generator"), std::string::npos) << m;
 }
 
+// The default damping of a generated model: ζ = 1 % at its first elastic free-free mode
+// (β = 2ζ/ω₁), not the seed's literal β = 0.01 s; an explicit β is kept.
+TEST(BeamGeometry, DefaultDampingIsOnePercentAtTheFirstMode) {
+  const GeneratedBeamModel g = MakeBeamModelFromGeometry(kCrank);
+  const BeamModes m = CalcBeamModes(AssembleBeamSystem(g.model, BeamMassType::kConsistent));
+  ASSERT_TRUE(m.ok()) << m.message;
+  const double w1 = 2 * M_PI * m.frequencies_hz[m.num_rigid_modes];
+  EXPECT_NEAR(g.model.stiffness_damping() * w1 / 2, 0.01, kRoundOff);
+  BeamGenerationOptions o;
+  o.stiffness_damping = 2e-5;
+  EXPECT_EQ(MakeBeamModelFromGeometry(kCrank, o).model.stiffness_damping(), 2e-5);
+}
+
+// Elastic webs: one arm per web from the crank axis to the pin axis, radial, with the
+// web's thickness; the mass unchanged (the arm is nearly massless: its mass stays in the
+// web's rigid part); softer than rigid webs; TMM still the lumped FE.
+TEST(BeamGeometry, ElasticWebsAreRadialArms) {
+  BeamGenerationOptions rigid_o, elastic_o;
+  elastic_o.webs = WebModel::kElastic;
+  const GeneratedBeamModel rigid = MakeBeamModelFromGeometry(kCrank, rigid_o);
+  const GeneratedBeamModel elastic = MakeBeamModelFromGeometry(kCrank, elastic_o);
+  constexpr int kWebs = 8;
+  EXPECT_EQ(elastic.model.num_nodes(), rigid.model.num_nodes() + kWebs);
+  EXPECT_EQ(elastic.model.num_elements(), rigid.model.num_elements() + kWebs);
+  const int arm = [&] {
+    for (int e = 0; e < elastic.model.num_elements(); ++e)
+      if (elastic.model.elements()[e].name == "web_1_front#web") return e;
+    return -1;
+  }();
+  ASSERT_GE(arm, 0);
+  const auto [pa, pb] = elastic.model.ElasticEnds(arm);
+  constexpr double kCrankRadius = 0.043;  // stroke / 2 of the default geometry [m]
+  EXPECT_NEAR((pb - pa).norm(), kCrankRadius, kRoundOff);
+  EXPECT_NEAR(pb.x() - pa.x(), 0.0, kRoundOff);  // radial: in the plane x = const
+  constexpr double kWebThickness = 0.018, kWebWidth = 0.035 + 0.030;  // web_t, r_main + r_pin
+  const BeamSection& s = elastic.model.elements()[arm].section;
+  // t comes from the web's OpenCASCADE bounding box, padded by its tolerance (~1e-7 m).
+  constexpr double kBoxPadding = 1e-4;
+  EXPECT_NEAR(s.area, kWebThickness * kWebWidth, kBoxPadding * kWebThickness * kWebWidth);
+  // The arm's mass: kWebArmDensityFraction of a real one, a relative 1e-6 of the total at most.
+  const double m_rigid = CalcBeamModelMassProperties(rigid.model).mass;
+  const double m_elastic = CalcBeamModelMassProperties(elastic.model).mass;
+  EXPECT_NEAR(m_elastic, m_rigid, 1e-6 * m_rigid);
+  const BeamModes fr = CalcBeamModes(AssembleBeamSystem(rigid.model, BeamMassType::kLumped));
+  const BeamModes fe = CalcBeamModes(AssembleBeamSystem(elastic.model, BeamMassType::kLumped));
+  ASSERT_TRUE(fr.ok() && fe.ok());
+  constexpr int kFirstElastic = 6;
+  EXPECT_LT(fe.frequencies_hz[kFirstElastic], fr.frequencies_hz[kFirstElastic]);
+  TmmOptions o;
+  o.max_hz = 1.2 * fe.frequencies_hz[kFirstElastic + 3];
+  const TmmResult t = CalcTmmModes(elastic.model, o);
+  ASSERT_TRUE(t.ok()) << t.message;
+  for (const TmmMode& m : t.modes)
+    EXPECT_NEAR(m.frequency_hz, fe.frequencies_hz[m.index - 1], 1e-9 * m.frequency_hz);
+  BeamGenerationOptions bad = elastic_o;
+  bad.web_width = -0.01;
+  EXPECT_THROW(MakeBeamModelFromGeometry(kCrank, bad), InputError);
+}
+
 }  // namespace
 }  // namespace emb

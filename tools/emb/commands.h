@@ -23,5 +23,7 @@ void RegisterDofCommand(CLI::App& app);
 void RegisterRunCommand(CLI::App& app);
 /// `emb spectrum RESULTS --channel NAME` (engine-order spectrum of a results channel).
 void RegisterSpectrumCommand(CLI::App& app);
+/// `emb compare PART` (beam vs CMS vs 3-D FE, issue 6).
+void RegisterCompareCommand(CLI::App& app);
 
 }  // namespace emb::cli

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   RegisterDofCommand(app);
   RegisterRunCommand(app);
   RegisterSpectrumCommand(app);
+  RegisterCompareCommand(app);
   // Name an unknown subcommand (CLI11 would only say that one is required).
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
