@@ -50,7 +50,7 @@ TEST(BeamPart, CrankshaftIsTheLumpedBeamModel) {
   const auto bodies = mbs::CalcBodyKinematics(sys, q, v);
   mbs::DenseForceJacobian jac(sys.layout());
   for (const auto& f : sys.force_elements()) f->AddForceJacobian({&sys, &bodies, 0.0}, &jac);
-  const Eigen::MatrixXd K = -jac.stiffness(), M = mbs::CalcMassMatrix(sys);
+  const Eigen::MatrixXd K = -jac.stiffness(), M = mbs::CalcMassMatrix(sys, bodies);
   // Total mass: the translational block of every body.
   double mass = 0.0;
   for (int b = 1; b <= static_cast<int>(info.bodies.size()); ++b)
