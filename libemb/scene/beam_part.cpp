@@ -80,6 +80,8 @@ BeamPartInfo AddBeamPart(const BeamPartSpec& spec, mbs::System* sys) {
     b.inertia_B = R * (0.5 * (I_c + I_c.transpose())) * R.transpose();
     b.p_WB = to_world(com[i]);
     b.R_WB = Matrix3d::Identity();
+    b.omega_W = spec.angular_velocity;
+    b.v_WB = spec.angular_velocity.cross(b.p_WB - spec.position);
     sys->AddBody(b);
     info.bodies.push_back(body);
   }
@@ -154,6 +156,12 @@ BeamPartSpec ReadBeamPart(const YAML::Node& node, const std::string& file) {
   s.position = r.GetVector3("position", Vector3d::Zero());
   if (const YAML::Node o = r.Optional("orientation"))
     s.orientation = ReadOrientation(o, file, what + " orientation");
+  s.angular_velocity = r.GetVector3("angular_velocity", Vector3d::Zero());
+  // The keys of `model: rigid|cms` parts from a body file may stay in the entry, so that a
+  // scene switches models with the one word `model:` (they are not used here).
+  for (const char* key : {"body_file", "modes", "fmax_hz", "geometric_stiffening",
+                          "expect_mesh_hash", "modal_coordinates"})
+    r.Optional(key);
   r.Finish();
   return s;
 }

@@ -16,6 +16,7 @@
 ///       material: {E: 2.1e11, nu: 0.3, rho: 7850}   # optional (steel)
 ///       position: [0, 0, 0]                     # optional pose of the part frame
 ///       orientation: {euler313_deg: [0, 0, 0]}  # optional
+///       angular_velocity: [314.16, 0, 0]        # optional, of the whole part [rad/s]
 ///
 /// Expansion of the generated beam model (beam_geometry.h), in the part frame P placed at
 /// (position, orientation):
@@ -48,6 +49,9 @@ struct BeamPartSpec {
   BeamGenerationOptions generation;
   Eigen::Vector3d position{Eigen::Vector3d::Zero()};      ///< p_WP [m]
   Eigen::Matrix3d orientation{Eigen::Matrix3d::Identity()};  ///< R_WP
+  /// Initial angular velocity of the whole part about the part origin, in W [rad/s] (every
+  /// node body gets omega and v = omega x (p - p_WP)).
+  Eigen::Vector3d angular_velocity{Eigen::Vector3d::Zero()};
 };
 
 /// What AddBeamPart added.

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -84,6 +85,10 @@ void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sy
                                          << "remove it");
         const std::string path = ScenePath(file, rb.GetString("body_file"));
         const BodyFileOptions options = ReadBodyFileOptions(rb, model == "cms");
+        // The keys of `model: beam` (beam_part.h) may stay in the entry: one-word switch.
+        for (const char* key : {"geometry", "parameters", "webs", "web_width", "element_length",
+                                "stiffness_damping", "material"})
+          rb.Optional(key);
         std::vector<double> eta0;
         if (rb.Has("modal_coordinates")) eta0 = rb.GetDoubles("modal_coordinates");
         else rb.Optional("modal_coordinates");
@@ -137,6 +142,17 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
       R = ReadOrientation(o, file, "marker '" + name + "' orientation");
     r.Finish();
     try {
+      // A beam part (beam_part.h) is no single body: an interface marker goes on the node
+      // body of the part's "<part>.<interface>" marker, with the orientation in part axes.
+      const std::string beam_marker = body + "." + interface;
+      if (!interface.empty() && parts.find(body) == parts.end() &&
+          std::any_of(sys->markers().begin(), sys->markers().end(),
+                      [&](const mbs::Marker& m) { return m.name == beam_marker; })) {
+        const mbs::Marker& m = sys->marker(sys->FindMarker(beam_marker));
+        const mbs::Marker copy = m;
+        sys->AddMarker(name, sys->body(copy.body).name, copy.p_BM, copy.R_BM * R);
+        continue;
+      }
       const int b = sys->FindBody(body);
       const mbs::RigidBody& rb = sys->body(b);
       const auto part = parts.find(body);
