@@ -30,18 +30,13 @@ namespace {
 std::string ReleaseFreeInterfaces(const ReducedBody& body, ReductionBasis& basis,
                                   const Eigen::MatrixXd& loads,
                                   const std::vector<std::string>& supports) {
-  EMB_THROW_IF(basis.free_free, "stiffening supports: expected interfaces, but the body is "
-                                "free-free (its load cases use inertia relief)");
-  for (const std::string& name : supports)
-    EMB_THROW_IF(std::none_of(body.interfaces.begin(), body.interfaces.end(),
-                              [&](const Interface& i) { return i.name == name; }),
-                 "stiffening supports: '" << name << "' is not an interface of the body");
   std::vector<int> free;
   std::string held, released;
   for (std::size_t j = 0; j < body.interfaces.size(); ++j) {
     const std::string& name = body.interfaces[j].name;
     const bool is_held = std::find(supports.begin(), supports.end(), name) != supports.end();
-    (is_held ? held : released) += (is_held ? held : released).empty() ? name : ", " + name;
+    std::string& list = is_held ? held : released;
+    list += (list.empty() ? "" : ", ") + name;
     if (!is_held)
       for (int c = 0; c < 6; ++c) free.push_back(6 * static_cast<int>(j) + c);
   }
@@ -55,7 +50,8 @@ std::string ReleaseFreeInterfaces(const ReducedBody& body, ReductionBasis& basis
     const Eigen::MatrixXd q = Kff.ldlt().solve(Tf.transpose() * loads);
     basis.static_responses += Tf * q;
   }
-  return std::string(kSupportInterfacesHeld) + " (" + held + (released.empty() ? "" : "; free: " + released) + ")";
+  return std::string(kSupportInterfacesHeld) + " (" + held +
+         (released.empty() ? "" : "; free: " + released) + ")";
 }
 
 }  // namespace
@@ -73,6 +69,13 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   body.num_fe_dofs = sys.num_dofs();
   Stopwatch sw;
   const std::vector<Interface> interfaces = ResolveInterfaces(mesh, job.interfaces);
+  EMB_THROW_IF(!job.stiffening_supports.empty() && interfaces.empty(),
+               "stiffening supports: expected interfaces, but the body is free-free (its load "
+               "cases use inertia relief)");
+  for (const std::string& name : job.stiffening_supports)
+    EMB_THROW_IF(std::none_of(interfaces.begin(), interfaces.end(),
+                              [&](const Interface& i) { return i.name == name; }),
+                 "stiffening supports: '" << name << "' is not an interface of the body");
   body.times.Add("interfaces", sw.seconds());
 
   // The nine inertial load cases about the undeformed centre of mass (geometric_stiffening.h).
