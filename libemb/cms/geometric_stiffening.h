@@ -17,7 +17,8 @@
 /// the shape functions reproduce linear fields).
 ///
 /// For each case the linear static displacement u_p is solved with every interface held (the
-/// Craig–Bampton boundary coordinates zero: RBE2 reference nodes fixed, RBE3 averages zero), or,
+/// Craig–Bampton boundary coordinates zero: RBE2 reference nodes fixed, RBE3 averages zero;
+/// with ReductionJob::stiffening_supports only those, the others free), or,
 /// for a part without interfaces, by inertia relief (the load less its rigid-body inertia
 /// forces, F − M R (RᵀMR)⁻¹ Rᵀ F, on the part pinned 3-2-1, then the rigid motion removed
 /// M-orthogonally). Its stress σ_p gives K_σ(σ_p) (fe/geometric_stiffness.h), reduced into the
@@ -51,7 +52,7 @@ struct GeometricStiffness {
   std::array<Eigen::MatrixXd, 6> centrifugal;   ///< K_G,0…5 (ne × ne), per c_p [-]
   std::array<Eigen::MatrixXd, 3> translational; ///< K_G,6…8 (ne × ne), per a_k [1/m]
   Eigen::Vector3d reference_point{Eigen::Vector3d::Zero()};  ///< c̄, the origin of B [m]
-  std::string support;  ///< kSupportInterfacesHeld or kSupportInertiaRelief
+  std::string support;  ///< kSupportInterfacesHeld [+ " (held; free: others)"] or kSupportInertiaRelief
 
   /// Σ_p c_p(ω) K_G,p + Σ_k a_k K_G,6+k for ω [rad/s] and a [m/s²] in B.
   /// @throws InputError if not present.

@@ -1,6 +1,9 @@
 #include "libemb/cms/reduction.h"
 
+#include <algorithm>
 #include <sstream>
+
+#include <Eigen/Dense>
 
 #include "libemb/common/error.h"
 #include "libemb/fe/mass_properties.h"
@@ -17,6 +20,42 @@ std::string DampingModel::Describe() const {
   return o.str();
 }
 
+namespace {
+
+// Frees the interfaces not in `supports` in the static inertial load cases (held so far):
+// with the held ones at zero, the free boundary coordinates q_F of the exact static response
+// solve K̂_FF q_F = Ψ_Fᵀ F (Craig–Bampton static condensation is exact: the interface-held
+// response is K-orthogonal to the constraint modes), added as Ψ_F q_F. Returns the support
+// description for the body file.
+std::string ReleaseFreeInterfaces(const ReducedBody& body, ReductionBasis& basis,
+                                  const Eigen::MatrixXd& loads,
+                                  const std::vector<std::string>& supports) {
+  std::vector<int> free;
+  std::string held, released;
+  for (std::size_t j = 0; j < body.interfaces.size(); ++j) {
+    const std::string& name = body.interfaces[j].name;
+    const bool is_held = std::find(supports.begin(), supports.end(), name) != supports.end();
+    std::string& list = is_held ? held : released;
+    list += (list.empty() ? "" : ", ") + name;
+    if (!is_held)
+      for (int c = 0; c < 6; ++c) free.push_back(6 * static_cast<int>(j) + c);
+  }
+  if (!free.empty()) {
+    const int nf = static_cast<int>(free.size());
+    Eigen::MatrixXd Tf(basis.T.rows(), nf), Kff(nf, nf);
+    for (int a = 0; a < nf; ++a) {
+      Tf.col(a) = basis.T.col(free[a]);
+      for (int b = 0; b < nf; ++b) Kff(a, b) = body.K(free[a], free[b]);
+    }
+    const Eigen::MatrixXd q = Kff.ldlt().solve(Tf.transpose() * loads);
+    basis.static_responses += Tf * q;
+  }
+  return std::string(kSupportInterfacesHeld) + " (" + held +
+         (released.empty() ? "" : "; free: " + released) + ")";
+}
+
+}  // namespace
+
 ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
                        const IsotropicMaterial& material, const ReductionJob& job,
                        const ProgressFn& progress) {
@@ -30,6 +69,13 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   body.num_fe_dofs = sys.num_dofs();
   Stopwatch sw;
   const std::vector<Interface> interfaces = ResolveInterfaces(mesh, job.interfaces);
+  EMB_THROW_IF(!job.stiffening_supports.empty() && interfaces.empty(),
+               "stiffening supports: expected interfaces, but the body is free-free (its load "
+               "cases use inertia relief)");
+  for (const std::string& name : job.stiffening_supports)
+    EMB_THROW_IF(std::none_of(interfaces.begin(), interfaces.end(),
+                              [&](const Interface& i) { return i.name == name; }),
+                 "stiffening supports: '" << name << "' is not an interface of the body");
   body.times.Add("interfaces", sw.seconds());
 
   // The nine inertial load cases about the undeformed centre of mass (geometric_stiffening.h).
@@ -106,10 +152,13 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   if (job.geometric_stiffness) {
     sw.Restart();
     if (progress) progress("geometric stiffness", 0.0);
+    std::string support = basis.static_support;
+    if (!job.stiffening_supports.empty())
+      support = ReleaseFreeInterfaces(body, basis, inertial_loads, job.stiffening_supports);
     body.geometric_stiffness =
         ReduceGeometricStiffness(mesh, material, sys.K, basis.static_responses, Phi);
     body.geometric_stiffness.reference_point = centre;
-    body.geometric_stiffness.support = basis.static_support;
+    body.geometric_stiffness.support = support;
     body.times.Add("geometric stiffness", load_seconds + sw.seconds());
   }
   if (job.keep_mesh_shapes) body.mesh_shapes = std::move(Phi);

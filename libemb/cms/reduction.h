@@ -45,6 +45,12 @@ struct ReductionJob {
   /// (geometric_stiffening.h); costs nine static solves on the existing factorisation plus
   /// nine stress recoveries and geometric-stiffness assemblies.
   bool geometric_stiffness{true};
+  /// Names of the interfaces held in those load cases, i.e. clamped in service (e.g. the
+  /// root of a blade); the others are free (their boundary coordinates take the static
+  /// response, K̂_FF q_F = Ψ_Fᵀ F). Empty: every interface held. An interface that only
+  /// carries a sensor or a light attachment must be left out, or its stress (e.g. a free
+  /// blade tip held axially: compression instead of centrifugal tension) is wrong.
+  std::vector<std::string> stiffening_supports;
 };
 
 /// A reduced flexible body: everything a multibody run (and Python) needs.

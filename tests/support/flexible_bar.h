@@ -20,6 +20,7 @@ struct BarSpec {
   int nx{12}, ny{1}, nz{1};
   std::vector<std::string> interfaces{"x0:rbe2"};  ///< empty: free-free
   int modes{8};
+  std::vector<std::string> stiffening_supports;  ///< held in the K_G load cases; empty: all
   double youngs_modulus{210e9};
   double damping_ratio{0.0};
 
@@ -28,6 +29,7 @@ struct BarSpec {
     k << length << "_" << width << "_" << height << "_" << nx << ny << nz << "_" << modes << "_"
       << youngs_modulus << "_" << damping_ratio;
     for (const auto& i : interfaces) k << "_" << i;
+    for (const auto& i : stiffening_supports) k << "_held-" << i;
     std::string s = k.str();
     for (char& c : s)
       if (c == ':' || c == '@' || c == ',') c = '-';
@@ -51,6 +53,7 @@ inline std::string FlexibleBarFile(const BarSpec& spec) {
   job.certificate.reference = false;
   job.damping.ratio = spec.damping_ratio;
   job.keep_mesh_shapes = false;
+  job.stiffening_supports = spec.stiffening_supports;
   const ReducedBody body = ReduceBody(mesh, sys, material, job);
   BodyFileInfo info;
   info.provenance = {"test", "box", sys.mesh_hash, "order=2"};

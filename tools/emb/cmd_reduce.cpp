@@ -38,6 +38,7 @@ struct ReduceCommand {
   bool no_static_check{false};
   bool no_mesh_shapes{false};
   bool no_geometric_stiffness{false};
+  std::vector<std::string> stiffening_supports;
   bool no_xdmf{false};
   bool allow_failed_certificate{false};
   std::string output;
@@ -83,6 +84,7 @@ struct ReduceCommand {
     }
     job.keep_mesh_shapes = !no_mesh_shapes;
     job.geometric_stiffness = !no_geometric_stiffness;
+    job.stiffening_supports = stiffening_supports;
     if (free_free) {
       EMB_THROW_IF(!interfaces.empty(), "--free-free and --interface exclude each other");
     } else if (!interfaces.empty()) {
@@ -292,6 +294,11 @@ void RegisterReduceCommand(CLI::App& app) {
                 "Do not compute the stress-stiffening matrices of the nine inertial load cases "
                 "(centrifugal about the centre of mass, uniform acceleration; saves nine static "
                 "solves, stress recoveries and geometric-stiffness assemblies)");
+  cmd->add_option("--stiffening-supports", st->stiffening_supports,
+                  "Interfaces NAME,... held in the geometric-stiffness load cases (those clamped "
+                  "in service, e.g. a blade root); the others are free and take the static "
+                  "response. Default: every interface held")
+      ->delimiter(',');
   cmd->add_flag("--no-xdmf", st->no_xdmf, "Do not write the .xdmf file next to the .h5");
   cmd->add_flag("--allow-failed-certificate", st->allow_failed_certificate,
                 "Write the body file even if the certificate fails (the exit code is still 3)");
