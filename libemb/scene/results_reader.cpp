@@ -14,7 +14,7 @@ namespace {
 
 struct ResultsFile {
   H5File h5;
-  std::vector<std::string> bodies, ports;
+  std::vector<std::string> bodies, ports, sensors, forces;
   std::vector<double> time;
   std::size_t n{0};
 
@@ -28,6 +28,8 @@ struct ResultsFile {
                  "'" << path << "': expected a multibody results file (format emb-mbs-results)");
     bodies = h5.ReadStrings("/model/bodies");
     ports = h5.ReadStrings("/model/reaction_ports");
+    if (h5.Exists("/model/sensors")) sensors = h5.ReadStrings("/model/sensors");
+    if (h5.Exists("/model/force_elements")) forces = h5.ReadStrings("/model/force_elements");
     time = h5.ReadDoubles("/time");
     n = time.size();
   }
@@ -82,15 +84,35 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
     out.values = f.Column("/energy", c);
     return out;
   }
+  // <sensor>.dx .. .rz (the /sensors columns).
+  const std::size_t last = channel.rfind('.');
+  if (last != std::string::npos &&
+      std::find(f.sensors.begin(), f.sensors.end(), channel.substr(0, last)) != f.sensors.end()) {
+    const std::vector<std::string> cols{"dx", "dy", "dz", "rx", "ry", "rz"};
+    const std::size_t k =
+        std::find(f.sensors.begin(), f.sensors.end(), channel.substr(0, last)) - f.sensors.begin();
+    out.values = f.Column("/sensors", 6 * k + FindName(cols, channel.substr(last + 1),
+                                                       "sensor component", channel));
+    return out;
+  }
   EMB_THROW_IF(dot1 == std::string::npos || dot1 == 0,
                "channel '" << channel
-                           << "': expected <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z} or "
+                           << "': expected <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z}, "
+                              "<sensor>.dx|dy|dz|rx|ry|rz or "
                               "energy.{kinetic,gravity,elastic,total,dissipated}");
   const std::string owner = channel.substr(0, dot1);
   const std::string quantity = channel.substr(dot1 + 1, dot2 - dot1 - 1);
   const int comp = Component(channel.substr(dot2 + 1));
   EMB_THROW_IF(comp < 0, "channel '" << channel << "': expected a component x, y or z");
   const auto c = static_cast<std::size_t>(comp);
+  const bool is_force_element =
+      std::find(f.ports.begin(), f.ports.end(), owner) == f.ports.end() &&
+      std::find(f.forces.begin(), f.forces.end(), owner) != f.forces.end();
+  if ((quantity == "F" || quantity == "T") && is_force_element) {  // /forces/load
+    const std::size_t k = std::find(f.forces.begin(), f.forces.end(), owner) - f.forces.begin();
+    out.values = f.Column("/forces/load", 6 * k + c + (quantity == "T" ? 3 : 0));
+    return out;
+  }
   if (quantity == "F" || quantity == "T") {
     const std::size_t port = FindName(f.ports, owner, "element", channel);
     out.values = f.Column(quantity == "F" ? "/reactions/force" : "/reactions/torque", 3 * port + c);
