@@ -7,6 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 emb=${EMB_EXE:-$root/build/tools/emb/emb}
+cd "$root"  # part paths in the reports stay relative to the repository
 what=${1:-all}
 dir="$root/out/bench/compare"
 mkdir -p "$dir"
@@ -14,7 +15,7 @@ csvs=()
 if [[ $what == crank || $what == all ]]; then
   for support in free-free installed; do
     # h = 9.5 mm: ~95k DOF Tet10 (the size of the reduction benchmark's mode study).
-    "$emb" compare "$root/meshes/crankshaft_i4.geo" --size 0.0095 --support "$support" \
+    "$emb" compare meshes/crankshaft_i4.geo --size 0.0095 --support "$support" \
       --modes 12 --cms 5,10,20,40 --webs rigid,elastic -q --report-dir "$dir" \
       > "$dir/crankshaft_i4_${support}.txt"
     csvs+=("$dir/crankshaft_i4_${support}_compare.csv")
@@ -22,7 +23,7 @@ if [[ $what == crank || $what == all ]]; then
 fi
 if [[ $what == tube || $what == all ]]; then
   # Default swept mesh: 32 x 2 x 100 Hex20, ~106k DOF.
-  "$emb" compare "$root/meshes/tube.geo" --modes 20 --cms 5,10,20,40 -q --report-dir "$dir" \
+  "$emb" compare meshes/tube.geo --modes 20 --cms 5,10,20,40 -q --report-dir "$dir" \
     > "$dir/tube_free-free.txt"
   csvs+=("$dir/tube_free-free_compare.csv")
 fi
