@@ -25,7 +25,14 @@ struct KluFactorization::Klu {
   std::vector<SuiteSparse_long> col_start, row_index;
   bool factors_valid{false};
 
-  Klu() { klu_l_defaults(&common); }
+  Klu() {
+    klu_l_defaults(&common);
+    // COLAMD on A's columns, not KLU's default AMD on A + A^T: AMD assumes diagonal pivots, and
+    // the zero diagonal of a saddle-point matrix (the multipliers' rows of the GGL iteration
+    // matrix) forces off-diagonal ones and much more fill (benchmarks/README.md, "KLU
+    // refactorisation policy"). SUNDIALS' SUNLinSol_KLU uses COLAMD too.
+    common.ordering = 1;
+  }
   ~Klu() {
     FreeNumeric();
     if (symbolic) klu_l_free_symbolic(&symbolic, &common);
@@ -112,6 +119,7 @@ KluStatus KluFactorization::FullFactor(const CscView& a) {
                      &k.common))
     return Failed("pivot growth");
   stats_.last_rgrowth = stats_.reference_rgrowth = k.common.rgrowth;
+  stats_.factor_nonzeros = static_cast<long>(k.numeric->lnz + k.numeric->unz + k.numeric->nzoff);
   k.factors_valid = true;
   return KluStatus::kOk;
 }

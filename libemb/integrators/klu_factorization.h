@@ -57,6 +57,7 @@ struct KluStats {
   long refactorizations{0};     ///< refactorisations with the old pivot order, accepted
   long rejected_refactorizations{0};  ///< refactorisations that failed the check above
   long singular{0};                   ///< matrices reported singular (after pivoting)
+  long factor_nonzeros{0};  ///< entries of L + U + off-diagonal blocks, last full factorisation
   double last_rgrowth{0.0};           ///< reciprocal pivot growth of the current factors
   double reference_rgrowth{0.0};      ///< that of the last full factorisation
 };
