@@ -24,6 +24,19 @@ SUNLinearSolver_ID GetId(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
 int Initialize(SUNLinearSolver s) { return ContentOf(s).last_flag = SUNLS_SUCCESS; }
 sunindextype LastFlag(SUNLinearSolver s) { return ContentOf(s).last_flag; }
 
+// The SUNDIALS flag of a KLU outcome; `singular` is the caller's recoverable (> 0) flag.
+int FlagOf(KluStatus status, int singular) {
+  switch (status) {
+    case KluStatus::kOk:
+      return SUNLS_SUCCESS;
+    case KluStatus::kSingular:
+      return singular;
+    case KluStatus::kFailure:
+      break;
+  }
+  return SUNLS_PACKAGE_FAIL_UNREC;
+}
+
 int Setup(SUNLinearSolver s, SUNMatrix a) {
   Content& c = ContentOf(s);
   if (a == nullptr || SUNMatGetID(a) != SUNMATRIX_SPARSE ||
@@ -33,36 +46,20 @@ int Setup(SUNLinearSolver s, SUNMatrix a) {
   const CscView view{SUNSparseMatrix_Columns(a), SUNSparseMatrix_IndexPointers(a),
                      SUNSparseMatrix_IndexValues(a), SUNSparseMatrix_Data(a)};
   try {
-    switch (c.klu.Factor(view)) {
-      case KluStatus::kOk:
-        return c.last_flag = SUNLS_SUCCESS;
-      case KluStatus::kSingular:
-        return c.last_flag = SUNLS_LUFACT_FAIL;
-      case KluStatus::kFailure:
-        return c.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
-    }
+    return c.last_flag = FlagOf(c.klu.Factor(view), SUNLS_LUFACT_FAIL);
   } catch (const std::exception&) {  // a malformed matrix; never across the C boundary
     return c.last_flag = SUNLS_ILL_INPUT;
   }
-  return c.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
 }
 
 int Solve(SUNLinearSolver s, SUNMatrix, N_Vector x, N_Vector b, realtype) {
   Content& c = ContentOf(s);
   N_VScale(1.0, b, x);
   try {
-    switch (c.klu.Solve(N_VGetArrayPointer(x))) {
-      case KluStatus::kOk:
-        return c.last_flag = SUNLS_SUCCESS;
-      case KluStatus::kSingular:
-        return c.last_flag = SUNLS_PACKAGE_FAIL_REC;
-      case KluStatus::kFailure:
-        return c.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
-    }
+    return c.last_flag = FlagOf(c.klu.Solve(N_VGetArrayPointer(x)), SUNLS_PACKAGE_FAIL_REC);
   } catch (const std::exception&) {  // no valid factors
     return c.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
   }
-  return c.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
 }
 
 int Free(SUNLinearSolver s) {
