@@ -119,6 +119,7 @@ KluStatus KluFactorization::FullFactor(const CscView& a) {
                      &k.common))
     return Failed("pivot growth");
   stats_.last_rgrowth = stats_.reference_rgrowth = k.common.rgrowth;
+  stats_.reference_rcond = k.common.rcond;
   stats_.factor_nonzeros = static_cast<long>(k.numeric->lnz + k.numeric->unz + k.numeric->nzoff);
   k.factors_valid = true;
   return KluStatus::kOk;
@@ -135,9 +136,12 @@ bool KluFactorization::AcceptRefactor(const CscView& a) {
                      &k.common) ||
       !klu_l_rcond(k.symbolic, k.numeric, &k.common))
     return false;
-  // Written so that NaN rejects.
+  // Written so that NaN rejects. A pivot at round-off level is accepted only if pivoting did
+  // no better last time (otherwise every refactorisation of such a matrix would be redone).
+  const double rcond_floor =
+      std::min(std::numeric_limits<double>::epsilon(), stats_.reference_rcond);
   const bool stable = k.common.rgrowth >= kMinGrowthRatio * stats_.reference_rgrowth &&
-                      k.common.rcond >= std::numeric_limits<double>::epsilon();
+                      k.common.rcond >= rcond_floor;
   if (!stable) return false;
   stats_.last_rgrowth = k.common.rgrowth;
   k.factors_valid = true;

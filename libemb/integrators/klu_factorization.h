@@ -17,7 +17,8 @@
 ///   - KLU reports a zero pivot (KLU_SINGULAR), or
 ///   - rgrowth < kMinGrowthRatio * rgrowth of the last full factorisation (the fixed pivot
 ///     order has lost more than log10(1 / kMinGrowthRatio) digits against pivoting), or
-///   - rcond = min |U_kk| / max |U_kk| < machine epsilon (a pivot at round-off level).
+///   - rcond = min |U_kk| / max |U_kk| < min(machine epsilon, rcond of the last full
+///     factorisation) (a pivot at round-off level that pivoting avoided).
 /// The growth test is invariant to the scaling of the columns (each column of A and U scales
 /// alike) and KLU scales the rows, so it is not fooled by unknowns of different units, unlike
 /// an absolute threshold on the condition estimate (SUNDIALS' SUNLinSol_KLU refactors, and
@@ -60,6 +61,7 @@ struct KluStats {
   long factor_nonzeros{0};  ///< entries of L + U + off-diagonal blocks, last full factorisation
   double last_rgrowth{0.0};           ///< reciprocal pivot growth of the current factors
   double reference_rgrowth{0.0};      ///< that of the last full factorisation
+  double reference_rcond{0.0};  ///< min |U_kk| / max |U_kk| of the last full factorisation
 };
 
 class KluFactorization {
