@@ -108,6 +108,7 @@ KluStatus KluFactorization::FullFactor(const CscView& a) {
                         !klu_l_rcond(k.symbolic, k.numeric, &k.common) ||
                         !(k.common.rcond > 0.0);
   if (singular) {
+    k.FreeNumeric();  // never refactor from a halted factorisation
     ++stats_.singular;
     std::ostringstream s;
     s << "KLU: singular matrix (rcond " << k.common.rcond << ", numerical rank "
