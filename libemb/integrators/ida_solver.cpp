@@ -4,7 +4,6 @@
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
-#include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 
@@ -12,6 +11,7 @@
 #include <cmath>
 
 #include "libemb/common/error.h"
+#include "libemb/integrators/klu_linear_solver.h"
 
 namespace emb {
 
@@ -239,11 +239,12 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
     EMB_THROW_IF(!problem.has_jacobian() || !options.use_analytic_jacobian,
                  "IDA: the KLU linear solver needs the problem's analytic Jacobian");
     // The structure, built once; the values at t0 are overwritten before the first solve.
+    // emb's own KLU solver (klu_linear_solver.h): refactorisations checked by pivot growth.
     problem.CalcSparseJacobian(t0, 1.0, y0, yp0, &m.sparse);
     jacobian_nonzeros_ = static_cast<long>(m.sparse.nonZeros());
     const auto nnz = static_cast<sunindextype>(std::max<Eigen::Index>(1, m.sparse.nonZeros()));
     m.a = CheckPtr(SUNSparseMatrix(n, n, nnz, CSC_MAT, m.ctx), "SUNSparseMatrix");
-    m.ls = CheckPtr(SUNLinSol_KLU(m.y, m.a, m.ctx), "SUNLinSol_KLU");
+    m.ls = MakeKluLinearSolver(m.ctx);
     CheckSetup(IDASetLinearSolver(m.mem, m.ls, m.a), "IDASetLinearSolver");
     CheckSetup(IDASetJacFn(m.mem, &Impl::SparseJacobian), "IDASetJacFn");
   } else {
@@ -297,6 +298,8 @@ IdaReport IdaSolver::AdvanceTo(double t_out) {
 
   report.status = StatusOf(flag);
   report.message = m.last_message;
+  if (linear_solver_ == IdaLinearSolver::kKlu && !KluFactorizationOf(m.ls).message().empty())
+    report.message += " (" + KluFactorizationOf(m.ls).message() + ")";
   realtype h = 0.0;
   if (IDAGetLastStep(m.mem, &h) >= 0) report.last_step = h;
   realtype tcur = t_reached;
@@ -326,6 +329,13 @@ IdaStats IdaSolver::stats() const {
   if (IDAGetNumSteps(mem, &v) >= 0) s.steps = v;
   if (IDAGetNumResEvals(mem, &v) >= 0) s.residual_evals = v;
   if (IDAGetNumJacEvals(mem, &v) >= 0) s.jacobian_evals = v;
+  if (linear_solver_ == IdaLinearSolver::kKlu) {
+    const KluStats& k = KluFactorizationOf(impl_->ls).stats();
+    s.full_factorizations = k.full_factorizations;
+    s.refactorizations = k.refactorizations;
+  } else if (IDAGetNumLinSolvSetups(mem, &v) >= 0) {
+    s.full_factorizations = v;  // every dense setup is one LU with pivoting
+  }
   if (IDAGetNumErrTestFails(mem, &v) >= 0) s.error_test_failures = v;
   if (IDAGetNumNonlinSolvConvFails(mem, &v) >= 0) s.nonlinear_convergence_failures = v;
   int q = 0;

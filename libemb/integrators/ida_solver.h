@@ -2,7 +2,7 @@
 /// @file
 /// RAII wrapper of SUNDIALS IDA (variable-order, variable-step BDF for F(t, y, y') = 0)
 /// with the dense direct linear solver or KLU (sparse direct, on the problem's compressed-column
-/// iteration matrix). Every SUNDIALS flag is checked; a failure to advance is a status
+/// iteration matrix, through emb's own SUNLinearSolver: klu_linear_solver.h). Every SUNDIALS flag is checked; a failure to advance is a status
 /// (IdaStatus) with the time, the step size and the component with the largest weighted local
 /// error, never a print or an exit.
 
@@ -23,7 +23,9 @@ enum class IdaLinearSolver {
   kDense,  ///< SUNDIALS dense LU on the dense iteration matrix: small systems
   /// SuiteSparse KLU on the problem's compressed-column iteration matrix
   /// (DaeProblem::CalcSparseJacobian, structure fixed at construction); needs an analytic
-  /// Jacobian.
+  /// Jacobian. One symbolic analysis; each Jacobian update is refactored with the previous
+  /// pivot order and factored again with pivoting only if the pivot growth check fails
+  /// (KluFactorization).
   kKlu,
 };
 
@@ -94,6 +96,11 @@ struct IdaStats {
   long steps{0};
   long residual_evals{0};
   long jacobian_evals{0};
+  /// LU factorisations with pivoting: one per Jacobian evaluation with kDense; with kKlu the
+  /// first one and those after a refactorisation was rejected (klu_factorization.h).
+  long full_factorizations{0};
+  /// kKlu only: accepted refactorisations with the pivot order of the last full one.
+  long refactorizations{0};
   long error_test_failures{0};
   long nonlinear_convergence_failures{0};
   int last_order{0};

@@ -171,6 +171,10 @@ TEST(GglDae, KluAndDenseRunsAgree) {
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_EQ(r.linear_solver, IdaLinearSolver::kKlu);
   EXPECT_LT(r.jacobian_nonzeros, 48L * 48L);
+  // emb's KLU solver: one pivoted factorisation, then (almost) only refactorisations.
+  EXPECT_EQ(r.ida_stats.full_factorizations + r.ida_stats.refactorizations,
+            r.ida_stats.jacobian_evals);
+  EXPECT_GT(r.ida_stats.refactorizations, r.ida_stats.full_factorizations);
   EXPECT_LT((q_dense - q_ref).cwiseAbs().maxCoeff(), kGlobalError);
   EXPECT_LT((q_klu - q_ref).cwiseAbs().maxCoeff(), kGlobalError);
 }

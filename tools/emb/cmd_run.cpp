@@ -100,6 +100,9 @@ struct RunCommand {
       s.Add("steps", "IDA steps", r.ida_stats.steps);
       s.Add("residual_evals", "residual evaluations", r.ida_stats.residual_evals);
       s.Add("jacobian_evals", "Jacobian evaluations", r.ida_stats.jacobian_evals);
+      s.Add("full_factorizations", "LU factorisations with pivoting",
+            r.ida_stats.full_factorizations);
+      s.Add("refactorizations", "LU refactorisations (old pivots)", r.ida_stats.refactorizations);
       s.Add("error_test_failures", "error test failures", r.ida_stats.error_test_failures);
       s.Add("newton_failures", "Newton convergence failures",
             r.ida_stats.nonlinear_convergence_failures);
