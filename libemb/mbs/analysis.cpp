@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 #include "libemb/common/error.h"
@@ -204,6 +205,28 @@ std::vector<double> OutputTimes(const AnalysisSettings& s) {
   return t;
 }
 
+// IDA's absolute tolerances per unknown: atol on q and v, algebraic_atol on lambda and mu,
+// and atol * max(1, w_j) on the modal velocities of flexible bodies
+// (AnalysisSettings::modal_velocity_atol_by_frequency). Empty without flexible bodies.
+Eigen::VectorXd ComponentTolerances(const System& sys, const GglLayout& G,
+                                    const IdaOptions& options) {
+  const StateLayout& L = sys.layout();
+  bool flexible = false;
+  for (int b = 1; b < sys.num_bodies(); ++b) flexible = flexible || L.num_elastic(b) > 0;
+  if (!flexible) return {};
+  Eigen::VectorXd atol = Eigen::VectorXd::Constant(G.size(), options.algebraic_atol);
+  atol.head(G.nq() + G.nv()).setConstant(options.atol);
+  for (int b = 1; b < sys.num_bodies(); ++b) {
+    if (L.num_elastic(b) == 0) continue;
+    const Eigen::VectorXd& f = sys.body(b).elastic->frequencies_hz;
+    if (f.size() != L.num_elastic(b)) continue;  // a model without frequencies: unscaled
+    for (int j = 0; j < L.num_elastic(b); ++j)
+      atol[G.v() + L.elastic_v(b) + j] =
+          options.atol * std::max(1.0, 2.0 * std::numbers::pi * f[j]);
+  }
+  return atol;
+}
+
 RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
                      const SampleSink& sink, const ProgressFn& progress) {
   const System& sys = run.system;
@@ -242,6 +265,8 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     if (f0.size()) force_scale = std::max(force_scale, f0.cwiseAbs().maxCoeff());
     options.algebraic_atol = settings.multiplier_atol_relative * force_scale;
   }
+  if (settings.modal_velocity_atol_by_frequency && options.component_atol.size() == 0)
+    options.component_atol = ComponentTolerances(sys, G, options);
   if (options.initial_step <= 0.0 && settings.initial_step_fraction > 0.0)
     options.initial_step = settings.initial_step_fraction *
                            std::min(settings.output_step, settings.t_end - settings.t_start);

@@ -65,6 +65,14 @@ struct AnalysisSettings {
   double multiplier_atol_relative{1e-4};
   /// If > 0, the multipliers' atol as given [N, N m], instead of the relative rule.
   double multiplier_atol{0.0};
+  /// Flexible bodies: the absolute tolerance of modal velocity j is atol * max(1, w_j)
+  /// (w_j = 2 pi f_j of the kept mode, rad/s) instead of atol, so that the error test weighs
+  /// a mode's velocity like its displacement (w_j d(eta_j) against d(eta_j'), the two parts
+  /// of its energy). With one atol for both, a mode at f Hz has its velocity resolved 2 pi f
+  /// times more finely than its displacement, and the lightly damped vibration of the
+  /// highest kept modes, not the motion, sets the step (measured: a slider-crank with a
+  /// flexible rod at 60 rpm took 10 us steps, tests/flex/near_singular_test.cpp).
+  bool modal_velocity_atol_by_frequency{true};
   /// IDA's first step as a fraction of the output step (used when ida.initial_step is 0;
   /// 0 leaves the first step to IDA's own estimate).
   /// IDA's own estimate keeps h |y'| below atol for every component, which for a model

@@ -278,6 +278,8 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   s->multiplier_atol = r.GetDouble("multiplier_atol", s->multiplier_atol);
   s->multiplier_atol_relative =
       r.GetDouble("multiplier_atol_relative", s->multiplier_atol_relative);
+  s->modal_velocity_atol_by_frequency =
+      r.GetBool("modal_velocity_atol_by_frequency", s->modal_velocity_atol_by_frequency);
   s->ida.max_step = r.GetDouble("max_step", s->ida.max_step);
   s->ida.max_num_steps = r.GetInt("max_steps", static_cast<int>(s->ida.max_num_steps));
   try {

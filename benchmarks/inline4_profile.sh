@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Where the time of a flexible inline-4 run goes: `perf record` (sampling, 999 Hz) of one
+# engine cycle of tools/scenes/inline4.yaml, then the share per library and the heaviest
+# functions (self time). Needs perf (Debian linux-perf) and out/crankshaft_i4.h5.
+#   benchmarks/inline4_profile.sh [T_END]      (default 0.04 s = one cycle at 3000 rpm)
+# Results: out/bench_profile/{perf.data,run.json,by_library.txt,by_function.txt}.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+emb=${EMB:-$root/build/tools/emb/emb}
+t_end=${1:-0.04}
+dir=$root/out/bench_profile
+command -v perf >/dev/null || { echo "perf is not installed (apt-get install linux-perf)" >&2; exit 1; }
+[ -f "$root/out/crankshaft_i4.h5" ] || { echo "run tools/setup.sh run first (out/crankshaft_i4.h5)" >&2; exit 1; }
+mkdir -p "$dir"
+perf record -q -F 999 -o "$dir/perf.data" -- \
+  "$emb" run "$root/tools/scenes/inline4.yaml" --t-end "$t_end" --no-output -q --json > "$dir/run.json"
+perf report -i "$dir/perf.data" --no-children --sort dso --stdio -g none 2>/dev/null |
+  grep '%' > "$dir/by_library.txt"
+perf report -i "$dir/perf.data" --no-children --sort symbol --stdio -g none 2>/dev/null |
+  grep '%' | head -30 | cut -c1-150 > "$dir/by_function.txt"
+/usr/bin/python3 -c "import json; d=json.load(open('$dir/run.json'))['summary']; print('run:', d['status'], d['steps'], 'steps,', d['jacobian_evals'], 'Jacobians,', d['residual_evals'], 'residuals,', round(d['seconds_run'], 2), 's')"
+echo "by library:"; head -8 "$dir/by_library.txt"
+echo "by function (self):"; head -25 "$dir/by_function.txt"
