@@ -164,22 +164,39 @@ TEST(NearSingularSliderCrank, RigidRodFollowsClosedForm) {
   }
 }
 
-// eps = 1e-3 (branches 54 mm apart at 90 degrees), one passage (crank 0 to 108 degrees).
+// One passage (crank 0 to 108 degrees) at `eps`: the steel rod at two tolerances (loose,
+// tight) and a rod 10x stiffer (stiff).
+struct Passage {
+  Case loose, tight, stiff;
+  Trajectory a, b, s;
+};
+Passage RunPassage(double eps) {
+  Passage p;
+  for (Case* c : {&p.loose, &p.tight, &p.stiff}) {
+    c->eps = eps;
+    c->revolutions = 0.3;
+    c->rtol = 1e-5;
+  }
+  p.tight.rtol = 3e-6;
+  p.stiff.youngs_modulus = 10 * p.loose.youngs_modulus;
+  p.a = Simulate(p.loose);
+  p.b = Simulate(p.tight);
+  p.s = Simulate(p.stiff);
+  ExpectCompleted(p.a, p.loose);
+  ExpectCompleted(p.b, p.tight);
+  ExpectCompleted(p.s, p.stiff);
+  return p;
+}
+
+// eps = 1e-3 (branches 54 mm apart at 90 degrees).
 // The steel rod gives way axially where the rigid mechanism needs the largest thrust: the
 // slider leaves the rigid closed form by millimetres (measured 2.26 mm) but stays on its
 // branch; the deviation is converged in the tolerance and shrinks like the compliance
 // 1/E (measured 2.26 mm -> 0.157 mm for 10x E).
 TEST(NearSingularSliderCrank, FlexibleRodStaysOnItsBranchAndConverges) {
-  Case loose, tight, stiff;
-  for (Case* c : {&loose, &tight, &stiff}) c->revolutions = 0.3;
-  loose.rtol = 1e-5;
-  tight.rtol = 3e-6;
-  stiff.rtol = 1e-5;
-  stiff.youngs_modulus = 10 * loose.youngs_modulus;
-  const Trajectory a = Simulate(loose), b = Simulate(tight), s = Simulate(stiff);
-  ExpectCompleted(a, loose);
-  ExpectCompleted(b, tight);
-  ExpectCompleted(s, stiff);
+  const Passage p = RunPassage(1e-3);
+  const Case &loose = p.loose, &tight = p.tight, &stiff = p.stiff;
+  const Trajectory &a = p.a, &b = p.b, &s = p.s;
   const double deviation = MaxDeviationFromRigid(tight, b);
   // On its branch, with margin: far less than half the distance to the other branch.
   EXPECT_LT(deviation, 0.1 * tight.branch_gap());
@@ -197,19 +214,9 @@ TEST(NearSingularSliderCrank, FlexibleRodStaysOnItsBranchAndConverges) {
 // l / gap). The steel rod snaps through to the other branch, the same way at both
 // tolerances; the stiffer rod stays on its branch. Either way the integrator carries on.
 TEST(NearSingularSliderCrank, CompliantRodSnapsThroughStiffRodDoesNot) {
-  Case loose, tight, stiff;
-  for (Case* c : {&loose, &tight, &stiff}) {
-    c->eps = 1e-4;
-    c->revolutions = 0.3;
-  }
-  loose.rtol = 1e-5;
-  tight.rtol = 3e-6;
-  stiff.rtol = 1e-5;
-  stiff.youngs_modulus = 10 * loose.youngs_modulus;
-  const Trajectory a = Simulate(loose), b = Simulate(tight), s = Simulate(stiff);
-  ExpectCompleted(a, loose);
-  ExpectCompleted(b, tight);
-  ExpectCompleted(s, stiff);
+  const Passage p = RunPassage(1e-4);
+  const Case &loose = p.loose, &tight = p.tight, &stiff = p.stiff;
+  const Trajectory &a = p.a, &b = p.b, &s = p.s;
   const double t_end = b.t.back();
   // Measured: both end 3.2e-5 m from the other branch's closed form (the rod's residual
   // compression), 0.37 m from their own, 6e-8 m apart; the stiff rod 1.2e-4 m from its own.
