@@ -17,7 +17,7 @@ perf record -q -F 999 -o "$dir/perf.data" -- \
 perf report -i "$dir/perf.data" --no-children --sort dso --stdio -g none 2>/dev/null |
   grep '%' > "$dir/by_library.txt"
 perf report -i "$dir/perf.data" --no-children --sort symbol --stdio -g none 2>/dev/null |
-  grep '%' | head -30 | cut -c1-150 > "$dir/by_function.txt"
+  grep "%" | sed -n 1,30p | cut -c1-150 > "$dir/by_function.txt"
 /usr/bin/python3 -c "import json; d=json.load(open('$dir/run.json'))['summary']; print('run:', d['status'], d['steps'], 'steps,', d['jacobian_evals'], 'Jacobians,', d['residual_evals'], 'residuals,', round(d['seconds_run'], 2), 's')"
-echo "by library:"; head -8 "$dir/by_library.txt"
-echo "by function (self):"; head -25 "$dir/by_function.txt"
+echo "by library:"; sed -n 1,8p "$dir/by_library.txt"
+echo "by function (self):"; sed -n 1,25p "$dir/by_function.txt"
