@@ -16,7 +16,7 @@ packages=(
   libeigen3-dev libspectra-dev libsuitesparse-dev libmetis-dev libopenblas-dev
   libhdf5-dev libgmsh-dev gmsh libsundials-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3-h5py python3-matplotlib
+  python3-h5py python3-matplotlib python3-numpy python3-scipy
 )
 missing=()
 for p in "${packages[@]}"; do

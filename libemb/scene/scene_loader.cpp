@@ -76,6 +76,7 @@ void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sy
     Matrix3d R = Matrix3d::Identity();
     if (const YAML::Node o = rb.Optional("orientation"))
       R = ReadOrientation(o, file, what + " orientation");
+    const bool velocity_given = rb.Has("velocity");
     b.v_WB = rb.GetVector3("velocity", Vector3d::Zero());
     b.omega_W = rb.GetVector3("angular_velocity", Vector3d::Zero());
     try {
@@ -95,6 +96,9 @@ void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sy
         rb.Finish();
         b.p_WB = position;
         BodyFilePart part = LoadBodyFilePart(path, options, position, R, &b);
+        // Without a velocity the part spins about its mesh origin (as beam parts do): the
+        // centre of mass, wherever the mesh puts it, moves with omega x (p_CM - position).
+        if (!velocity_given) b.v_WB = b.omega_W.cross(b.p_WB - position);
         if (!eta0.empty()) {
           EMB_THROW_IF(static_cast<int>(eta0.size()) != b.num_modes(),
                        what << " modal_coordinates: expected " << b.num_modes()

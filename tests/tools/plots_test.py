@@ -1,0 +1,141 @@
+"""The plotting tools on real `emb` output: the deformed-shape animation
+(tools/plots/animate_body.py) and the engine plots (tools/plots/engine_plots.py).
+
+    /usr/bin/python3 tests/tools/plots_test.py EMB_EXECUTABLE SOURCE_DIR
+
+Animation: a coarse tube is reduced with its mesh shapes, floats free with initial modal coordinates
+(it vibrates), and the script's XDMF/HDF5 output is checked: one frame per output time at
+the run's times, every referenced dataset present with the XDMF's dimensions, frame 0's
+displacement equal to the scene's initial modal coordinates times the body file's mesh
+shapes (independent of the run), geometry = nodes + scale x displacement, later frames
+following the run's modal coordinates; and bad input (an unknown body, a body file
+without mesh shapes) exits non-zero with the thing named and no output written.
+Engine plots: the tube spinning about its axis for one 720-degree cycle gives the trace and
+order-spectrum PNGs (written, valid PNG), and an unknown channel is an error naming it.
+"""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+import h5py
+import numpy as np
+
+EMB, SOURCE = sys.argv[1], sys.argv[2]
+SCRIPT = os.path.join(SOURCE, "tools", "plots", "animate_body.py")
+ENGINE_PLOTS = os.path.join(SOURCE, "tools", "plots", "engine_plots.py")
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+failures = []
+
+
+def check(condition, what):
+    if not condition:
+        failures.append(what)
+        print("FAILED:", what)
+
+
+def run(args, cwd):
+    return subprocess.run(args, cwd=cwd, capture_output=True, text=True)
+
+
+def check_engine_plots(work):
+    with open(os.path.join(work, "spin.yaml"), "w") as f:
+        f.write("bodies:\n  - {name: tube, model: cms, body_file: tube.h5, "
+                "angular_velocity: [314.159265, 0, 0]}\n")
+        f.write("analysis: {type: dynamic, t_end: 0.045, output_step: 1.0e-4}\n")
+    r = run([EMB, "run", "spin.yaml", "-q", "-o", "spin.h5"], work)
+    if r.returncode != 0:
+        sys.exit("emb run failed: " + r.stderr)
+    plots = ["/usr/bin/python3", ENGINE_PLOTS, "spin.h5", "--angle", "tube", "--axis", "x",
+             "--out", "plots", "--emb", EMB]
+    r = run(plots + ["--traces", "tube.omega.x,energy.total", "--spectrum", "tube.omega.x"], work)
+    check(r.returncode == 0, "engine_plots.py exit code 0: " + r.stderr)
+    for png in ("spin_traces.png", "spin_spectrum_tube_omega_x.png"):
+        path = os.path.join(work, "plots", png)
+        ok = os.path.exists(path)
+        if ok:
+            with open(path, "rb") as f:
+                ok = f.read(8) == PNG_MAGIC and os.path.getsize(path) > 1000
+        check(ok, "engine_plots.py wrote a PNG " + png)
+    r = run(plots + ["--traces", "tube.spin.x"], work)
+    check(r.returncode != 0 and "tube.spin.x" in r.stderr,
+          "unknown channel: non-zero exit naming it (%s)" % r.stderr.strip()[-200:])
+
+
+def main():
+    work = tempfile.mkdtemp(prefix="emb_animate_")
+    geo = os.path.join(SOURCE, "meshes", "tube.geo")
+    coarse = ["--set", "n_wall=1", "--set", "n_circ=8", "--set", "h=0.1", "--set", "L=0.6",
+              "-n", "4", "--no-reference", "--no-xdmf", "-q"]
+    for out, extra in (("tube.h5", []), ("bare.h5", ["--no-mesh-shapes"])):
+        r = run([EMB, "reduce", geo, *coarse, *extra, "-o", out], work)
+        if r.returncode != 0:
+            sys.exit("emb reduce failed: " + r.stderr)
+    with h5py.File(os.path.join(work, "tube.h5"), "r") as b:
+        num_modes = b["modes/mesh_shapes"].shape[0]
+    eta0 = [1e-4 * (k + 1) for k in range(num_modes)]
+    with open(os.path.join(work, "scene.yaml"), "w") as f:
+        f.write("bodies:\n  - {name: tube, model: cms, body_file: tube.h5, modal_coordinates: "
+                "[%s]}\n" % ", ".join(repr(e) for e in eta0))
+        f.write("analysis: {type: dynamic, t_end: 1.0e-3, output_step: 2.0e-4}\n")
+    r = run([EMB, "run", "scene.yaml", "-q", "-o", "run.h5"], work)
+    if r.returncode != 0:
+        sys.exit("emb run failed: " + r.stderr)
+
+    scale = 50.0
+    r = run(["/usr/bin/python3", SCRIPT, "run.h5", "tube.h5", "--body", "tube", "--scale",
+             str(scale), "-o", "anim.xdmf"], work)
+    check(r.returncode == 0, "animate_body.py exit code 0: " + r.stderr)
+
+    with h5py.File(os.path.join(work, "run.h5"), "r") as res:
+        time = res["time"][()]
+        eta = res["state/eta"][()]
+    with h5py.File(os.path.join(work, "tube.h5"), "r") as b:
+        shapes = b["modes/mesh_shapes"][()]
+        nodes = b["mesh/nodes"][()]
+    tree = ET.parse(os.path.join(work, "anim.xdmf"))
+    frames = tree.getroot().findall("./Domain/Grid/Grid")
+    check(len(frames) == len(time), "one frame per output time (%d, %d)" % (len(frames), len(time)))
+    with h5py.File(os.path.join(work, "anim.h5"), "r") as anim:
+        for i, g in enumerate(frames):
+            t = float(g.find("Time").get("Value"))
+            check(abs(t - time[i]) <= 1e-9 * max(1.0, abs(time[i])), "frame %d time" % i)
+            for item in g.iter("DataItem"):
+                path = item.text.split(":", 1)[1]
+                dims = tuple(int(d) for d in item.get("Dimensions").split())
+                check(path in anim and anim[path].shape == dims,
+                      "frame %d: %s with dimensions %s" % (i, path, dims))
+        # Rounding of the stored data: 8-byte floats, values ~1e-3 m.
+        tol = 1e-12
+        u0 = anim["steps/0/displacement"][()]
+        expected = np.tensordot(np.array(eta0), shapes, axes=1)
+        check(np.abs(u0 - expected).max() <= tol, "frame 0 = initial modal coordinates x shapes")
+        check(np.abs(expected).max() > 1e-6, "the initial deformation is not trivially zero")
+        for i in range(len(time)):
+            u = anim["steps/%d/displacement" % i][()]
+            check(np.abs(u - np.tensordot(eta[i], shapes, axes=1)).max() <= tol,
+                  "frame %d follows the run's modal coordinates" % i)
+            check(np.abs(anim["steps/%d/geometry" % i][()] - (nodes + scale * u)).max() <= tol,
+                  "frame %d geometry = nodes + scale x displacement" % i)
+        check(np.abs(anim["steps/%d/displacement" % (len(time) - 1)][()] - u0).max() > 1e-8,
+              "the body vibrates (the last frame differs from the first)")
+
+    for args, name, what in ((["run.h5", "tube.h5", "--body", "shaft"], "shaft", "unknown body"),
+                             (["run.h5", "bare.h5", "--body", "tube"], "bare.h5", "no mesh shapes")):
+        out = "bad_%s.xdmf" % name.replace(".", "_")
+        r = run(["/usr/bin/python3", SCRIPT, *args, "-o", out], work)
+        check(r.returncode != 0 and name in r.stderr, "%s: non-zero exit naming '%s' (%s)"
+              % (what, name, r.stderr.strip()))
+        check(not os.path.exists(os.path.join(work, out)), "%s: no output written" % what)
+
+    check_engine_plots(work)
+    if failures:
+        sys.exit("%d check(s) failed; files kept in %s" % (len(failures), work))
+    shutil.rmtree(work)
+    print("all checks passed")
+
+
+if __name__ == "__main__":
+    main()
