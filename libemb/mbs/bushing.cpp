@@ -7,8 +7,13 @@
 namespace emb::mbs {
 
 Bushing::Bushing(std::string name, int marker_i, int marker_j, const Matrix6d& stiffness,
-                 const Matrix6d& damping)
-    : ForceElement(std::move(name)), i_(marker_i), j_(marker_j), k_(stiffness), d_(damping) {
+                 const Matrix6d& damping, const Eigen::Vector3d& free_offset)
+    : ForceElement(std::move(name)),
+      i_(marker_i),
+      j_(marker_j),
+      k_(stiffness),
+      d_(damping),
+      x0_(free_offset) {
   const double scale = std::max(1.0, k_.cwiseAbs().maxCoeff());
   // Relative asymmetry/negativity allowed for matrices typed with ~10 digits.
   constexpr double kMatrixTolerance = 1e-9;
@@ -33,7 +38,7 @@ Bushing::State Bushing::Calc(const MarkerKinematics& I, const MarkerKinematics& 
   const Eigen::Matrix3d R_JW = J.R_WM.transpose();
   const Eigen::Vector3d theta = RotationVectorFromRotation(R_JW * I.R_WM);
   s.inv_jacobian = InverseLeftJacobianSO3(theta);
-  s.xi << R_JW * d, theta;
+  s.xi << R_JW * d - x0_, theta;
   s.xi_dot << R_JW * (I.v_WM - J.v_WM - J.omega_W.cross(d)),
       s.inv_jacobian * (R_JW * (I.omega_W - J.omega_W));
   return s;
@@ -65,7 +70,7 @@ void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sin
   const Vector3d theta = s.xi.tail<3>();
   const Matrix3d& Jinv = s.inv_jacobian;
 
-  // xi = [R_JW d; theta]: d(R_JW y) = R_JW (dy + [y x] dphi_j) for a world vector y.
+  // xi = [R_JW d - x0; theta]: d(R_JW y) = R_JW (dy + [y x] dphi_j) for a world vector y.
   const MatrixXd dd_x = dI.point_x - dJ.point_x;
   MatrixXd dxi_x(6, 12), dxi_dot_x(6, 12), dxi_dot_v(6, 12);
   dxi_x.topRows<3>() = R_JW * (dd_x + Skew(d) * dJ.rotation_x);

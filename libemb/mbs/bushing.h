@@ -10,7 +10,8 @@
 namespace emb::mbs {
 
 /// Relative displacement of I from J in J's axes, xi = [x; theta]:
-///   x = R_JW d, d = p_WI - p_WJ,
+///   x = R_JW d - x0, d = p_WI - p_WJ (x0: where I sits in J's axes when the bushing is
+///       unloaded, the free offset; 0 by default, L e_x for a beam of length L),
 ///   theta = the rotation vector of R_JI = R_JW R_WI, from its quaternion (|theta| <= pi,
 ///           exact for large rotations, RotationVectorFromQuaternion),
 /// and its rate xi' = [R_JW (d' - omega_J x d); J_l^{-1}(theta) R_JW (omega_I - omega_J)]
@@ -25,14 +26,17 @@ namespace emb::mbs {
 /// K [N/m, N/rad, coupling N and N m] and D [N s/m ...] are 6x6, expressed in J; K must be
 /// symmetric PSD. Precondition: |theta| < pi (a bushing that turns half a revolution is
 /// not a bushing; at pi the rotation vector flips).
-class Bushing final : public ForceElement {
+class Bushing : public ForceElement {
  public:
   using Matrix6d = Eigen::Matrix<double, 6, 6>;
   using Vector6d = Eigen::Matrix<double, 6, 1>;
   /// @throws InputError if K is not symmetric positive semi-definite or D has negative
   /// eigenvalues of its symmetric part.
   Bushing(std::string name, int marker_i, int marker_j, const Matrix6d& stiffness,
-          const Matrix6d& damping);
+          const Matrix6d& damping, const Eigen::Vector3d& free_offset = Eigen::Vector3d::Zero());
+
+  /// K in J's axes.
+  const Matrix6d& stiffness() const { return k_; }
 
  protected:
   void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const override;
@@ -50,6 +54,7 @@ class Bushing final : public ForceElement {
   State Calc(const MarkerKinematics& I, const MarkerKinematics& J) const;
   int i_, j_;
   Matrix6d k_, d_;
+  Eigen::Vector3d x0_;
 };
 
 }  // namespace emb::mbs
