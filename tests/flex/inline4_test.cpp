@@ -227,7 +227,9 @@ TEST_F(Inline4, StiffCrankTendsToTheRigidCrank) {
     const double scale = rms(rigid[k], nullptr);
     const double d_steel = rms(steel[k], &rigid[k]), d_stiff = rms(stiff[k], &rigid[k]);
     EXPECT_LT(d_stiff, d_steel / kBearingConvergence) << channels[k];
-    if (k < 2) EXPECT_LT(d_stiff, kRigidLimitShare * scale) << channels[k];
+    if (k < 2) {
+      EXPECT_LT(d_stiff, kRigidLimitShare * scale) << channels[k];
+    }
   }
 }
 
