@@ -8,8 +8,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "libemb/mbs/analysis.h"
-#include "libemb/mbs/ggl_dae.h"
+#include "libemb/mbs/analysis/analysis.h"
+#include "libemb/mbs/analysis/ggl_dae.h"
 
 namespace {
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "libemb/mbs/analysis.h"
+#include "libemb/mbs/analysis/analysis.h"
 #include "libemb/scene/scene.h"
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/linalg/cross_matrix.h"
-#include "libemb/mbs/beam_force.h"
+#include "libemb/mbs/flexible/beam_force.h"
 #include "libemb/scene/scene_parts.h"
 #include "libemb/scene/yaml_reader.h"
 

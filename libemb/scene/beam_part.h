@@ -39,7 +39,7 @@
 #include <vector>
 
 #include "libemb/beam/beam_geometry.h"
-#include "libemb/mbs/system.h"
+#include "libemb/mbs/core/system.h"
 
 namespace emb::scene {
 

@@ -4,7 +4,7 @@
 
 #include "libemb/cms/body_file.h"
 #include "libemb/common/error.h"
-#include "libemb/mbs/system.h"
+#include "libemb/mbs/core/system.h"
 
 namespace emb::scene {
 namespace {

@@ -11,7 +11,7 @@
 
 #include <Eigen/Dense>
 
-#include "libemb/mbs/body.h"
+#include "libemb/mbs/core/body.h"
 
 namespace emb::scene {
 

@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/cylinder_pressure.h"
-#include "libemb/mbs/journal_bearing.h"
+#include "libemb/engine/cylinder_pressure.h"
+#include "libemb/engine/journal_bearing.h"
 
 namespace emb::scene {
 

@@ -7,8 +7,8 @@
 
 #include <string>
 
-#include "libemb/mbs/system.h"
-#include "libemb/mbs/time_function.h"
+#include "libemb/mbs/core/system.h"
+#include "libemb/mbs/core/time_function.h"
 #include "libemb/scene/yaml_reader.h"
 
 namespace emb::scene {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "libemb/mbs/analysis.h"
-#include "libemb/mbs/system.h"
+#include "libemb/mbs/analysis/analysis.h"
+#include "libemb/mbs/core/system.h"
 
 namespace emb::scene {
 

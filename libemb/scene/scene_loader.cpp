@@ -8,10 +8,10 @@
 #include <sstream>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/applied_load.h"
-#include "libemb/mbs/bushing.h"
-#include "libemb/mbs/rotation.h"
-#include "libemb/mbs/spring_damper.h"
+#include "libemb/mbs/forces/applied_load.h"
+#include "libemb/mbs/forces/bushing.h"
+#include "libemb/mbs/core/rotation.h"
+#include "libemb/mbs/forces/spring_damper.h"
 #include "libemb/scene/beam_part.h"
 #include "libemb/scene/body_file_part.h"
 #include "libemb/scene/scene.h"

@@ -4,10 +4,10 @@
 #include <numbers>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/applied_load.h"
-#include "libemb/mbs/bushing.h"
-#include "libemb/mbs/rotation.h"
-#include "libemb/mbs/spring_damper.h"
+#include "libemb/mbs/forces/applied_load.h"
+#include "libemb/mbs/forces/bushing.h"
+#include "libemb/mbs/core/rotation.h"
+#include "libemb/mbs/forces/spring_damper.h"
 #include "libemb/scene/engine_parts.h"
 
 namespace emb::scene {

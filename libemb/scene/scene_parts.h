@@ -7,9 +7,9 @@
 #include <Eigen/Dense>
 #include <string>
 
-#include "libemb/mbs/joint.h"
-#include "libemb/mbs/system.h"
-#include "libemb/mbs/time_function.h"
+#include "libemb/mbs/core/joint.h"
+#include "libemb/mbs/core/system.h"
+#include "libemb/mbs/core/time_function.h"
 #include "libemb/scene/yaml_reader.h"
 
 namespace emb::scene {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/system.h"
+#include "libemb/mbs/core/system.h"
 
 namespace emb::scene {
 

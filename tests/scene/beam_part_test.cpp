@@ -15,9 +15,10 @@
 #include "libemb/beam/beam_assembly.h"
 #include "libemb/beam/beam_modal.h"
 #include "libemb/common/error.h"
-#include "libemb/mbs/dynamics.h"
-#include "libemb/mbs/kinematics.h"
+#include "libemb/mbs/core/dynamics.h"
+#include "libemb/mbs/core/kinematics.h"
 #include "libemb/scene/scene.h"
+#include "libemb/mbs/forces/force_jacobian.h"
 
 namespace emb::scene {
 namespace {

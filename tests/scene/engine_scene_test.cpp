@@ -10,9 +10,9 @@
 #include <string>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/analysis.h"
-#include "libemb/mbs/cylinder_pressure.h"
-#include "libemb/mbs/dof_analysis.h"
+#include "libemb/mbs/analysis/analysis.h"
+#include "libemb/engine/cylinder_pressure.h"
+#include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/scene/scene.h"
 
 namespace emb::scene {

@@ -12,8 +12,8 @@
 #include <string>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/dof_analysis.h"
-#include "libemb/mbs/rotation.h"
+#include "libemb/mbs/constraints/dof_analysis.h"
+#include "libemb/mbs/core/rotation.h"
 #include "libemb/scene/scene.h"
 
 namespace emb::scene {

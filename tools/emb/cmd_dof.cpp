@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/assembly.h"
-#include "libemb/mbs/dof_analysis.h"
+#include "libemb/mbs/constraints/assembly.h"
+#include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/scene/scene.h"
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"

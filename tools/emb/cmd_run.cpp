@@ -13,8 +13,8 @@
 
 #include "libemb/common/error.h"
 #include "libemb/common/timer.h"
-#include "libemb/mbs/analysis.h"
-#include "libemb/scene/results_writer.h"
+#include "libemb/mbs/analysis/analysis.h"
+#include "libemb/results/results_writer.h"
 #include "libemb/scene/scene.h"
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"

@@ -1,5 +1,5 @@
 // emb spectrum RESULTS.h5 --channel NAME: the engine-order spectrum of a results channel
-// over whole 720-degree cycles (libemb/scene/order_spectrum.h), with the crank angle from a
+// over whole 720-degree cycles (libemb/results/order_spectrum.h), with the crank angle from a
 // body's rotation (--angle BODY [--axis x]) or a constant speed (--rpm N).
 
 #include <fstream>
@@ -8,8 +8,8 @@
 
 #include "libemb/common/error.h"
 #include "libemb/io/atomic_file.h"
-#include "libemb/scene/order_spectrum.h"
-#include "libemb/scene/results_reader.h"
+#include "libemb/results/order_spectrum.h"
+#include "libemb/results/results_reader.h"
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
 

@@ -36,7 +36,7 @@ def rotations(f, b):
 
 
 def channel(f, name):
-    """The values of a channel (same conventions as libemb/scene/results_reader.h)."""
+    """The values of a channel (same conventions as libemb/results/results_reader.h)."""
     owner, _, comp = name.rpartition(".")
     if name.startswith("energy."):
         return f["energy"][:, ENERGY.index(name[7:])]

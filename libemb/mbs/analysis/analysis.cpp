@@ -1,0 +1,326 @@
+#include "libemb/mbs/analysis/analysis.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/analysis/analysis_internal.h"
+#include "libemb/mbs/constraints/constraint_eval.h"
+#include "libemb/mbs/analysis/ggl_dae.h"
+#include "libemb/mbs/constraints/reactions.h"
+#include "libemb/mbs/core/rotation.h"
+
+namespace emb::mbs {
+namespace {
+
+struct TypeName {
+  AnalysisType type;
+  const char* name;
+};
+constexpr TypeName kTypeNames[] = {{AnalysisType::kAssemble, "assemble"},
+                                   {AnalysisType::kKinematic, "kinematic"},
+                                   {AnalysisType::kStatic, "static"},
+                                   {AnalysisType::kQuasiStatic, "quasi-static"},
+                                   {AnalysisType::kDynamic, "dynamic"}};
+
+}  // namespace
+
+const char* Name(AnalysisType type) {
+  for (const auto& t : kTypeNames)
+    if (t.type == type) return t.name;
+  return "unknown";
+}
+
+AnalysisType ParseAnalysisType(const std::string& name) {
+  std::string valid;
+  for (const auto& t : kTypeNames) {
+    if (name == t.name) return t.type;
+    valid += std::string(valid.empty() ? "" : ", ") + t.name;
+  }
+  EMB_THROW(InputError, "unknown analysis type '" << name << "': expected one of " << valid);
+}
+
+const char* Name(RunStatus status) {
+  switch (status) {
+    case RunStatus::kSuccess:
+      return "success";
+    case RunStatus::kIntegratorFailure:
+      return "integrator-failure";
+    case RunStatus::kNewtonFailure:
+      return "newton-failure";
+    case RunStatus::kNotKinematic:
+      return "not-kinematic";
+  }
+  return "unknown";
+}
+
+const char* Name(NewtonStatus status) {
+  switch (status) {
+    case NewtonStatus::kConverged:
+      return "converged";
+    case NewtonStatus::kMaxIterations:
+      return "max-iterations";
+    case NewtonStatus::kLineSearchFailed:
+      return "line-search-failed";
+    case NewtonStatus::kNonFinite:
+      return "non-finite";
+  }
+  return "unknown";
+}
+
+PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
+  EMB_CHECK(system.finalized());
+  EMB_THROW_IF(!(settings.t_end >= settings.t_start), "analysis: expected t_end >= t_start, got "
+                                                          << settings.t_end << " < "
+                                                          << settings.t_start);
+  EMB_THROW_IF(!(settings.output_step > 0.0),
+               "analysis: expected a positive output step, got " << settings.output_step);
+  PreparedRun run{system, {}, {}, {}, {}};
+  ConstraintWorkspace ws(system);
+  const AssemblyResult a = AssemblePositions(system, system.InitialPositions(), settings.t_start,
+                                             &ws, settings.assembly);
+  if (!a.converged) EMB_THROW(InputError, "the model cannot be assembled: " << a.message);
+  run.dof = AnalyzeDof(system, a.q, settings.t_start, &ws);
+  if (!run.dof.redundant.empty()) {
+    std::ostringstream list;
+    for (const auto& n : run.dof.redundant_names) list << "\n  " << n;
+    if (!settings.remove_redundant)
+      EMB_THROW(InputError, run.dof.redundant.size()
+                                << " redundant constraint equation(s) (Gruebler count "
+                                << run.dof.gruebler_dof << ", true DOF " << run.dof.true_dof
+                                << "):" << list.str()
+                                << "\nremove them from the model or set "
+                                   "remove_redundant: true to drop exactly these");
+    run.system = system.WithoutEquations(run.dof.redundant);
+    run.warnings.push_back("removed " + std::to_string(run.dof.redundant.size()) +
+                           " redundant equation(s):" + list.str());
+  }
+  ConstraintWorkspace ws2(run.system);
+  // Re-assemble in the reduced system so its angle slots are on the same branch.
+  const AssemblyResult a2 =
+      AssemblePositions(run.system, a.q, settings.t_start, &ws2, settings.assembly);
+  if (!a2.converged) EMB_THROW(InputError, "the model cannot be assembled: " << a2.message);
+  run.q0 = a2.q;
+  if (settings.type == AnalysisType::kDynamic || settings.type == AnalysisType::kAssemble) {
+    const VelocityProjection p = ProjectVelocities(
+        run.system, run.q0, run.system.InitialVelocities(), settings.t_start, &ws2);
+    run.v0 = p.v;
+    if (p.relative_change > settings.velocity_warning_threshold) {
+      std::ostringstream o;
+      o << "initial velocities were inconsistent with the constraints and were projected "
+           "(relative change "
+        << p.relative_change << " in the kinetic-energy norm)";
+      run.warnings.push_back(o.str());
+    }
+  } else {
+    run.v0 = Eigen::VectorXd::Zero(run.system.layout().nv());
+  }
+  return run;
+}
+
+Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
+                  const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
+                  const Eigen::VectorXd& lambda, ConstraintWorkspace* workspace) {
+  Sample s;
+  s.t = t;
+  s.q = q;
+  s.v = v;
+  s.vdot = vdot;
+  s.lambda = lambda;
+  const auto bodies = CalcBodyKinematics(system, q, v);
+  const ConstraintEval c = CalcConstraints(system, bodies, t, workspace);
+  s.reactions = CalcJointReactions(system, bodies, lambda);
+  const auto& forces = system.force_elements();
+  s.force_loads.setConstant(static_cast<Eigen::Index>(forces.size()), 6,
+                            std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    const ForceContext ctx{&system, &bodies, t, workspace,
+                           system.force_angle_slot(static_cast<int>(k))};
+    Eigen::Matrix<double, 6, 1> load;
+    if (forces[k]->CalcLoad(ctx, &load)) s.force_loads.row(static_cast<Eigen::Index>(k)) = load;
+  }
+  const auto& sensors = system.sensors();
+  s.sensors.resize(static_cast<Eigen::Index>(sensors.size()), 6);
+  for (std::size_t k = 0; k < sensors.size(); ++k) {
+    const MarkerKinematics I = CalcMarkerKinematics(system, bodies, sensors[k].marker_i);
+    const MarkerKinematics J = CalcMarkerKinematics(system, bodies, sensors[k].marker_j);
+    s.sensors.row(static_cast<Eigen::Index>(k)) << (J.R_WM.transpose() * (I.p_WM - J.p_WM)).transpose(),
+        RotationVectorFromRotation(J.R_WM.transpose() * I.R_WM).transpose();
+  }
+  s.energies = CalcEnergies(system, bodies, t, workspace);
+  if (c.phi.size()) {
+    s.position_residual = c.phi.cwiseAbs().maxCoeff();
+    s.velocity_residual = (c.jacobian * v + c.phi_t).cwiseAbs().maxCoeff();
+  }
+  return s;
+}
+
+RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
+                      const SampleSink& sink, const ProgressFn& progress) {
+  switch (settings.type) {
+    case AnalysisType::kAssemble: {
+      ConstraintWorkspace ws(run.system);
+      AssemblePositions(run.system, run.q0, settings.t_start, &ws, settings.assembly);
+      const AccelerationSolution acc =
+          SolveAccelerations(run.system, run.q0, run.v0, settings.t_start, &ws);
+      sink(MakeSample(run.system, settings.t_start, run.q0, run.v0, acc.vdot, acc.lambda, &ws));
+      RunResult r;
+      r.t_reached = settings.t_start;
+      r.num_samples = 1;
+      return r;
+    }
+    case AnalysisType::kKinematic:
+      return internal::RunKinematic(run, settings, sink, progress);
+    case AnalysisType::kStatic:
+      return internal::RunStatic(run, settings, sink, progress, false);
+    case AnalysisType::kQuasiStatic:
+      return internal::RunStatic(run, settings, sink, progress, true);
+    case AnalysisType::kDynamic:
+      return internal::RunDynamic(run, settings, sink, progress);
+  }
+  return {};
+}
+
+namespace internal {
+
+double ModelSize(const System& system, const Eigen::VectorXd& q) {
+  const StateLayout& L = system.layout();
+  double size = 0.0;
+  for (int b = 1; b < system.num_bodies(); ++b)
+    size = std::max(size, q.segment<3>(L.position(b)).norm());
+  for (const Marker& m : system.markers()) size = std::max(size, m.p_BM.norm());
+  return size;
+}
+
+std::vector<double> OutputTimes(const AnalysisSettings& s) {
+  std::vector<double> t;
+  const double span = s.t_end - s.t_start;
+  // Number of whole output steps; a remainder below 1e-9 steps is round-off of t_end / dt.
+  const long n = static_cast<long>(std::floor(span / s.output_step + 1e-9));
+  for (long k = 0; k <= n; ++k) t.push_back(s.t_start + static_cast<double>(k) * s.output_step);
+  if (t.back() < s.t_end - 1e-9 * s.output_step) t.push_back(s.t_end);
+  t.back() = std::min(t.back(), s.t_end);
+  return t;
+}
+
+// IDA's absolute tolerances per unknown: atol on q and v, algebraic_atol on lambda and mu,
+// and atol * max(1, w_j) on the modal velocities of flexible bodies
+// (AnalysisSettings::modal_velocity_atol_by_frequency). Empty without flexible bodies.
+Eigen::VectorXd ComponentTolerances(const System& sys, const GglLayout& G,
+                                    const IdaOptions& options) {
+  const StateLayout& L = sys.layout();
+  bool flexible = false;
+  for (int b = 1; b < sys.num_bodies(); ++b) flexible = flexible || L.num_elastic(b) > 0;
+  if (!flexible) return {};
+  Eigen::VectorXd atol = Eigen::VectorXd::Constant(G.size(), options.algebraic_atol);
+  atol.head(G.nq() + G.nv()).setConstant(options.atol);
+  for (int b = 1; b < sys.num_bodies(); ++b) {
+    if (L.num_elastic(b) == 0) continue;
+    const Eigen::VectorXd& f = sys.body(b).elastic->frequencies_hz;
+    if (f.size() != L.num_elastic(b)) continue;  // a model without frequencies: unscaled
+    for (int j = 0; j < L.num_elastic(b); ++j)
+      atol[G.v() + L.elastic_v(b) + j] =
+          options.atol * std::max(1.0, 2.0 * std::numbers::pi * f[j]);
+  }
+  return atol;
+}
+
+RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
+                     const SampleSink& sink, const ProgressFn& progress) {
+  const System& sys = run.system;
+  const GglDae dae(sys);
+  const GglLayout& G = dae.ggl_layout();
+  ConstraintWorkspace& ws = dae.workspace();
+  AssemblePositions(sys, run.q0, settings.t_start, &ws, settings.assembly);  // sets angle branches
+  const AccelerationSolution acc = SolveAccelerations(sys, run.q0, run.v0, settings.t_start, &ws);
+  Eigen::VectorXd y, yp;
+  dae.MakeInitialValues(run.q0, run.v0, acc.vdot, acc.lambda, &y, &yp);
+  RunResult r;
+  IdaOptions options = settings.ida;
+  EMB_THROW_IF(!(settings.atol_floor_relative >= 0.0) ||
+                   !(settings.multiplier_atol_relative > 0.0) ||
+                   !(settings.initial_step_fraction >= 0.0),
+               "analysis: expected atol_floor_relative >= 0, multiplier_atol_relative > 0 and "
+               "initial_step_fraction >= 0, got "
+                   << settings.atol_floor_relative << ", " << settings.multiplier_atol_relative
+                   << " and " << settings.initial_step_fraction);
+  const double atol_floor = settings.atol_floor_relative * std::max(1.0, ModelSize(sys, run.q0));
+  if (options.atol < atol_floor) {
+    std::ostringstream o;
+    o << "atol " << options.atol << " is below the round-off floor of this model and was "
+      << "raised to " << atol_floor << " (atol_floor_relative " << settings.atol_floor_relative
+      << " x the model size)";
+    r.warnings.push_back(o.str());
+    options.atol = atol_floor;
+  }
+  if (settings.multiplier_atol > 0.0) {
+    options.algebraic_atol = settings.multiplier_atol;
+  } else {
+    const Eigen::VectorXd f0 = CalcGeneralizedForces(
+        sys, CalcBodyKinematics(sys, run.q0, run.v0), settings.t_start, &ws);
+    double force_scale = 1.0;
+    if (acc.lambda.size()) force_scale = std::max(force_scale, acc.lambda.cwiseAbs().maxCoeff());
+    if (f0.size()) force_scale = std::max(force_scale, f0.cwiseAbs().maxCoeff());
+    options.algebraic_atol = settings.multiplier_atol_relative * force_scale;
+  }
+  if (settings.modal_velocity_atol_by_frequency && options.component_atol.size() == 0)
+    options.component_atol = ComponentTolerances(sys, G, options);
+  if (options.initial_step <= 0.0 && settings.initial_step_fraction > 0.0)
+    options.initial_step = settings.initial_step_fraction *
+                           std::min(settings.output_step, settings.t_end - settings.t_start);
+  r.atol = options.atol;
+  r.multiplier_atol = options.algebraic_atol;
+  IdaSolver ida(dae, settings.t_start, y, yp, options);
+  r.linear_solver = ida.linear_solver();
+  r.jacobian_nonzeros = ida.jacobian_nonzeros();
+  const std::vector<double> times = OutputTimes(settings);
+  sink(MakeSample(sys, times[0], run.q0, run.v0, acc.vdot, acc.lambda, &ws));
+  r.num_samples = 1;
+  r.t_reached = times[0];
+  for (std::size_t k = 1; k < times.size(); ++k) {
+    const IdaReport rep = ida.AdvanceTo(times[k]);
+    const Eigen::VectorXd& yk = ida.y();
+    const Eigen::VectorXd& ypk = ida.yp();
+    r.t_reached = ida.t();
+    r.ida = rep;
+    if (!rep.ok()) {
+      r.status = RunStatus::kIntegratorFailure;
+      std::ostringstream o;
+      o << "IDA " << Name(rep.status) << " at t = " << rep.t << " s with step size "
+        << rep.last_step << " s; largest weighted local error " << rep.worst_weighted_error
+        << " in " << rep.worst_component_name;
+      if (!rep.message.empty()) o << " (" << rep.message << ")";
+      // The joint equation that is furthest from closing at the last accepted state.
+      const Eigen::VectorXd yq = ida.y().segment(G.q(), G.nq());
+      const ConstraintEval ce =
+          CalcConstraints(sys, CalcBodyKinematics(sys, yq, Eigen::VectorXd()), ida.t(), &ws);
+      const WorstEquation we = FindWorstEquation(ce.phi);
+      if (we.equation >= 0)
+        o << "; largest constraint residual " << we.residual << " in "
+          << sys.EquationName(we.equation);
+      if (rep.t <= settings.t_start && rep.status == IdaStatus::kConvergenceFailure)
+        o << "; the corrector failed at the start for every step size, which means the "
+             "tolerances are below the round-off floor of this model: raise atol (now "
+          << options.atol << ", atol_floor_relative " << settings.atol_floor_relative
+          << "), initial_step_fraction (now " << settings.initial_step_fraction
+          << ") or multiplier_atol_relative (now "
+          << settings.multiplier_atol_relative << ", atol " << options.algebraic_atol
+          << " on the multipliers), or rtol";
+      r.message = o.str();
+      break;
+    }
+    sink(MakeSample(sys, ida.t(), yk.segment(G.q(), G.nq()), yk.segment(G.v(), G.nv()),
+                    ypk.segment(G.v(), G.nv()), yk.segment(G.lambda(), G.m()), &ws));
+    ++r.num_samples;
+    ReportProgress(
+        progress, "dynamic",
+        (ida.t() - settings.t_start) / std::max(1e-300, settings.t_end - settings.t_start));
+  }
+  r.ida_stats = ida.stats();
+  return r;
+}
+
+}  // namespace internal
+}  // namespace emb::mbs

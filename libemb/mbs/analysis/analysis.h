@@ -1,0 +1,184 @@
+#pragma once
+/// @file
+/// The analyses of issue 4 on a finalized System:
+///  - assemble:     positions (and velocities) consistent with the constraints at t0;
+///  - kinematic:    nDOF = 0; at each output time solve Phi(q, t) = 0, C v = -Phi_t,
+///                  C vdot = gamma, and the reactions from C^T lambda = f - M vdot;
+///  - static:       equilibrium f(q, 0, t) - C^T lambda = 0, Phi(q, t) = 0 by Newton with
+///                  the analytic stiffness [df/dx - sum_k lambda_k K_k, -C^T; C, 0] and a
+///                  backtracking (Armijo) line search on the tolerance-weighted residual
+///                  (seed §1.4.2: let qdot = 0 in 1.24);
+///  - quasi-static: a sequence of statics at the output times (motions advance);
+///  - dynamic:      the GGL index-2 DAE (ggl_dae.h) integrated with IDA.
+/// PrepareRun() assembles, projects velocities, builds the DOF report and, if asked,
+/// removes redundant equations; RunAnalysis() streams Samples to a sink as it goes, so a
+/// failure keeps everything computed before it.
+
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "libemb/common/progress.h"
+#include "libemb/integrators/ida_solver.h"
+#include "libemb/mbs/constraints/assembly.h"
+#include "libemb/mbs/constraints/dof_analysis.h"
+#include "libemb/mbs/core/dynamics.h"
+#include "libemb/mbs/core/system.h"
+
+namespace emb::mbs {
+
+enum class AnalysisType { kAssemble, kKinematic, kStatic, kQuasiStatic, kDynamic };
+const char* Name(AnalysisType type);
+/// @throws InputError listing the valid names.
+AnalysisType ParseAnalysisType(const std::string& name);
+
+struct AnalysisSettings {
+  AnalysisType type{AnalysisType::kDynamic};
+  double t_start{0.0};       ///< [s]
+  double t_end{1.0};         ///< [s]
+  double output_step{0.01};  ///< [s] between samples
+  /// IDA settings: rtol, and atol for the differential unknowns (positions m, quaternion
+  /// components -, velocities m/s and rad/s). ida.algebraic_atol is not read: the dynamic
+  /// analysis sets it from the multiplier rule below.
+  IdaOptions ida;
+  /// The smallest atol the dynamic analysis uses for the differential unknowns, relative
+  /// to the model's size: floor = atol_floor_relative * max(1, L) [m, -, m/s, rad/s], L the
+  /// largest distance of a body's CM from the origin or of a marker from its CM at t0 [m]
+  /// (max(1, .) because quaternion components are O(1) whatever the size). A smaller
+  /// ida.atol is raised to the floor and the run says so (RunResult::warnings). Measured on
+  /// the slider-crank, engine (c) and pendulum scenes (0.05..0.5 m; benchmarks/README.md):
+  /// runs succeed down to atol = 1e-16 and fail from 1e-17, the round-off of positions of
+  /// that size; 1e-13 keeps three decades of margin. (The fixed 1e-11 floor of earlier
+  /// versions came from IDA's collapsing first step, see initial_step_fraction.)
+  double atol_floor_relative{1e-13};
+  /// The multipliers lambda (reactions, N or N m) and mu (GGL position multipliers, 0 at a
+  /// solution) are not error-tested, but IDA's Newton test weighs them with
+  /// 1/(rtol |y| + atol). Index-2 multipliers are only determined to O(eps/h) of the
+  /// model's forces, so too tight an atol on them makes the corrector fail at t0 for every
+  /// h. Their atol follows the force scale of the model:
+  ///   multiplier_atol_relative * F_ref,  F_ref = max(1, max |lambda(t0)|, max |f(t0)|)
+  /// (N or N m: the largest reaction or applied/gravity load at the start), so that the
+  /// reactions converge to 1e-4 of the model's own forces, whatever its size. Measured over
+  /// rtol 1e-3 .. 1e-10 on the slider-crank (F_ref = 543 N), engine (c) and double-pendulum
+  /// scenes: factors 1e-5 .. 1e-3 all run, with no trend in steps or error.
+  double multiplier_atol_relative{1e-4};
+  /// If > 0, the multipliers' atol as given [N, N m], instead of the relative rule.
+  double multiplier_atol{0.0};
+  /// Flexible bodies: the absolute tolerance of modal velocity j is atol * max(1, w_j)
+  /// (w_j = 2 pi f_j of the kept mode, rad/s) instead of atol, so that the error test weighs
+  /// a mode's velocity like its displacement (w_j d(eta_j) against d(eta_j'), the two parts
+  /// of its energy). With one atol for both, a mode at f Hz has its velocity resolved 2 pi f
+  /// times more finely than its displacement, and the lightly damped vibration of the
+  /// highest kept modes, not the motion, sets the step (measured: a slider-crank with a
+  /// flexible rod at 60 rpm took 10 us steps, tests/mbs/flexible/near_singular_test.cpp).
+  bool modal_velocity_atol_by_frequency{true};
+  /// IDA's first step as a fraction of the output step (used when ida.initial_step is 0;
+  /// 0 leaves the first step to IDA's own estimate).
+  /// IDA's own estimate keeps h |y'| below atol for every component, which for a model
+  /// released from rest (velocities exactly 0, accelerations ~1e4 rad/s^2) gives h ~ 1e-15 s,
+  /// far below the O(h^2) first-step error it guards against; at such h the multipliers'
+  /// Newton corrections are round-off amplified by 1/h (the unit-quaternion multiplier
+  /// moves by eps/h ~ 0.1) and the corrector fails at t0 for every smaller step. IDA's error
+  /// test still cuts a first step that is too long.
+  double initial_step_fraction{1e-3};
+  AssemblyOptions assembly;
+  /// Remove redundant equations (and report them) instead of failing.
+  bool remove_redundant{false};
+  /// Relative kinetic-energy-norm change of the initial velocities above which the
+  /// projection is reported as a warning (a user's v0 that was already consistent changes
+  /// only by round-off).
+  double velocity_warning_threshold{1e-8};
+  /// Static equilibrium: converged when max |Phi| <= assembly.tolerance and the force
+  /// residual max |f - C^T lambda| <= static_force_tolerance * (1 + max |f|).
+  double static_force_tolerance{1e-9};
+  int static_max_iterations{100};
+};
+
+/// A prepared run: the (possibly reduced) system and consistent initial values.
+struct PreparedRun {
+  System system;
+  DofReport dof;
+  Eigen::VectorXd q0, v0;
+  std::vector<std::string> warnings;
+};
+
+/// Assembles and checks the model. @throws InputError if the assembly does not close
+/// (residual and joint named), or if redundant equations remain and
+/// settings.remove_redundant is false (all of them named).
+PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings);
+
+/// One output sample.
+struct Sample {
+  double t{0.0};
+  Eigen::VectorXd q, v, vdot, lambda;
+  /// Per reaction port [F_J, T_J] (reactions.h): row e is element e (its first port), then
+  /// the couplers' second ports (System::reaction_ports()).
+  Eigen::MatrixXd reactions;
+  /// Per force element [F, T] on its first marker's body in its second marker's axes
+  /// (ForceElement::CalcLoad); NaN rows for elements that report none.
+  Eigen::MatrixXd force_loads;
+  /// Per sensor (System::sensors) [R_JW (p_I - p_J), rotation vector of R_J^T R_I].
+  Eigen::MatrixXd sensors;
+  Energies energies;
+  double position_residual{0.0};  ///< max |Phi|
+  double velocity_residual{0.0};  ///< max |C v + Phi_t|
+};
+using SampleSink = std::function<void(const Sample&)>;
+
+enum class RunStatus { kSuccess, kIntegratorFailure, kNewtonFailure, kNotKinematic };
+const char* Name(RunStatus status);
+
+/// How a static Newton solve ended.
+enum class NewtonStatus {
+  kConverged,
+  kMaxIterations,     ///< static_max_iterations reached with the residual above tolerance
+  kLineSearchFailed,  ///< no step length reduced the weighted residual (singular or
+                      ///< indefinite stiffness, a limit point of the load, a bad start)
+  kNonFinite,         ///< the residual became NaN or infinite
+};
+const char* Name(NewtonStatus status);
+
+/// The outcome of one static equilibrium solve, with where it stands.
+struct StaticReport {
+  NewtonStatus status{NewtonStatus::kConverged};
+  double t{0.0};           ///< [s]
+  int iterations{0};       ///< Newton iterations (Jacobian factorisations)
+  int residual_evals{0};   ///< including the line searches
+  double force_residual{0.0};     ///< max |f - C^T lambda| / (1 + max |f|) [-]
+  double position_residual{0.0};  ///< max |Phi| [m or rad]
+  std::string worst_force;        ///< component of the largest force residual
+  std::string worst_equation;     ///< equation of the largest |Phi|
+  double last_step_length{1.0};   ///< line-search factor of the last step
+  bool ok() const { return status == NewtonStatus::kConverged; }
+};
+
+struct RunResult {
+  RunStatus status{RunStatus::kSuccess};
+  std::string message;
+  double t_reached{0.0};
+  int num_samples{0};
+  IdaReport ida;             ///< dynamic analysis: where IDA stopped
+  IdaStats ida_stats;        ///< dynamic analysis: counters
+  /// Dynamic analysis: the tolerances IDA ran with (after the floor and the multiplier
+  /// rule) and the linear solver it used.
+  double atol{0.0}, multiplier_atol{0.0};
+  IdaLinearSolver linear_solver{IdaLinearSolver::kDense};
+  long jacobian_nonzeros{0};
+  std::vector<std::string> warnings;  ///< e.g. atol raised to the floor
+  int newton_iterations{0};  ///< kinematic/static: total
+  StaticReport static_report;  ///< static/quasi-static: the last (or failed) solve
+  bool ok() const { return status == RunStatus::kSuccess; }
+};
+
+/// Runs the analysis of `settings.type`, calling `sink` for every output time (including
+/// t_start). Numerical failures are a status; the sink has seen every sample before it.
+RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
+                      const SampleSink& sink, const ProgressFn& progress = {});
+
+/// A sample at (q, v, vdot, lambda, t), evaluating reactions, energies and residuals.
+Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
+                  const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
+                  const Eigen::VectorXd& lambda, ConstraintWorkspace* workspace);
+
+}  // namespace emb::mbs

@@ -1,0 +1,447 @@
+#include "libemb/mbs/analysis/ggl_dae.h"
+
+#include <vector>
+
+#include "libemb/mbs/core/dynamics.h"
+#include "libemb/mbs/forces/force_jacobian.h"
+#include "libemb/mbs/core/rotation.h"
+#include "libemb/mbs/core/system.h"
+
+namespace emb::mbs {
+
+GglDae::GglDae(const System& system)
+    : system_(system),
+      layout_(system.layout().nq(), system.layout().nv(), system.num_equations(),
+              system.layout().num_moving()),
+      workspace_(system) {}
+
+namespace {
+
+using Matrix67 = Eigen::Matrix<double, 6, 7>;
+
+// Per moving body, the map from q-space to [delta p, delta pi] (v-space) at e:
+//   X = d x / d q = [I 0; 0 (2/|e|^2) Q(e)^T]   (6 x 7),
+// so that B = d Phi/dq = C X per body and B^T mu = X^T C^T mu.
+Matrix67 MakeBodyMap(const Eigen::Vector4d& e) {
+  Matrix67 X = Matrix67::Zero();
+  X.block<3, 3>(0, 0).setIdentity();
+  X.block<3, 4>(3, 3) = (2.0 / e.squaredNorm()) * QuaternionRateMatrix(e).transpose();
+  return X;
+}
+
+// P(w) = d(Q(e) w)/de (Q(e) w is linear in e).
+Eigen::Matrix4d RateMatrixDerivative(const Eigen::Vector3d& w) {
+  Eigen::Matrix4d P;
+  P << 0, -w[0], -w[1], -w[2],  //
+      w[0], 0, w[2], -w[1],     //
+      w[1], -w[2], 0, w[0],     //
+      w[2], w[1], -w[0], 0;
+  return P;
+}
+
+// Emits blocks of body coordinates ([rigid 6, modal ne] per body, v-ordering) into the GGL
+// matrix: rows or columns in q-space map the rigid part through X_b (6 x 7) and the modal
+// part one to one; v-space rows and columns are the v-ordering shifted by G.v().
+class BodyBlockEmitter {
+ public:
+  BodyBlockEmitter(const StateLayout& L, const GglLayout& G, const std::vector<Matrix67>& X,
+                   MatrixAssembler* A)
+      : L_(L), G_(G), X_(X), A_(A) {}
+
+  // Rows of body a (q-space if `q_rows`, else v-space) x columns of body b (q or v).
+  void Block(int a, bool q_rows, int b, bool q_cols, const Eigen::MatrixXd& K) const {
+    ForEachBodySubBlock(L_, a, b, [&](int r, int c, int i0, int j0, int nr, int nc) {
+      const Eigen::MatrixXd sub = K.block(i0, j0, nr, nc);
+      const bool rigid_row = i0 == 0, rigid_col = j0 == 0;
+      const int row = q_rows ? (rigid_row ? G_.q() + L_.position(a) : G_.q() + L_.elastic_q(a))
+                             : G_.v() + r;
+      const int col = q_cols ? (rigid_col ? G_.q() + L_.position(b) : G_.q() + L_.elastic_q(b))
+                             : G_.v() + c;
+      if (q_rows && rigid_row && q_cols && rigid_col)
+        A_->AddBlock(row, col, X_[a].transpose() * sub * X_[b]);
+      else if (q_rows && rigid_row)
+        A_->AddBlock(row, col, X_[a].transpose() * sub);
+      else if (q_cols && rigid_col)
+        A_->AddBlock(row, col, sub * X_[b]);
+      else
+        A_->AddBlock(row, col, sub);
+    });
+  }
+  // A single row `row` x columns of body b.
+  void Row(int row, int b, bool q_cols, const Eigen::RowVectorXd& g) const {
+    A_->AddBlock(row, q_cols ? G_.q() + L_.position(b) : G_.v() + L_.velocity(b),
+                 q_cols ? Eigen::RowVectorXd(g.head<6>() * X_[b]) : Eigen::RowVectorXd(g.head<6>()));
+    const int ne = L_.num_elastic(b);
+    if (ne)
+      A_->AddBlock(row, q_cols ? G_.q() + L_.elastic_q(b) : G_.v() + L_.elastic_v(b), g.tail(ne));
+  }
+  // Rows of body b x a single column `col`.
+  void Column(int b, bool q_rows, int col, const Eigen::VectorXd& g) const {
+    A_->AddBlock(q_rows ? G_.q() + L_.position(b) : G_.v() + L_.velocity(b), col,
+                 q_rows ? Eigen::VectorXd(X_[b].transpose() * g.head<6>())
+                        : Eigen::VectorXd(g.head<6>()));
+    const int ne = L_.num_elastic(b);
+    if (ne)
+      A_->AddBlock(q_rows ? G_.q() + L_.elastic_q(b) : G_.v() + L_.elastic_v(b), col, g.tail(ne));
+  }
+
+ private:
+  const StateLayout& L_;
+  const GglLayout& G_;
+  const std::vector<Matrix67>& X_;
+  MatrixAssembler* A_;
+};
+
+// Force elements' blocks into the dynamic rows: -K_ab (q columns of b) and -D_ab (v columns).
+class GglForceSink final : public ForceJacobianSink {
+ public:
+  explicit GglForceSink(const BodyBlockEmitter& emit) : emit_(emit) {}
+  void AddStiffness(int a, int b, const Eigen::MatrixXd& K) override {
+    emit_.Block(a, false, b, true, -K);
+  }
+  void AddDamping(int a, int b, const Eigen::MatrixXd& D) override {
+    emit_.Block(a, false, b, false, -D);
+  }
+
+ private:
+  const BodyBlockEmitter& emit_;
+};
+
+// [I E] of one side of a kernel term (6 x body_nv), or I6.
+Eigen::MatrixXd TermMap(const Eigen::MatrixXd* E) {
+  const auto ne = E ? E->cols() : 0;
+  Eigen::MatrixXd X(6, 6 + ne);
+  X.leftCols<6>().setIdentity();
+  if (ne) X.rightCols(ne) = *E;
+  return X;
+}
+
+}  // namespace
+
+bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                            const Eigen::Ref<const Eigen::VectorXd>& yp,
+                            Eigen::Ref<Eigen::VectorXd> r) const {
+  const StateLayout& L = system_.layout();
+  const GglLayout& G = layout_;
+  const Eigen::VectorXd q = y.segment(G.q(), G.nq());
+  const Eigen::VectorXd v = y.segment(G.v(), G.nv());
+  const Eigen::VectorXd vdot = yp.segment(G.v(), G.nv());
+  const auto lambda = y.segment(G.lambda(), G.m());
+  const auto mu = y.segment(G.mu(), G.num_mu());
+  for (int b = 1; b < system_.num_bodies(); ++b)
+    if (!(q.segment<4>(L.quaternion(b)).norm() > 0.0)) return false;  // retry smaller step
+  if (!q.allFinite() || !v.allFinite()) return false;
+  const auto bodies = CalcBodyKinematics(system_, q, v);
+  const ConstraintEval c = CalcConstraints(system_, bodies, t, &workspace_);
+
+  // Kinematic rows: q' - H v + B^T mu, B^T mu = X_b^T (C^T mu)_b + [0; e_b mu_b].
+  const Eigen::VectorXd w = c.jacobian.transpose() * mu.head(G.m());
+  const Eigen::VectorXd f = CalcGeneralizedForces(system_, bodies, t, &workspace_, &vdot);
+  const Eigen::VectorXd reaction = c.jacobian.transpose() * lambda;
+  for (int b = 1; b < system_.num_bodies(); ++b) {
+    const Eigen::Vector4d e = q.segment<4>(L.quaternion(b));
+    const auto wb = w.segment<6>(L.velocity(b));
+    r.segment<3>(G.q() + L.position(b)) =
+        yp.segment<3>(G.q() + L.position(b)) - v.segment<3>(L.velocity(b)) + wb.head<3>();
+    r.segment<4>(G.q() + L.quaternion(b)) =
+        yp.segment<4>(G.q() + L.quaternion(b)) -
+        0.5 * QuaternionRateMatrix(e) * v.segment<3>(L.angular_velocity(b)) +
+        (2.0 / e.squaredNorm()) * QuaternionRateMatrix(e) * wb.tail<3>() +
+        mu[G.m() + b - 1] * e;
+    r[G.mu() + G.m() + b - 1] = 0.5 * (e.squaredNorm() - 1.0);
+    const int ne = L.num_elastic(b);
+    if (ne) {
+      // eta' - eta_dot + (C^T mu)_eta; M(eta) [vdot_b; eta''] - f + C^T lambda.
+      r.segment(G.q() + L.elastic_q(b), ne) = yp.segment(G.q() + L.elastic_q(b), ne) -
+                                              v.segment(L.elastic_v(b), ne) +
+                                              w.segment(L.elastic_v(b), ne);
+      Eigen::VectorXd a(6 + ne);
+      a << vdot.segment<6>(L.velocity(b)), vdot.segment(L.elastic_v(b), ne);
+      const Eigen::VectorXd Ma =
+          CalcBodyFlexibleTerms(system_, bodies[b], b, nullptr, false).mass * a;
+      r.segment<6>(G.v() + L.velocity(b)) =
+          Ma.head<6>() - f.segment<6>(L.velocity(b)) + reaction.segment<6>(L.velocity(b));
+      r.segment(G.v() + L.elastic_v(b), ne) = Ma.tail(ne) - f.segment(L.elastic_v(b), ne) +
+                                              reaction.segment(L.elastic_v(b), ne);
+      continue;
+    }
+    // Dynamic rows: M v' - f + C^T lambda, M = diag(m I, J_B) per body.
+    const RigidBody& body = system_.body(b);
+    r.segment<3>(G.v() + L.velocity(b)) = body.mass * yp.segment<3>(G.v() + L.velocity(b)) -
+                                          f.segment<3>(L.velocity(b)) +
+                                          reaction.segment<3>(L.velocity(b));
+    r.segment<3>(G.v() + L.angular_velocity(b)) =
+        body.inertia_B * yp.segment<3>(G.v() + L.angular_velocity(b)) -
+        f.segment<3>(L.angular_velocity(b)) + reaction.segment<3>(L.angular_velocity(b));
+  }
+  // Velocity and position constraints.
+  r.segment(G.lambda(), G.m()) = c.jacobian * v + c.phi_t;
+  r.segment(G.mu(), G.m()) = c.phi;
+  return r.allFinite();
+}
+
+void GglDae::DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                            const Eigen::Ref<const Eigen::VectorXd>& yp,
+                            Eigen::Ref<Eigen::MatrixXd> J) const {
+  assembler_.BeginDense(J);
+  AssembleJacobian(t, cj, y, &assembler_);
+  const std::vector<int> cols = FlexibleColumns();
+  if (cols.empty()) return;
+  Eigen::VectorXd r0(layout_.size());
+  if (!DoCalcResidual(t, y, yp, r0)) return;
+  for (int j : cols) J.col(j) = DifferenceColumn(t, cj, y, yp, r0, j);
+}
+
+void GglDae::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                  const Eigen::Ref<const Eigen::VectorXd>& yp,
+                                  SparseMatrixd* J) const {
+  assembler_.BeginSparse(J, layout_.size(), layout_.size());
+  AssembleJacobian(t, cj, y, &assembler_);
+  // The flexible columns are full in the structure (AssembleJacobian): overwrite them.
+  const std::vector<int> cols = FlexibleColumns();
+  if (cols.empty()) return;
+  Eigen::VectorXd r0(layout_.size());
+  if (!DoCalcResidual(t, y, yp, r0)) return;
+  for (int j : cols) {
+    const Eigen::VectorXd col = DifferenceColumn(t, cj, y, yp, r0, j);
+    for (int k = J->outerIndexPtr()[j]; k < J->outerIndexPtr()[j + 1]; ++k)
+      J->valuePtr()[k] = col[J->innerIndexPtr()[k]];
+  }
+}
+
+std::vector<int> GglDae::FlexibleColumns() const {
+  std::vector<int> cols;
+  const StateLayout& L = system_.layout();
+  for (int b = 1; b < system_.num_bodies(); ++b) {
+    const int ne = L.num_elastic(b);
+    if (!ne) continue;
+    for (int i = 0; i < StateLayout::kQPerBody; ++i) cols.push_back(layout_.q() + L.position(b) + i);
+    for (int i = 0; i < ne; ++i) cols.push_back(layout_.q() + L.elastic_q(b) + i);
+  }
+  return cols;
+}
+
+Eigen::VectorXd GglDae::DifferenceColumn(double t, double cj,
+                                         const Eigen::Ref<const Eigen::VectorXd>& y,
+                                         const Eigen::Ref<const Eigen::VectorXd>& yp,
+                                         const Eigen::VectorXd& r0, int j) const {
+  // Forward difference of F(y + h e_j, y' + cj h e_j) from F(y, y') = r0: truncation
+  // O(h F'') and cancellation O(eps |F| / h), both ~1e-8 relative with h ~ sqrt(eps) scaled
+  // by the coordinate (quaternion entries and modal coordinates are O(1e-3 .. 1)): ample
+  // for a Newton iteration matrix, at one residual per column.
+  const double h = 1.5e-8 * std::max(1e-3, std::abs(y[j]));
+  const int n = layout_.size();
+  Eigen::VectorXd y1 = y, yp1 = yp, rp(n);
+  y1[j] = y[j] + h;
+  yp1[j] = yp[j] + cj * h;
+  if (!DoCalcResidual(t, y1, yp1, rp)) return Eigen::VectorXd::Zero(n);
+  return (rp - r0) / h;
+}
+
+void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                              MatrixAssembler* A) const {
+  const StateLayout& L = system_.layout();
+  const GglLayout& G = layout_;
+  const int m = G.m();
+  const Eigen::VectorXd q = y.segment(G.q(), G.nq());
+  const Eigen::VectorXd v = y.segment(G.v(), G.nv());
+  const auto lambda = y.segment(G.lambda(), m);
+  const auto mu = y.segment(G.mu(), G.num_mu());
+  const auto bodies = CalcBodyKinematics(system_, q, v);
+  const ConstraintEval c = CalcConstraints(system_, bodies, t, &workspace_);
+  const Eigen::VectorXd w_all = c.jacobian.transpose() * mu.head(m);
+  std::vector<Matrix67> X(system_.num_bodies());
+  for (int b = 1; b < system_.num_bodies(); ++b) X[b] = MakeBodyMap(q.segment<4>(L.quaternion(b)));
+  const BodyBlockEmitter emit(L, G, X, A);
+
+  // Per body: cj I and the derivative of the maps in the kinematic rows, H, the
+  // unit-quaternion multiplier, cj M and the gyroscopic term (flexible bodies: cj M(eta)
+  // and the derivatives of their inertia, elastic and gravity terms).
+  for (int b = 1; b < system_.num_bodies(); ++b) {
+    const Eigen::Vector4d e = q.segment<4>(L.quaternion(b));
+    const double n2 = e.squaredNorm();
+    const Eigen::Vector3d w = w_all.segment<3>(L.angular_velocity(b));
+    const Eigen::Vector3d omega = v.segment<3>(L.angular_velocity(b));
+    const int rq = G.q() + L.position(b), rv = G.v() + L.velocity(b);
+    const int mu_b = G.mu() + m + b - 1;
+    Eigen::Matrix<double, 7, 7> Jqq = cj * Eigen::Matrix<double, 7, 7>::Identity();
+    Jqq.block<4, 4>(3, 3) += (2.0 / n2) * RateMatrixDerivative(w) -
+                             (4.0 / (n2 * n2)) * (QuaternionRateMatrix(e) * w) * e.transpose() +
+                             mu[m + b - 1] * Eigen::Matrix4d::Identity() -
+                             0.5 * RateMatrixDerivative(omega);
+    A->AddBlock(rq, rq, Jqq);
+    Eigen::Matrix<double, 7, 6> Jqv = Eigen::Matrix<double, 7, 6>::Zero();
+    Jqv.block<3, 3>(0, 0) = -Eigen::Matrix3d::Identity();
+    Jqv.block<4, 3>(3, 3) = -0.5 * QuaternionRateMatrix(e);
+    A->AddBlock(rq, rv, Jqv);
+    A->AddBlock(rq + 3, mu_b, e);
+    A->AddBlock(mu_b, rq + 3, e.transpose());
+    const int ne = L.num_elastic(b);
+    if (ne) {
+      const int eq = G.q() + L.elastic_q(b), ev = G.v() + L.elastic_v(b);
+      A->AddBlock(eq, eq, cj * Eigen::MatrixXd::Identity(ne, ne));
+      A->AddBlock(eq, ev, -Eigen::MatrixXd::Identity(ne, ne));
+      const FlexibleTerms ft = CalcBodyFlexibleTerms(system_, bodies[b], b, nullptr, true);
+      emit.Block(b, false, b, false, cj * ft.mass - ft.damping);
+      emit.Block(b, false, b, true, -ft.stiffness);
+      continue;
+    }
+    // d(omega x J omega)/d omega = [omega x] J - [(J omega) x]; f has its negative.
+    const RigidBody& body = system_.body(b);
+    Matrix6d Jvv = Matrix6d::Zero();
+    Jvv.block<3, 3>(0, 0) = cj * body.mass * Eigen::Matrix3d::Identity();
+    Jvv.block<3, 3>(3, 3) = cj * body.inertia_B + Skew(omega) * body.inertia_B -
+                            Skew(body.inertia_B * omega);
+    A->AddBlock(rv, rv, Jvv);
+  }
+
+  // Per kernel term of equation k between bodies (s0, s1): with G_s its gradient and H_st its
+  // second derivative blocks,
+  //   kinematic rows:   mu_k X_s^T H_st X_t        (B^T mu)
+  //   dynamic rows:     lambda_k H_st X_t          (C^T lambda)
+  //   lambda row k:     (sum_s v_s^T H_st) X_t,  G_t
+  //   mu row k:         G_t X_t;   columns lambda_k / mu_k: G_s^T / X_s^T G_s^T.
+  // The first two are summed over consecutive terms between the same two rigid bodies (the
+  // equations of one joint) and emitted once per run: one set of 7x7 blocks per joint
+  // instead of per equation. A term with a marker on a flexible body works in the body's
+  // coordinates through [I E] (constraint_eval.h) and is emitted on its own.
+  using Matrix12 = Eigen::Matrix<double, 12, 12>;
+  Matrix12 H_lambda = Matrix12::Zero(), H_mu = Matrix12::Zero();
+  int run_body[2] = {-1, -1};
+  auto emit_hessians = [&](const int body[2], const Matrix12& Hl, const Matrix12& Hm,
+                           const Eigen::MatrixXd* Ts) {
+    for (int s = 0; s < 2; ++s) {
+      if (L.is_ground(body[s])) continue;
+      for (int u = 0; u < 2; ++u) {
+        if (L.is_ground(body[u])) continue;
+        const Eigen::MatrixXd hm = Ts[s].transpose() * Hm.block<6, 6>(6 * s, 6 * u) * Ts[u];
+        const Eigen::MatrixXd hl = Ts[s].transpose() * Hl.block<6, 6>(6 * s, 6 * u) * Ts[u];
+        emit.Block(body[s], true, body[u], true, hm);
+        emit.Block(body[s], false, body[u], true, hl);
+      }
+    }
+  };
+  const Eigen::MatrixXd rigid_maps[2] = {TermMap(nullptr), TermMap(nullptr)};
+  auto flush = [&] {
+    if (run_body[0] < 0) return;
+    emit_hessians(run_body, H_lambda, H_mu, rigid_maps);
+    H_lambda.setZero();
+    H_mu.setZero();
+    run_body[0] = run_body[1] = -1;
+  };
+  VisitKernelTerms(system_, bodies, [&](const KernelTerm& term) {
+    const int k = term.equation;
+    const int body[2] = {term.body_i, term.body_j};
+    const bool flexible = term.E[0] != nullptr || term.E[1] != nullptr;
+    const Eigen::MatrixXd T[2] = {TermMap(term.E[0]), TermMap(term.E[1])};
+    if (flexible) {
+      flush();
+      emit_hessians(body, lambda[k] * term.hessian, mu[k] * term.hessian, T);
+    } else {
+      if (body[0] != run_body[0] || body[1] != run_body[1]) {
+        flush();
+        run_body[0] = body[0];
+        run_body[1] = body[1];
+      }
+      H_lambda += lambda[k] * term.hessian;
+      H_mu += mu[k] * term.hessian;
+    }
+    // Velocities of the two sides' virtual bodies: [I E] [v_b; eta'_b].
+    Eigen::Matrix<double, 12, 1> v_term = Eigen::Matrix<double, 12, 1>::Zero();
+    Eigen::VectorXd vb[2];
+    for (int s = 0; s < 2; ++s) {
+      if (L.is_ground(body[s])) continue;
+      const int ne = L.num_elastic(body[s]);
+      vb[s].resize(6 + ne);
+      vb[s].head<6>() = v.segment<6>(L.velocity(body[s]));
+      if (ne) vb[s].tail(ne) = v.segment(L.elastic_v(body[s]), ne);
+      v_term.segment<6>(6 * s) = T[s] * vb[s];
+    }
+    const Eigen::Matrix<double, 1, 12> v_H = v_term.transpose() * term.hessian;
+    for (int s = 0; s < 2; ++s) {
+      if (L.is_ground(body[s])) continue;
+      const Eigen::RowVectorXd g = term.gradient.segment<6>(6 * s) * T[s];
+      emit.Row(G.lambda() + k, body[s], true, v_H.segment<6>(6 * s) * T[s]);
+      emit.Row(G.lambda() + k, body[s], false, g);
+      emit.Row(G.mu() + k, body[s], true, g);
+      emit.Column(body[s], true, G.mu() + k, g.transpose());
+      emit.Column(body[s], false, G.lambda() + k, g.transpose());
+    }
+  });
+  flush();
+
+  // Force elements: analytic stiffness and damping.
+  GglForceSink sink(emit);
+  const auto& forces = system_.force_elements();
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    const ForceContext ctx{&system_, &bodies, t, &workspace_,
+                           system_.force_angle_slot(static_cast<int>(k))};
+    forces[k]->AddForceJacobian(ctx, &sink);
+  }
+  // The q-columns of flexible bodies are replaced by differences of the residual by the
+  // callers: make them full columns of the structure.
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(G.size());
+  for (int j : FlexibleColumns()) A->AddBlock(0, j, zero);
+  A->Finish();
+}
+
+Eigen::VectorXd GglDae::DoDifferentialMask() const {
+  Eigen::VectorXd mask = Eigen::VectorXd::Zero(layout_.size());
+  mask.head(layout_.nq() + layout_.nv()).setOnes();
+  return mask;
+}
+
+std::string GglDae::DoComponentName(int i) const {
+  const StateLayout& L = system_.layout();
+  const GglLayout& G = layout_;
+  static const char* kQ[] = {"p_WB.x", "p_WB.y", "p_WB.z", "e.w", "e.x", "e.y", "e.z"};
+  static const char* kV[] = {"v_WB.x", "v_WB.y", "v_WB.z", "omega_B.x", "omega_B.y", "omega_B.z"};
+  auto modal = [&](int k, bool rate) {
+    for (int b = 1; b < system_.num_bodies(); ++b) {
+      const int start = rate ? L.elastic_v(b) : L.elastic_q(b);
+      if (L.num_elastic(b) && k >= start && k < start + L.num_elastic(b))
+        return "body '" + system_.body(b).name + "' " + (rate ? "eta'" : "eta") + "[" +
+               std::to_string(k - start) + "]";
+    }
+    return std::string("?");
+  };
+  const int rigid_q = StateLayout::kQPerBody * L.num_moving();
+  const int rigid_v = StateLayout::kVPerBody * L.num_moving();
+  if (i < G.v()) {
+    if (i >= rigid_q) return modal(i, false);
+    const int b = i / StateLayout::kQPerBody + 1;
+    return "body '" + system_.body(b).name + "' " + kQ[i - L.position(b)];
+  }
+  if (i < G.lambda()) {
+    const int k = i - G.v();
+    if (k >= rigid_v) return modal(k, true);
+    const int b = k / StateLayout::kVPerBody + 1;
+    return "body '" + system_.body(b).name + "' " + kV[k - L.velocity(b)];
+  }
+  if (i < G.mu()) return "lambda of " + system_.EquationName(i - G.lambda());
+  const int k = i - G.mu();
+  if (k < G.m()) return "mu of " + system_.EquationName(k);
+  return "mu of unit quaternion of body '" + system_.body(k - G.m() + 1).name + "'";
+}
+
+void GglDae::MakeInitialValues(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                               const Eigen::VectorXd& vdot, const Eigen::VectorXd& lambda,
+                               Eigen::VectorXd* y, Eigen::VectorXd* yp) const {
+  const StateLayout& L = system_.layout();
+  const GglLayout& G = layout_;
+  y->setZero(G.size());
+  yp->setZero(G.size());
+  y->segment(G.q(), G.nq()) = q;
+  y->segment(G.v(), G.nv()) = v;
+  y->segment(G.lambda(), G.m()) = lambda;
+  for (int b = 1; b < system_.num_bodies(); ++b) {
+    yp->segment<3>(L.position(b)) = v.segment<3>(L.velocity(b));
+    yp->segment<4>(L.quaternion(b)) = 0.5 * QuaternionRateMatrix(q.segment<4>(L.quaternion(b))) *
+                                      v.segment<3>(L.angular_velocity(b));
+    const int ne = L.num_elastic(b);
+    if (ne) yp->segment(L.elastic_q(b), ne) = v.segment(L.elastic_v(b), ne);
+  }
+  yp->segment(G.v(), G.nv()) = vdot;
+}
+
+}  // namespace emb::mbs

@@ -1,0 +1,109 @@
+#pragma once
+/// @file
+/// The constrained equations of motion (seed eq. 1.24) in the stabilised index-2 form of
+/// Gear, Gupta and Leimkuhler (GGL), as in SUNDIALS' idaSlCrank_dns example, for
+/// quaternion coordinates. Unknowns y = [q (nq), v (nv), lambda (m), mu (m + nb)]:
+///
+///   q'  - H(q) v + B(q)^T mu       = 0   (nq)  kinematics, stabilised
+///   M v' - f(q, v, t) + C(q)^T lambda = 0 (nv)  Newton-Euler with reactions
+///   C(q) v + Phi_t(t)              = 0   (m)   velocity constraints
+///   [Phi(q, t); (|e_b|^2 - 1)/2]   = 0   (m + nb) position and unit-quaternion constraints
+///
+/// with H v = [v_WB; 1/2 Q(e) omega_B] per body, C the velocity Jacobian (constraint_eval.h)
+/// and B = d[Phi; (|e|^2-1)/2]/dq, whose quaternion block is C_pi (2/|e|) Q(e/|e|)^T
+/// (the rotation is evaluated from the normalised quaternion) and e^T for the norm row.
+/// At a solution mu = 0; the mu terms only pull q back onto the constraint manifold.
+/// lambda and mu are algebraic and excluded from IDA's error test.
+///
+/// The iteration matrix dF/dy + cj dF/dy' is analytic: besides cj I, cj M, H, C, B and the
+/// gyroscopic term it has the second-derivative terms sum_k lambda_k K_k, sum_k mu_k K_k
+/// and v^T K_k of the constraint kernels (EvalKernelHessian), mapped from [delta p, delta pi]
+/// to q by X_b = [I 0; 0 (2/|e|^2) Q(e)^T] (delta pi = (2/|e|^2) Q(e)^T delta e), the
+/// derivative of that map in B^T mu, and the force elements' stiffness -K_ab X_b and
+/// damping -D_ab (force_jacobian.h). It is assembled block by block (per body, per kernel
+/// term, per force element) through a MatrixAssembler, into a dense matrix for the dense
+/// solver or into a compressed-column matrix whose structure is fixed at the first call
+/// (KLU): O(number of blocks) per evaluation, no n x n work on the sparse path. Flexible
+/// bodies: see FlexibleColumns().
+
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "libemb/integrators/dae_problem.h"
+#include "libemb/mbs/constraints/constraint_eval.h"
+
+namespace emb::mbs {
+
+class System;
+
+/// Offsets of the blocks of the GGL unknown vector.
+class GglLayout {
+ public:
+  GglLayout() = default;
+  GglLayout(int nq, int nv, int m, int num_moving) : nq_(nq), nv_(nv), m_(m), nb_(num_moving) {}
+  int q() const { return 0; }
+  int v() const { return nq_; }
+  int lambda() const { return nq_ + nv_; }
+  int mu() const { return nq_ + nv_ + m_; }
+  int size() const { return nq_ + nv_ + 2 * m_ + nb_; }
+  int nq() const { return nq_; }
+  int nv() const { return nv_; }
+  int m() const { return m_; }
+  int num_mu() const { return m_ + nb_; }
+
+ private:
+  int nq_{0}, nv_{0}, m_{0}, nb_{0};
+};
+
+/// The GGL DAE of a finalized System. Holds a mutable ConstraintWorkspace (continuous
+/// joint angles), so one instance serves one integration at a time.
+class GglDae final : public DaeProblem {
+ public:
+  explicit GglDae(const System& system);
+
+  const GglLayout& ggl_layout() const { return layout_; }
+
+  /// Consistent (y, y') from an assembled q, projected v and the acceleration solution.
+  void MakeInitialValues(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                         const Eigen::VectorXd& vdot, const Eigen::VectorXd& lambda,
+                         Eigen::VectorXd* y, Eigen::VectorXd* yp) const;
+
+  ConstraintWorkspace& workspace() const { return workspace_; }
+
+ protected:
+  int DoSize() const override { return layout_.size(); }
+  bool DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                      const Eigen::Ref<const Eigen::VectorXd>& yp,
+                      Eigen::Ref<Eigen::VectorXd> r) const override;
+  bool DoHasJacobian() const override { return true; }
+  void DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                      const Eigen::Ref<const Eigen::VectorXd>& yp,
+                      Eigen::Ref<Eigen::MatrixXd> jacobian) const override;
+  Eigen::VectorXd DoDifferentialMask() const override;
+  std::string DoComponentName(int i) const override;
+  bool DoHasSparseJacobian() const override { return true; }
+  void DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                            const Eigen::Ref<const Eigen::VectorXd>& yp,
+                            SparseMatrixd* jacobian) const override;
+
+ private:
+  // The q-columns of flexible bodies (rigid part and modal coordinates): their analytic
+  // second-derivative terms through the interface markers are incomplete (the derivatives of
+  // the marker map E, kinematics.h), so the iteration matrix takes them from central
+  // differences of the residual instead, one residual per column.
+  std::vector<int> FlexibleColumns() const;
+  Eigen::VectorXd DifferenceColumn(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                                   const Eigen::Ref<const Eigen::VectorXd>& yp,
+                                   const Eigen::VectorXd& r0, int j) const;
+  // The iteration matrix through `assembler` (begun by the caller; finished here).
+  void AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                        MatrixAssembler* assembler) const;
+
+  const System& system_;
+  GglLayout layout_;
+  mutable ConstraintWorkspace workspace_;
+  mutable MatrixAssembler assembler_;  // keeps the sparse structure between calls
+};
+
+}  // namespace emb::mbs

@@ -1,0 +1,111 @@
+#include "libemb/mbs/constraints/constraint_eval.h"
+
+#include <cmath>
+#include <limits>
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/constraints/primitive.h"
+#include "libemb/mbs/core/rotation.h"
+#include "libemb/mbs/core/system.h"
+
+namespace emb::mbs {
+
+ConstraintWorkspace::ConstraintWorkspace(const System& system)
+    : angle_(system.num_angle_slots(), std::numeric_limits<double>::quiet_NaN()) {}
+
+double ConstraintWorkspace::Unwrap(int slot, double raw, double hint) {
+  EMB_CHECK(slot >= 0 && slot < static_cast<int>(angle_.size()));
+  double& a = angle_[slot];
+  const double reference = std::isnan(a) ? hint : a;
+  a = reference + WrapAngle(raw - reference);
+  return a;
+}
+
+void ConstraintWorkspace::Reset() {
+  for (double& a : angle_) a = std::numeric_limits<double>::quiet_NaN();
+}
+
+ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinematics>& bodies,
+                               double t, ConstraintWorkspace* workspace) {
+  const StateLayout& L = system.layout();
+  const int m = system.num_equations();
+  ConstraintEval c;
+  c.phi.setZero(m);
+  c.quadratic.setZero(m);
+  c.phi_t.setZero(m);
+  c.phi_tt.setZero(m);
+  std::vector<Eigen::Triplet<double, int>> triplets;
+  triplets.reserve(12 * static_cast<std::size_t>(m));
+  auto add_row = [&](int k, const MarkerKinematics& M, double a,
+                     const Eigen::Matrix<double, 1, 6>& d) {
+    if (L.is_ground(M.body)) return;
+    for (int i = 0; i < 6; ++i) triplets.emplace_back(k, L.velocity(M.body) + i, a * d[i]);
+    if (!M.flexible()) return;
+    const Eigen::RowVectorXd de = d * M.E;  // the modal columns (kinematics.h)
+    for (int i = 0; i < de.size(); ++i)
+      triplets.emplace_back(k, L.elastic_v(M.body) + i, a * de[i]);
+  };
+  for (int k = 0; k < m; ++k) {
+    const ScalarEquation& eq = system.equations()[k];
+    FunctionValue f;
+    if (eq.has_function) f = eq.function.Eval(t);
+    for (int term = 0; term < eq.num_terms; ++term) {
+      const MarkerKinematics I = CalcMarkerKinematics(system, bodies, eq.marker_i[term]);
+      const MarkerKinematics J = CalcMarkerKinematics(system, bodies, eq.marker_j[term]);
+      const KernelEval g = EvalKernel(eq.kernel[term], I, J);
+      double value = g.value;
+      if (eq.angle_slot[term] >= 0) {
+        EMB_CHECK(workspace != nullptr);
+        // For a single-term motion the target branch is f(t); otherwise the raw branch.
+        const double hint = eq.num_terms == 1 && eq.has_function ? f.f : g.value;
+        value = workspace->Unwrap(eq.angle_slot[term], g.value, hint);
+      }
+      const double a = eq.coeff[term];
+      c.phi[k] += a * value;
+      add_row(k, I, a, g.d_i);
+      add_row(k, J, a, g.d_j);
+      c.quadratic[k] += a * (g.quadratic + g.d_i.dot(I.extra) + g.d_j.dot(J.extra));
+    }
+    if (eq.has_function) {
+      c.phi[k] -= f.f;
+      c.phi_t[k] = -f.df;
+      c.phi_tt[k] = -f.d2f;
+    }
+  }
+  c.jacobian.resize(m, L.nv());
+  c.jacobian.setFromTriplets(triplets.begin(), triplets.end());  // sums shared bodies
+  return c;
+}
+
+void VisitKernelTerms(const System& system, const std::vector<BodyKinematics>& bodies,
+                      const std::function<void(const KernelTerm&)>& visit) {
+  KernelTerm term;
+  for (int k = 0; k < system.num_equations(); ++k) {
+    const ScalarEquation& eq = system.equations()[k];
+    for (int n = 0; n < eq.num_terms; ++n) {
+      const MarkerKinematics I = CalcMarkerKinematics(system, bodies, eq.marker_i[n]);
+      const MarkerKinematics J = CalcMarkerKinematics(system, bodies, eq.marker_j[n]);
+      const KernelEval g = EvalKernel(eq.kernel[n], I, J);
+      const double a = eq.coeff[n];
+      term.equation = k;
+      term.body_i = I.body;
+      term.body_j = J.body;
+      term.gradient << a * g.d_i, a * g.d_j;
+      term.hessian = a * EvalKernelHessian(eq.kernel[n], I, J);
+      term.E[0] = I.flexible() ? &I.E : nullptr;
+      term.E[1] = J.flexible() ? &J.E : nullptr;
+      visit(term);
+    }
+  }
+}
+
+WorstEquation FindWorstEquation(const Eigen::VectorXd& phi) {
+  WorstEquation w;
+  if (phi.size() == 0) return w;
+  Eigen::Index i = 0;
+  w.residual = phi.cwiseAbs().maxCoeff(&i);
+  w.equation = static_cast<int>(i);
+  return w;
+}
+
+}  // namespace emb::mbs

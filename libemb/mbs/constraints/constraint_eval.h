@@ -1,0 +1,81 @@
+#pragma once
+/// @file
+/// Evaluation of all scalar constraint equations of a System (seed eq. 1.24, second part):
+/// values Phi(q, t), the Jacobian C = dPhi/d[delta p, delta pi] (m x nv), the velocity
+/// term C v, the quadratic term Cdot v and the explicit time derivatives, so that
+///   velocity level:      C v + Phi_t = 0,
+///   acceleration level:  C vdot = gamma = -(Cdot v) - Phi_tt.
+/// C is sparse: an equation touches at most four bodies (two kernel terms of a coupler),
+/// so a row has at most 24 non-zeros. Cost O(m).
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+#include <functional>
+#include <vector>
+
+#include "libemb/mbs/core/kinematics.h"
+
+namespace emb::mbs {
+
+class System;
+
+/// Continuous (unwrapped) values of the angle kernels, one slot each: the mutable part of
+/// a run. A slot starts unset; its first value is taken on the branch nearest to the
+/// equation's target (f(t) for a motion) and later values within +-pi of the previous one.
+class ConstraintWorkspace {
+ public:
+  explicit ConstraintWorkspace(const System& system);
+  /// The continuous angle for raw atan2 value `raw` [rad].
+  double Unwrap(int slot, double raw, double hint);
+  /// Forgets all slots (e.g. before a new assembly).
+  void Reset();
+
+ private:
+  std::vector<double> angle_;
+};
+
+/// The constraint Jacobian C (m x nv), row-major sparse.
+using ConstraintJacobian = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+
+/// Values of all equations at one configuration.
+struct ConstraintEval {
+  Eigen::VectorXd phi;          ///< Phi(q, t), m
+  ConstraintJacobian jacobian;  ///< C, m x nv (use Eigen::MatrixXd(C) for dense algorithms)
+  Eigen::VectorXd quadratic;  ///< Cdot v, m
+  Eigen::VectorXd phi_t;      ///< dPhi/dt, m
+  Eigen::VectorXd phi_tt;     ///< d2Phi/dt2, m
+  /// gamma = -(Cdot v) - Phi_tt (acceleration right-hand side).
+  Eigen::VectorXd gamma() const { return -quadratic - phi_tt; }
+};
+
+/// Evaluates all equations at body kinematics `bodies` and time t.
+ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinematics>& bodies,
+                               double t, ConstraintWorkspace* workspace);
+
+/// One kernel term (coeff g) of equation `equation` between the bodies of markers I and J,
+/// with its Jacobian row and second derivatives in x = [delta p_i, delta pi_i, delta p_j,
+/// delta pi_j] (primitive.h), both already multiplied by the coefficient.
+struct KernelTerm {
+  int equation{0};
+  int body_i{0}, body_j{0};                        ///< 0 = ground
+  Eigen::Matrix<double, 1, 12> gradient;           ///< coeff [d_i, d_j]
+  Eigen::Matrix<double, 12, 12> hessian;           ///< coeff EvalKernelHessian(...)
+  /// Markers on flexible bodies: their E (kinematics.h), valid during the visit; the modal
+  /// columns of the gradient are gradient_s E_s, and [I E]^T hessian [I E] stands for the
+  /// second derivatives (the derivatives of E itself are left out of iteration matrices).
+  const Eigen::MatrixXd* E[2]{nullptr, nullptr};
+};
+
+/// Calls `visit` for every kernel term of every equation, in equation order (the iteration
+/// matrices of the GGL DAE and of statics are assembled from these). Cost O(m).
+void VisitKernelTerms(const System& system, const std::vector<BodyKinematics>& bodies,
+                      const std::function<void(const KernelTerm&)>& visit);
+
+/// The equation with the largest |Phi| and its value (for "assembly failed at ..." reports).
+struct WorstEquation {
+  int equation{-1};
+  double residual{0.0};
+};
+WorstEquation FindWorstEquation(const Eigen::VectorXd& phi);
+
+}  // namespace emb::mbs

@@ -1,0 +1,36 @@
+#include "libemb/mbs/core/force_element.h"
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/core/system.h"
+
+namespace emb::mbs {
+
+void ForceElement::AddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr);
+  EMB_CHECK(f.size() == ctx.system->layout().nv());
+  DoAddForces(ctx, f);
+}
+
+void ForceElement::AddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr && sink != nullptr);
+  DoAddForceJacobian(ctx, sink);
+}
+
+void AddWrench(const StateLayout& layout, const MarkerKinematics& M, const Eigen::Vector3d& p_WQ,
+               const Eigen::Vector3d& F_W, const Eigen::Vector3d& T_W,
+               Eigen::Ref<Eigen::VectorXd> f) {
+  const Eigen::Vector3d p_WB = M.p_WM - M.s_W;
+  Eigen::Matrix<double, 6, 1> f6;
+  f6 << F_W, M.R_WB.transpose() * (T_W + (p_WQ - p_WB).cross(F_W));
+  AddMarkerForce(layout, M, f6, f);
+}
+
+void AddMarkerForce(const StateLayout& layout, const MarkerKinematics& M,
+                    const Eigen::Matrix<double, 6, 1>& f6, Eigen::Ref<Eigen::VectorXd> f) {
+  if (layout.is_ground(M.body)) return;
+  f.segment<6>(layout.velocity(M.body)) += f6;
+  if (M.flexible())
+    f.segment(layout.elastic_v(M.body), M.E.cols()) += M.E.transpose() * f6;
+}
+
+}  // namespace emb::mbs

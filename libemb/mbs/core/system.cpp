@@ -1,0 +1,327 @@
+#include "libemb/mbs/core/system.h"
+
+#include <algorithm>
+#include <set>
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/core/rotation.h"
+
+namespace emb::mbs {
+namespace {
+
+int EditDistance(const std::string& a, const std::string& b) {
+  std::vector<int> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = static_cast<int>(j);
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = static_cast<int>(i);
+    for (std::size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+template <typename T>
+std::vector<std::string> Names(const std::vector<T>& v) {
+  std::vector<std::string> n;
+  for (const auto& x : v) n.push_back(x.name);
+  return n;
+}
+
+template <typename T>
+int FindByName(const std::vector<T>& v, const std::string& name, const char* what) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (v[i].name == name) return static_cast<int>(i);
+  EMB_THROW(InputError, "unknown " << what << " '" << name << "'" << DidYouMean(name, Names(v)));
+}
+
+}  // namespace
+
+std::string DidYouMean(const std::string& name, const std::vector<std::string>& candidates) {
+  std::string best;
+  int best_d = 1 << 30;
+  for (const auto& c : candidates) {
+    const int d = EditDistance(name, c);
+    if (d < best_d) best_d = d, best = c;
+  }
+  // Suggest only near misses: at most a third of the name wrong (and at least 2 edits).
+  if (best.empty() || best_d > std::max<int>(2, static_cast<int>(name.size()) / 3)) return "";
+  return "; did you mean '" + best + "'?";
+}
+
+System::System() {
+  RigidBody ground;
+  ground.name = "ground";
+  ground.mass = 0.0;
+  bodies_.push_back(ground);
+}
+
+void System::CheckNotFinalized(const char* what) const {
+  if (finalized_) EMB_THROW(InternalError, std::string("System::") + what + " after Finalize");
+}
+
+void System::CheckNewName(const std::string& name, const char* what) const {
+  EMB_THROW_IF(name.empty(), what << ": expected a non-empty name");
+}
+
+int System::AddBody(const RigidBody& body) {
+  CheckNotFinalized("AddBody");
+  CheckNewName(body.name, "body");
+  for (const auto& b : bodies_)
+    EMB_THROW_IF(b.name == body.name, "body '" << body.name << "' is defined twice");
+  body.Validate();
+  bodies_.push_back(body);
+  return num_bodies() - 1;
+}
+
+int System::AddMarker(const std::string& name, const std::string& body_name,
+                      const Eigen::Vector3d& p_BM, const Eigen::Matrix3d& R_BM) {
+  CheckNotFinalized("AddMarker");
+  CheckNewName(name, "marker");
+  for (const auto& m : markers_)
+    EMB_THROW_IF(m.name == name, "marker '" << name << "' is defined twice");
+  // Tolerance on R^T R = I for axes typed with ~12 digits.
+  constexpr double kOrthonormalTolerance = 1e-9;
+  EMB_THROW_IF(
+      !R_BM.allFinite() ||
+          (R_BM.transpose() * R_BM - Eigen::Matrix3d::Identity()).norm() > kOrthonormalTolerance ||
+          R_BM.determinant() < 0,
+      "marker '" << name << "': expected orthonormal right-handed axes");
+  Marker m{name, FindBody(body_name), p_BM, R_BM, {}, {}};
+  markers_.push_back(m);
+  return static_cast<int>(markers_.size()) - 1;
+}
+
+int System::AddFlexibleMarker(const std::string& name, const std::string& body_name,
+                              const Eigen::Vector3d& p_BM, const Eigen::Matrix3d& R_BM,
+                              const Eigen::MatrixXd& shape_t, const Eigen::MatrixXd& shape_r) {
+  const int b = FindBody(body_name);
+  const int ne = bodies_[b].num_modes();
+  EMB_THROW_IF(ne == 0, "marker '" << name << "': body '" << body_name << "' is not flexible");
+  EMB_THROW_IF(shape_t.rows() != 3 || shape_r.rows() != 3 || shape_t.cols() != ne ||
+                   shape_r.cols() != ne,
+               "marker '" << name << "': expected 3 x " << ne << " translation and rotation "
+                          << "shapes for the modes of body '" << body_name << "'");
+  const int k = AddMarker(name, body_name, p_BM, R_BM);
+  markers_[k].shape_t = shape_t;
+  markers_[k].shape_r = shape_r;
+  return k;
+}
+
+int System::AddJoint(const std::string& name, JointType type, const std::string& marker_i,
+                     const std::string& marker_j) {
+  CheckNotFinalized("AddJoint");
+  CheckNewName(name, "joint");
+  for (const auto& e : elements_)
+    EMB_THROW_IF(e.name == name, "constraint '" << name << "' is defined twice");
+  ConstraintElement e;
+  e.name = name;
+  e.kind = ElementKind::kJoint;
+  e.type = type;
+  e.marker_i = FindMarker(marker_i);
+  e.marker_j = FindMarker(marker_j);
+  EMB_THROW_IF(markers_[e.marker_i].body == markers_[e.marker_j].body,
+               "joint '" << name << "': markers '" << marker_i << "' and '" << marker_j
+                         << "' are on the same body '" << bodies_[markers_[e.marker_i].body].name
+                         << "'; expected markers on two different bodies");
+  const int index = static_cast<int>(elements_.size());
+  for (const auto& [kernel, label] : JointKernels(type)) {
+    ScalarEquation q;
+    q.element = index;
+    q.label = label;
+    q.kernel[0] = kernel;
+    q.marker_i[0] = e.marker_i;
+    q.marker_j[0] = e.marker_j;
+    pending_.push_back(q);
+  }
+  elements_.push_back(e);
+  return index;
+}
+
+int System::AddMotion(const std::string& name, const std::string& joint, JointCoordinate c,
+                      const TimeFunction& f) {
+  CheckNotFinalized("AddMotion");
+  CheckNewName(name, "motion");
+  const int j = FindElement(joint);
+  const ConstraintElement& je = elements_[j];
+  EMB_THROW_IF(je.kind != ElementKind::kJoint,
+               "motion '" << name << "': '" << joint << "' is not a joint");
+  ConstraintElement e = je;
+  e.name = name;
+  e.kind = ElementKind::kMotion;
+  ScalarEquation q;
+  q.element = static_cast<int>(elements_.size());
+  q.label = std::string("motion ") + Name(c) + " of '" + joint + "'";
+  q.kernel[0] = CoordinateKernel(je.type, c, joint);
+  q.marker_i[0] = je.marker_i;
+  q.marker_j[0] = je.marker_j;
+  q.has_function = true;
+  q.function = f;
+  pending_.push_back(q);
+  elements_.push_back(e);
+  return q.element;
+}
+
+int System::AddCoupler(const std::string& name, const std::string& joint1, JointCoordinate c1,
+                       const std::string& joint2, JointCoordinate c2, double ratio, double offset) {
+  CheckNotFinalized("AddCoupler");
+  CheckNewName(name, "coupler");
+  const ConstraintElement& j1 = elements_[FindElement(joint1)];
+  const ConstraintElement& j2 = elements_[FindElement(joint2)];
+  ConstraintElement e;
+  e.name = name;
+  e.kind = ElementKind::kCoupler;
+  e.type = j1.type;
+  e.marker_i = j1.marker_i;
+  e.marker_j = j1.marker_j;
+  e.marker_i2 = j2.marker_i;
+  e.marker_j2 = j2.marker_j;
+  e.second_joint = joint2;
+  ScalarEquation q;
+  q.element = static_cast<int>(elements_.size());
+  q.label = "coupler " + joint1 + " - ratio " + joint2;
+  q.num_terms = 2;
+  q.kernel[0] = CoordinateKernel(j1.type, c1, joint1);
+  q.kernel[1] = CoordinateKernel(j2.type, c2, joint2);
+  q.marker_i[0] = j1.marker_i;
+  q.marker_j[0] = j1.marker_j;
+  q.marker_i[1] = j2.marker_i;
+  q.marker_j[1] = j2.marker_j;
+  q.coeff[0] = 1.0;
+  q.coeff[1] = -ratio;
+  q.has_function = true;
+  q.function = TimeFunction::Constant(offset);
+  pending_.push_back(q);
+  elements_.push_back(e);
+  return q.element;
+}
+
+void System::AddForceElement(std::shared_ptr<const ForceElement> element) {
+  CheckNotFinalized("AddForceElement");
+  EMB_CHECK(element != nullptr);
+  for (int m : element->markers()) EMB_CHECK(m >= 0 && m < static_cast<int>(markers_.size()));
+  forces_.push_back(std::move(element));
+}
+
+void System::AddSensor(const std::string& name, const std::string& marker_i,
+                       const std::string& marker_j) {
+  CheckNotFinalized("AddSensor");
+  CheckNewName(name, "sensor");
+  for (const auto& s : sensors_)
+    EMB_THROW_IF(s.name == name, "sensor '" << name << "' is defined twice");
+  sensors_.push_back({name, FindMarker(marker_i), FindMarker(marker_j)});
+}
+
+void System::Finalize() {
+  CheckNotFinalized("Finalize");
+  std::vector<int> ne;
+  for (const auto& b : bodies_) ne.push_back(b.num_modes());
+  layout_ = StateLayout(num_bodies(), ne);
+  // A marker added on a flexible body with AddMarker stays at its undeformed place only if
+  // the body is rigid: give it zero shapes (it then moves with the reference frame).
+  for (auto& m : markers_)
+    if (ne[m.body] > 0 && m.shape_t.size() == 0) {
+      m.shape_t.setZero(3, ne[m.body]);
+      m.shape_r.setZero(3, ne[m.body]);
+    }
+  equations_.clear();
+  // Keep the equations grouped by element in element order.
+  for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
+    elements_[e].first_equation = static_cast<int>(equations_.size());
+    elements_[e].num_equations = 0;
+    for (const auto& q : pending_)
+      if (q.element == e) {
+        equations_.push_back(q);
+        ++elements_[e].num_equations;
+      }
+  }
+  num_angle_slots_ = 0;
+  for (auto& q : equations_)
+    for (int k = 0; k < q.num_terms; ++k)
+      q.angle_slot[k] = q.kernel[k].kind == KernelKind::kAngle ? num_angle_slots_++ : -1;
+  ports_.clear();
+  for (int e = 0; e < static_cast<int>(elements_.size()); ++e)
+    ports_.push_back({elements_[e].name, e, 0, elements_[e].marker_i, elements_[e].marker_j});
+  for (int e = 0; e < static_cast<int>(elements_.size()); ++e) {
+    const ConstraintElement& c = elements_[e];
+    if (c.kind == ElementKind::kCoupler)
+      ports_.push_back({c.name + ":" + c.second_joint, e, 1, c.marker_i2, c.marker_j2});
+  }
+  force_angle_slot_.clear();
+  for (const auto& fe : forces_) {
+    const int n = fe->num_angle_slots();
+    force_angle_slot_.push_back(n > 0 ? num_angle_slots_ : -1);
+    num_angle_slots_ += n;
+  }
+  finalized_ = true;
+}
+
+System System::WithoutEquations(const std::vector<int>& equations) const {
+  EMB_CHECK(finalized_);
+  const std::set<int> drop(equations.begin(), equations.end());
+  System s = *this;
+  s.finalized_ = false;
+  s.pending_.clear();
+  for (int k = 0; k < num_equations(); ++k) {
+    if (drop.count(k)) {
+      s.removed_.push_back(EquationName(k));
+    } else {
+      s.pending_.push_back(equations_[k]);
+    }
+  }
+  s.Finalize();
+  return s;
+}
+
+int System::second_reaction_port(int e) const {
+  for (std::size_t p = elements_.size(); p < ports_.size(); ++p)
+    if (ports_[p].element == e) return static_cast<int>(p);
+  return -1;
+}
+
+std::string System::EquationName(int k) const {
+  const ScalarEquation& q = equations_.at(k);
+  const ConstraintElement& e = elements_.at(q.element);
+  const char* kind = e.kind == ElementKind::kJoint    ? Name(e.type)
+                     : e.kind == ElementKind::kMotion ? "motion"
+                                                      : "coupler";
+  return std::string(kind) + " '" + e.name + "': " + q.label;
+}
+
+int System::FindBody(const std::string& name) const { return FindByName(bodies_, name, "body"); }
+int System::FindMarker(const std::string& name) const {
+  return FindByName(markers_, name, "marker");
+}
+int System::FindElement(const std::string& name) const {
+  return FindByName(elements_, name, "joint/constraint");
+}
+
+Eigen::VectorXd System::InitialPositions() const {
+  Eigen::VectorXd q(layout_.nq());
+  for (int b = 1; b < num_bodies(); ++b) {
+    q.segment<3>(layout_.position(b)) = bodies_[b].p_WB;
+    q.segment<4>(layout_.quaternion(b)) = QuaternionFromRotation(bodies_[b].R_WB);
+    const int ne = layout_.num_elastic(b);
+    if (ne) {
+      q.segment(layout_.elastic_q(b), ne).setZero();
+      if (bodies_[b].eta0.size()) q.segment(layout_.elastic_q(b), ne) = bodies_[b].eta0;
+    }
+  }
+  return q;
+}
+
+Eigen::VectorXd System::InitialVelocities() const {
+  Eigen::VectorXd v(layout_.nv());
+  for (int b = 1; b < num_bodies(); ++b) {
+    v.segment<3>(layout_.velocity(b)) = bodies_[b].v_WB;
+    v.segment<3>(layout_.angular_velocity(b)) = bodies_[b].R_WB.transpose() * bodies_[b].omega_W;
+    const int ne = layout_.num_elastic(b);
+    if (ne) {
+      v.segment(layout_.elastic_v(b), ne).setZero();
+      if (bodies_[b].eta_dot0.size()) v.segment(layout_.elastic_v(b), ne) = bodies_[b].eta_dot0;
+    }
+  }
+  return v;
+}
+
+}  // namespace emb::mbs

@@ -1,0 +1,121 @@
+#include "libemb/mbs/forces/applied_load.h"
+
+#include <cmath>
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/forces/force_jacobian.h"
+#include "libemb/mbs/constraints/constraint_eval.h"
+#include "libemb/mbs/constraints/primitive.h"
+#include "libemb/mbs/core/rotation.h"
+#include "libemb/mbs/core/system.h"
+
+namespace emb::mbs {
+
+AppliedLoad::AppliedLoad(std::string name, Kind kind, int marker, const Eigen::Vector3d& direction,
+                         Frame frame, TimeFunction magnitude, int reaction_marker,
+                         LoadArgument argument)
+    : ForceElement(std::move(name)),
+      kind_(kind),
+      marker_(marker),
+      direction_(direction),
+      frame_(frame),
+      magnitude_(std::move(magnitude)),
+      reaction_marker_(reaction_marker),
+      argument_(argument) {
+  // A direction typed with 6+ digits (e.g. 0.707107) is accepted as unit.
+  constexpr double kUnitTolerance = 1e-6;
+  EMB_THROW_IF(
+      !direction.allFinite() || std::abs(direction.norm() - 1.0) > kUnitTolerance,
+      "load '" << this->name() << "': expected a unit direction, got norm " << direction.norm());
+}
+
+std::vector<int> AppliedLoad::DoMarkers() const {
+  std::vector<int> m{marker_};
+  if (reaction_marker_ >= 0) m.push_back(reaction_marker_);
+  if (argument_.joint_angle) {
+    m.push_back(argument_.marker_i);
+    m.push_back(argument_.marker_j);
+  }
+  return m;
+}
+
+double AppliedLoad::CalcArgument(const ForceContext& ctx) const {
+  if (!argument_.joint_angle) return ctx.t;
+  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, argument_.marker_i);
+  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, argument_.marker_j);
+  double angle = EvalKernel({KernelKind::kAngle, 0, 0}, I, J).value;
+  // Without a workspace (e.g. a one-off evaluation) the angle is only known modulo 2 pi.
+  if (ctx.workspace != nullptr && ctx.angle_slot >= 0)
+    angle = ctx.workspace->Unwrap(ctx.angle_slot, angle, angle);
+  return argument_.scale * angle + argument_.offset;
+}
+
+void AppliedLoad::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
+  const System& sys = *ctx.system;
+  const MarkerKinematics M = CalcMarkerKinematics(sys, *ctx.bodies, marker_);
+  const Eigen::Vector3d a_W = frame_ == Frame::kWorld ? direction_ : M.R_WM * direction_;
+  const Eigen::Vector3d load = magnitude_(CalcArgument(ctx)) * a_W;
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d F = kind_ == Kind::kForce ? load : zero;
+  const Eigen::Vector3d T = kind_ == Kind::kTorque ? load : zero;
+  AddWrench(sys.layout(), M, M.p_WM, F, T, f);
+  if (reaction_marker_ >= 0) {
+    const MarkerKinematics R = CalcMarkerKinematics(sys, *ctx.bodies, reaction_marker_);
+    AddWrench(sys.layout(), R, M.p_WM, -F, -T, f);
+  }
+}
+
+void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
+  using Eigen::MatrixXd;
+  using Eigen::Vector3d;
+  const System& sys = *ctx.system;
+  // Slots: the loaded marker's body, the reaction body, the argument joint's two bodies.
+  const MarkerKinematics M = CalcMarkerKinematics(sys, *ctx.bodies, marker_);
+  const int reaction_slot = reaction_marker_ >= 0 ? 1 : -1;
+  MarkerKinematics R, AI, AJ;
+  std::vector<const MarkerKinematics*> slots{&M};
+  if (reaction_marker_ >= 0) {
+    R = CalcMarkerKinematics(sys, *ctx.bodies, reaction_marker_);
+    slots.push_back(&R);
+  }
+  const int argument_slot = static_cast<int>(slots.size());
+  if (argument_.joint_angle) {
+    AI = CalcMarkerKinematics(sys, *ctx.bodies, argument_.marker_i);
+    AJ = CalcMarkerKinematics(sys, *ctx.bodies, argument_.marker_j);
+    slots.push_back(&AI);
+    slots.push_back(&AJ);
+  }
+  LocalForceJacobian jac(slots);
+  const int n = jac.num_columns();
+  const MarkerDerivatives dM = DifferentiateMarker(M, 0, jac.num_slots());
+
+  const Vector3d a_W = frame_ == Frame::kWorld ? direction_ : Vector3d(M.R_WM * direction_);
+  const FunctionValue fx = magnitude_.Eval(CalcArgument(ctx));
+  const Vector3d load = fx.f * a_W;
+  MatrixXd dload = MatrixXd::Zero(3, n);
+  if (frame_ == Frame::kMarker) dload = -fx.f * Skew(a_W) * dM.rotation_x;
+  if (argument_.joint_angle) {
+    const KernelEval g = EvalKernel({KernelKind::kAngle, 0, 0}, AI, AJ);
+    Eigen::Matrix<double, 1, 12> dangle;
+    dangle << g.d_i, g.d_j;
+    dload.middleCols(6 * argument_slot, 12) += (fx.df * argument_.scale) * a_W * dangle;
+  }
+  const Vector3d zero = Vector3d::Zero();
+  const MatrixXd zero_d = MatrixXd::Zero(3, n);
+  const bool force = kind_ == Kind::kForce;
+  const Vector3d F = force ? load : zero, T = force ? zero : load;
+  const MatrixXd& dF = force ? dload : zero_d;
+  const MatrixXd& dT = force ? zero_d : dload;
+  jac.stiffness.middleRows<6>(0) += WrenchStiffness(M.R_WB, 0, F, T, M.s_W, dF, dT, dM.arm_x);
+  if (reaction_slot >= 0) {
+    // The opposite load at the same point p_WM, on the reaction body.
+    const Vector3d r = M.p_WM - (R.p_WM - R.s_W);
+    MatrixXd dr = dM.point_x;
+    dr.block<3, 3>(0, 6 * reaction_slot) -= Eigen::Matrix3d::Identity();
+    jac.stiffness.middleRows<6>(6 * reaction_slot) +=
+        WrenchStiffness(R.R_WB, reaction_slot, -F, -T, r, -dF, -dT, dr);
+  }
+  jac.ScatterTo(sink);
+}
+
+}  // namespace emb::mbs

@@ -1,0 +1,108 @@
+#include "libemb/mbs/forces/force_jacobian.h"
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/core/rotation.h"
+
+namespace emb::mbs {
+
+DenseForceJacobian::DenseForceJacobian(const StateLayout& layout)
+    : layout_(layout),
+      stiffness_(Eigen::MatrixXd::Zero(layout.nv(), layout.nv())),
+      damping_(Eigen::MatrixXd::Zero(layout.nv(), layout.nv())) {}
+
+namespace {
+
+void AddBodyBlock(const StateLayout& L, int a, int b, const Eigen::MatrixXd& K,
+                  Eigen::MatrixXd* out) {
+  EMB_CHECK(K.rows() == L.body_nv(a) && K.cols() == L.body_nv(b));
+  ForEachBodySubBlock(L, a, b, [&](int r, int c, int i0, int j0, int nr, int nc) {
+    out->block(r, c, nr, nc) += K.block(i0, j0, nr, nc);
+  });
+}
+
+// [I E] of a slot's marker (6 x body_nv).
+Eigen::MatrixXd SlotMap(const MarkerKinematics& M) {
+  const auto ne = M.E.cols();
+  Eigen::MatrixXd X(6, 6 + ne);
+  X.leftCols<6>().setIdentity();
+  if (ne) X.rightCols(ne) = M.E;
+  return X;
+}
+
+}  // namespace
+
+void DenseForceJacobian::AddStiffness(int a, int b, const Eigen::MatrixXd& K) {
+  AddBodyBlock(layout_, a, b, K, &stiffness_);
+}
+
+void DenseForceJacobian::AddDamping(int a, int b, const Eigen::MatrixXd& D) {
+  AddBodyBlock(layout_, a, b, D, &damping_);
+}
+
+LocalForceJacobian::LocalForceJacobian(std::vector<const MarkerKinematics*> slot_markers)
+    : stiffness(Eigen::MatrixXd::Zero(6 * slot_markers.size(), 6 * slot_markers.size())),
+      damping(Eigen::MatrixXd::Zero(6 * slot_markers.size(), 6 * slot_markers.size())),
+      markers_(std::move(slot_markers)) {
+  for (const auto* m : markers_) EMB_CHECK(m != nullptr);
+}
+
+void LocalForceJacobian::ScatterTo(ForceJacobianSink* sink) const {
+  EMB_CHECK(sink != nullptr);
+  std::vector<Eigen::MatrixXd> X(markers_.size());
+  for (int a = 0; a < num_slots(); ++a)
+    if (markers_[a]->flexible()) X[a] = SlotMap(*markers_[a]);
+  for (int a = 0; a < num_slots(); ++a) {
+    if (markers_[a]->body == 0) continue;
+    for (int b = 0; b < num_slots(); ++b) {
+      if (markers_[b]->body == 0) continue;
+      Eigen::MatrixXd K = stiffness.block<6, 6>(6 * a, 6 * b);
+      Eigen::MatrixXd D = damping.block<6, 6>(6 * a, 6 * b);
+      if (X[a].size()) K = X[a].transpose() * K, D = X[a].transpose() * D;
+      if (X[b].size()) K = K * X[b], D = D * X[b];
+      sink->AddStiffness(markers_[a]->body, markers_[b]->body, K);
+      sink->AddDamping(markers_[a]->body, markers_[b]->body, D);
+    }
+  }
+}
+
+MarkerDerivatives DifferentiateMarker(const MarkerKinematics& M, int slot, int num_slots) {
+  const int n = 6 * num_slots, c = 6 * slot;
+  MarkerDerivatives d;
+  for (Eigen::MatrixXd* m : {&d.point_x, &d.arm_x, &d.rotation_x, &d.velocity_x, &d.velocity_v,
+                             &d.omega_x, &d.omega_v})
+    m->setZero(3, n);
+  const Eigen::Matrix3d& R = M.R_WB;
+  const Eigen::Matrix3d arm = -Skew(M.s_W) * R;
+  d.point_x.block<3, 3>(0, c).setIdentity();
+  d.point_x.block<3, 3>(0, c + 3) = arm;
+  d.arm_x.block<3, 3>(0, c + 3) = arm;
+  d.rotation_x.block<3, 3>(0, c + 3) = R;
+  d.velocity_x.block<3, 3>(0, c + 3) = -Skew(M.omega_W.cross(M.s_W)) * R;
+  d.velocity_v.block<3, 3>(0, c).setIdentity();
+  d.velocity_v.block<3, 3>(0, c + 3) = arm;
+  d.omega_x.block<3, 3>(0, c + 3) = -Skew(M.omega_W) * R;
+  d.omega_v.block<3, 3>(0, c + 3) = R;
+  return d;
+}
+
+Eigen::MatrixXd WrenchStiffness(const Eigen::Matrix3d& R_WB, int slot_a, const Eigen::Vector3d& F,
+                                const Eigen::Vector3d& T, const Eigen::Vector3d& r,
+                                const Eigen::MatrixXd& dF, const Eigen::MatrixXd& dT,
+                                const Eigen::MatrixXd& dr) {
+  Eigen::MatrixXd out(6, dF.cols());
+  out.topRows<3>() = dF;
+  out.bottomRows<3>() = R_WB.transpose() * (dT + Skew(r) * dF - Skew(F) * dr);
+  const Eigen::Vector3d n_B = R_WB.transpose() * (T + r.cross(F));
+  out.block<3, 3>(3, 6 * slot_a + 3) += Skew(n_B);
+  return out;
+}
+
+Eigen::MatrixXd WrenchDamping(const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& r,
+                              const Eigen::MatrixXd& dF, const Eigen::MatrixXd& dT) {
+  Eigen::MatrixXd out(6, dF.cols());
+  out.topRows<3>() = dF;
+  out.bottomRows<3>() = R_WB.transpose() * (dT + Skew(r) * dF);
+  return out;
+}
+
+}  // namespace emb::mbs

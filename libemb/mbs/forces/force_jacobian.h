@@ -1,0 +1,102 @@
+#pragma once
+/// @file
+/// Analytic derivatives of force elements' generalised forces (force_element.h), for the
+/// iteration matrix of the GGL DAE and the stiffness of static equilibrium.
+///
+/// With f_a the generalised force on body a (force in W, moment about the CM in B; 6) and
+/// the perturbations of notation.h, x_b = [delta p_WB, delta pi_B] (delta R = R [delta pi x])
+/// and v_b = [v_WB, omega_B], an element adds the 6x6 blocks
+///   stiffness K_ab = d f_a / d x_b,    damping D_ab = d f_a / d v_b.
+///
+/// Elements work in local slots: X = [x_s0, x_s1, ...], V = [v_s0, ...] (6 per slot, one
+/// slot per marker's body; two slots may hold the same body and their partials add when
+/// scattered). World-frame kinematic derivatives of a marker M on the body of slot s
+/// (phi = the body's virtual rotation in W, delta phi = R_WB delta pi):
+///   d p_WM  = [I, -[s_W x] R_WB]                      (columns of slot s, s_W = R_WB s_B)
+///   d v_WM  = [0, -[(omega_W x s_W) x] R_WB] dX + [I, -[s_W x] R_WB] dV
+///   d omega_W = -[omega_W x] R_WB d pi + R_WB d omega_B
+/// and a wrench (F at a point with arm r from the CM of body a, couple T) gives
+///   f_a = [F; R_a^T (T + r x F)],
+///   d f_a = [dF; R_a^T (dT + [r x] dF - [F x] dr)] + [0; [n_a x] d pi_a],  n_a = R_a^T (T + r x F).
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "libemb/mbs/core/kinematics.h"
+#include "libemb/mbs/core/state_layout.h"
+
+namespace emb::mbs {
+
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+/// Receives the blocks of the force elements' derivatives; never called for the ground.
+/// A block of bodies (a, b) is body_nv(a) x body_nv(b) (state_layout.h): rows and columns
+/// [delta p, delta pi] (or [v_WB, omega_B]) and then, on a flexible body, its modal
+/// coordinates (or rates).
+class ForceJacobianSink {
+ public:
+  virtual ~ForceJacobianSink() = default;
+  /// K_ab = d f_a / d x_b.
+  virtual void AddStiffness(int body_a, int body_b, const Eigen::MatrixXd& K) = 0;
+  /// D_ab = d f_a / d v_b.
+  virtual void AddDamping(int body_a, int body_b, const Eigen::MatrixXd& D) = 0;
+};
+
+/// Dense nv x nv stiffness df/dx and damping df/dv (statics, tests). Cost O(nv^2) memory.
+class DenseForceJacobian final : public ForceJacobianSink {
+ public:
+  explicit DenseForceJacobian(const StateLayout& layout);
+  void AddStiffness(int body_a, int body_b, const Eigen::MatrixXd& K) override;
+  void AddDamping(int body_a, int body_b, const Eigen::MatrixXd& D) override;
+  const Eigen::MatrixXd& stiffness() const { return stiffness_; }
+  const Eigen::MatrixXd& damping() const { return damping_; }
+
+ private:
+  StateLayout layout_;
+  Eigen::MatrixXd stiffness_, damping_;
+};
+
+/// An element's derivatives in its local slots (see the file comment). A slot is the
+/// (virtual rigid) body of one marker (kinematics.h): on a flexible body, its 6 columns
+/// stand for [I E] of the body's coordinates, and ScatterTo expands a block K_ab into
+/// [I E_a]^T K_ab [I E_b] (the derivatives of E are left out: iteration matrices only).
+class LocalForceJacobian {
+ public:
+  /// `slot_markers[s]` is the marker of slot s (its body may be the ground).
+  explicit LocalForceJacobian(std::vector<const MarkerKinematics*> slot_markers);
+  int num_slots() const { return static_cast<int>(markers_.size()); }
+  int num_columns() const { return 6 * num_slots(); }
+  /// Rows of f_a (slot a), columns X or V: 6 s x 6 s.
+  Eigen::MatrixXd stiffness, damping;
+  /// Adds every (slot a, slot b) block with both bodies off the ground to `sink`: always
+  /// the same blocks for the same slots, whatever the values (a fixed sparse structure).
+  void ScatterTo(ForceJacobianSink* sink) const;
+
+ private:
+  std::vector<const MarkerKinematics*> markers_;
+};
+
+/// World-frame derivatives of marker M on the body of slot `slot` (3 x 6 num_slots each).
+struct MarkerDerivatives {
+  Eigen::MatrixXd point_x;     ///< d p_WM / dX
+  Eigen::MatrixXd arm_x;       ///< d s_W / dX (s_W = p_WM - p_WB)
+  Eigen::MatrixXd rotation_x;  ///< d phi / dX, the body's virtual rotation in W
+  Eigen::MatrixXd velocity_x;  ///< d v_WM / dX
+  Eigen::MatrixXd velocity_v;  ///< d v_WM / dV
+  Eigen::MatrixXd omega_x;     ///< d omega_W / dX
+  Eigen::MatrixXd omega_v;     ///< d omega_W / dV
+};
+MarkerDerivatives DifferentiateMarker(const MarkerKinematics& M, int slot, int num_slots);
+
+/// d f_a / dX for f_a = [F; R_a^T (T + r x F)] on the body of slot `slot_a` (6 x N), given
+/// dF, dT and dr (3 x N) with respect to the same X.
+Eigen::MatrixXd WrenchStiffness(const Eigen::Matrix3d& R_WB, int slot_a, const Eigen::Vector3d& F,
+                                const Eigen::Vector3d& T, const Eigen::Vector3d& r,
+                                const Eigen::MatrixXd& dF, const Eigen::MatrixXd& dT,
+                                const Eigen::MatrixXd& dr);
+
+/// d f_a / dV for the same wrench (the arm and R_a do not depend on V) (6 x N).
+Eigen::MatrixXd WrenchDamping(const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& r,
+                              const Eigen::MatrixXd& dF, const Eigen::MatrixXd& dT);
+
+}  // namespace emb::mbs

@@ -1,0 +1,170 @@
+#include "libemb/mbs/forces/spring_damper.h"
+
+#include <cmath>
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/forces/force_jacobian.h"
+#include "libemb/mbs/constraints/constraint_eval.h"
+#include "libemb/mbs/constraints/primitive.h"
+#include "libemb/mbs/core/rotation.h"
+#include "libemb/mbs/core/system.h"
+
+namespace emb::mbs {
+
+TranslationalSpringDamper::TranslationalSpringDamper(std::string name, int marker_i, int marker_j,
+                                                     double stiffness, double damping,
+                                                     double free_length)
+    : ForceElement(std::move(name)),
+      i_(marker_i),
+      j_(marker_j),
+      k_(stiffness),
+      c_(damping),
+      l0_(free_length) {
+  EMB_THROW_IF(
+      stiffness < 0 || damping < 0 || free_length < 0,
+      "spring-damper '" << this->name() << "': expected stiffness, damping and free length >= 0");
+}
+
+TranslationalSpringDamper::State TranslationalSpringDamper::Calc(const ForceContext& ctx) const {
+  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
+  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  const Eigen::Vector3d d = I.p_WM - J.p_WM;
+  State s{d.norm(), 0.0, Eigen::Vector3d::Zero()};
+  if (s.length > 0.0) {
+    s.u = d / s.length;
+    s.rate = s.u.dot(I.v_WM - J.v_WM);
+  }
+  return s;
+}
+
+void TranslationalSpringDamper::DoAddForces(const ForceContext& ctx,
+                                            Eigen::Ref<Eigen::VectorXd> f) const {
+  const State s = Calc(ctx);
+  if (s.length <= 0.0) return;
+  const double tension = k_ * (s.length - l0_) + c_ * s.rate;
+  const System& sys = *ctx.system;
+  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
+  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  AddWrench(sys.layout(), I, I.p_WM, -tension * s.u, zero, f);
+  AddWrench(sys.layout(), J, J.p_WM, tension * s.u, zero, f);
+}
+
+void TranslationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
+                                                   ForceJacobianSink* sink) const {
+  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
+  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  LocalForceJacobian jac({&I, &J});
+  const State s = Calc(ctx);
+  if (s.length > 0.0) {
+    const MarkerDerivatives dI = DifferentiateMarker(I, 0, 2), dJ = DifferentiateMarker(J, 1, 2);
+    const Eigen::Vector3d d_dot = I.v_WM - J.v_WM;
+    const double tension = k_ * (s.length - l0_) + c_ * s.rate;
+    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - s.u * s.u.transpose();
+    const Eigen::Matrix3d A =
+        -s.u * (k_ * s.u.transpose() + c_ * d_dot.transpose() * P / s.length) -
+        tension * P / s.length;
+    const Eigen::Matrix3d B = -c_ * s.u * s.u.transpose();
+    const Eigen::MatrixXd dF_x =
+        A * (dI.point_x - dJ.point_x) + B * (dI.velocity_x - dJ.velocity_x);
+    const Eigen::MatrixXd dF_v = B * (dI.velocity_v - dJ.velocity_v);
+    const Eigen::Vector3d F = -tension * s.u;  // on I, at p_I; -F on J, at p_J
+    const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+    const Eigen::MatrixXd zero_d = Eigen::MatrixXd::Zero(3, 12);
+    jac.stiffness.topRows<6>() = WrenchStiffness(I.R_WB, 0, F, zero, I.s_W, dF_x, zero_d, dI.arm_x);
+    jac.stiffness.bottomRows<6>() =
+        WrenchStiffness(J.R_WB, 1, -F, zero, J.s_W, -dF_x, zero_d, dJ.arm_x);
+    jac.damping.topRows<6>() = WrenchDamping(I.R_WB, I.s_W, dF_v, zero_d);
+    jac.damping.bottomRows<6>() = WrenchDamping(J.R_WB, J.s_W, -dF_v, zero_d);
+  }
+  jac.ScatterTo(sink);
+}
+
+double TranslationalSpringDamper::DoCalcPotentialEnergy(const ForceContext& ctx) const {
+  const double stretch = Calc(ctx).length - l0_;
+  return 0.5 * k_ * stretch * stretch;
+}
+
+double TranslationalSpringDamper::DoCalcDissipatedPower(const ForceContext& ctx) const {
+  const double r = Calc(ctx).rate;
+  return c_ * r * r;
+}
+
+RotationalSpringDamper::RotationalSpringDamper(std::string name, int marker_i, int marker_j,
+                                               double stiffness, double damping, double free_angle)
+    : ForceElement(std::move(name)),
+      i_(marker_i),
+      j_(marker_j),
+      k_(stiffness),
+      c_(damping),
+      a0_(free_angle) {
+  EMB_THROW_IF(stiffness < 0 || damping < 0, "rotational spring-damper '"
+                                                 << this->name()
+                                                 << "': expected stiffness and damping >= 0");
+}
+
+RotationalSpringDamper::State RotationalSpringDamper::Calc(const ForceContext& ctx) const {
+  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
+  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  // x_I closer than this to z_J (|x_I x z_J|^2, i.e. 1e-4 rad) leaves the angle undefined.
+  constexpr double kMinProjection = 1e-8;
+  const Eigen::Vector3d x_I = I.R_WM.col(0), z_J = J.R_WM.col(2);
+  const double projection = x_I.cross(z_J).squaredNorm();
+  if (!(projection >= kMinProjection))
+    EMB_THROW(NumericalError, "rotational spring-damper '"
+                                  << name() << "': its angle about z_J is undefined, x_I is "
+                                  << std::sqrt(projection)
+                                  << " rad from z_J; expected markers whose x_I stays away from "
+                                     "z_J (e.g. across a revolute or cylindrical joint)");
+  const KernelEval g = EvalKernel({KernelKind::kAngle, 0, 0}, I, J);
+  State s;
+  if (ctx.workspace != nullptr && ctx.angle_slot >= 0) {
+    // Start on the branch nearest the free angle, then follow the turns.
+    s.angle = ctx.workspace->Unwrap(ctx.angle_slot, g.value, a0_ + WrapAngle(g.value - a0_)) - a0_;
+  } else {
+    s.angle = WrapAngle(g.value - a0_);
+  }
+  s.gradient << g.d_i, g.d_j;
+  s.velocity << VirtualBodyVelocity(I), VirtualBodyVelocity(J);
+  s.rate = s.gradient.dot(s.velocity);
+  s.body_i = I.body;
+  s.body_j = J.body;
+  return s;
+}
+
+void RotationalSpringDamper::DoAddForces(const ForceContext& ctx,
+                                         Eigen::Ref<Eigen::VectorXd> f) const {
+  const State s = Calc(ctx);
+  const double tau = k_ * s.angle + c_ * s.rate;
+  const StateLayout& L = ctx.system->layout();
+  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
+  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  AddMarkerForce(L, I, -tau * s.gradient.head<6>().transpose(), f);
+  AddMarkerForce(L, J, -tau * s.gradient.tail<6>().transpose(), f);
+}
+
+void RotationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
+                                                ForceJacobianSink* sink) const {
+  const State s = Calc(ctx);
+  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
+  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  const Eigen::Matrix<double, 12, 12> H = EvalKernelHessian({KernelKind::kAngle, 0, 0}, I, J);
+  const double tau = k_ * s.angle + c_ * s.rate;
+  LocalForceJacobian jac({&I, &J});
+  jac.stiffness = -s.gradient.transpose() * (k_ * s.gradient + c_ * s.velocity.transpose() * H) -
+                  tau * H;
+  jac.damping = -c_ * s.gradient.transpose() * s.gradient;
+  jac.ScatterTo(sink);
+}
+
+double RotationalSpringDamper::DoCalcPotentialEnergy(const ForceContext& ctx) const {
+  const double a = Calc(ctx).angle;
+  return 0.5 * k_ * a * a;
+}
+
+double RotationalSpringDamper::DoCalcDissipatedPower(const ForceContext& ctx) const {
+  const double rate = Calc(ctx).rate;
+  return c_ * rate * rate;
+}
+
+}  // namespace emb::mbs

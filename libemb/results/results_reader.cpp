@@ -1,0 +1,169 @@
+#include "libemb/results/results_reader.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "libemb/common/error.h"
+#include "libemb/io/hdf5_file.h"
+#include "libemb/mbs/core/system.h"
+
+namespace emb::scene {
+namespace {
+
+struct ResultsFile {
+  H5File h5;
+  std::vector<std::string> bodies, ports, sensors, forces;
+  std::vector<double> time;
+  std::size_t n{0};
+
+  explicit ResultsFile(const std::string& path) : h5(path, H5File::Mode::kRead) {
+    std::string format;
+    try {
+      format = h5.ReadStringAttribute("/", "format");
+    } catch (const std::exception&) {
+    }
+    EMB_THROW_IF(format != "emb-mbs-results",
+                 "'" << path << "': expected a multibody results file (format emb-mbs-results)");
+    bodies = h5.ReadStrings("/model/bodies");
+    ports = h5.ReadStrings("/model/reaction_ports");
+    if (h5.Exists("/model/sensors")) sensors = h5.ReadStrings("/model/sensors");
+    if (h5.Exists("/model/force_elements")) forces = h5.ReadStrings("/model/force_elements");
+    time = h5.ReadDoubles("/time");
+    n = time.size();
+  }
+  /// Column `col` of the [n, width] dataset `path`.
+  std::vector<double> Column(const std::string& path, std::size_t col) const {
+    const std::vector<double> all = h5.ReadDoubles(path);
+    const std::size_t width = n > 0 ? all.size() / n : 0;
+    EMB_CHECK(col < width);
+    std::vector<double> out(n);
+    for (std::size_t i = 0; i < n; ++i) out[i] = all[i * width + col];
+    return out;
+  }
+  /// Body rotations R_WB at every sample.
+  std::vector<Eigen::Matrix3d> Rotations(std::size_t body) const {
+    const std::vector<double> q = h5.ReadDoubles("/state/q");
+    const std::size_t width = q.size() / std::max<std::size_t>(n, 1);
+    std::vector<Eigen::Matrix3d> out(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* e = &q[i * width + 7 * body + 3];
+      out[i] = Eigen::Quaterniond(e[0], e[1], e[2], e[3]).normalized().toRotationMatrix();
+    }
+    return out;
+  }
+};
+
+int Component(const std::string& c) {
+  if (c == "x") return 0;
+  if (c == "y") return 1;
+  if (c == "z") return 2;
+  return -1;
+}
+
+std::size_t FindName(const std::vector<std::string>& names, const std::string& name,
+                     const std::string& what, const std::string& channel) {
+  const auto it = std::find(names.begin(), names.end(), name);
+  EMB_THROW_IF(it == names.end(), "channel '" << channel << "': unknown " << what << " '" << name
+                                              << "'" << mbs::DidYouMean(name, names));
+  return static_cast<std::size_t>(it - names.begin());
+}
+
+}  // namespace
+
+ResultsChannel ReadResultsChannel(const std::string& path, const std::string& channel) {
+  const ResultsFile f(path);
+  ResultsChannel out;
+  out.time = f.time;
+  const std::size_t dot2 = channel.rfind('.');
+  const std::size_t dot1 = dot2 == std::string::npos ? dot2 : channel.rfind('.', dot2 - 1);
+  if (channel.rfind("energy.", 0) == 0) {
+    const std::vector<std::string> cols{"kinetic", "gravity", "elastic", "total", "dissipated"};
+    const std::size_t c = FindName(cols, channel.substr(7), "energy column", channel);
+    out.values = f.Column("/energy", c);
+    return out;
+  }
+  // <sensor>.dx .. .rz (the /sensors columns).
+  const std::size_t last = channel.rfind('.');
+  if (last != std::string::npos &&
+      std::find(f.sensors.begin(), f.sensors.end(), channel.substr(0, last)) != f.sensors.end()) {
+    const std::vector<std::string> cols{"dx", "dy", "dz", "rx", "ry", "rz"};
+    const std::size_t k =
+        std::find(f.sensors.begin(), f.sensors.end(), channel.substr(0, last)) - f.sensors.begin();
+    out.values = f.Column("/sensors", 6 * k + FindName(cols, channel.substr(last + 1),
+                                                       "sensor component", channel));
+    return out;
+  }
+  EMB_THROW_IF(dot1 == std::string::npos || dot1 == 0,
+               "channel '" << channel
+                           << "': expected <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z}, "
+                              "<sensor>.dx|dy|dz|rx|ry|rz or "
+                              "energy.{kinetic,gravity,elastic,total,dissipated}");
+  const std::string owner = channel.substr(0, dot1);
+  const std::string quantity = channel.substr(dot1 + 1, dot2 - dot1 - 1);
+  const int comp = Component(channel.substr(dot2 + 1));
+  EMB_THROW_IF(comp < 0, "channel '" << channel << "': expected a component x, y or z");
+  const auto c = static_cast<std::size_t>(comp);
+  const bool is_force_element =
+      std::find(f.ports.begin(), f.ports.end(), owner) == f.ports.end() &&
+      std::find(f.forces.begin(), f.forces.end(), owner) != f.forces.end();
+  if ((quantity == "F" || quantity == "T") && is_force_element) {  // /forces/load
+    const std::size_t k = std::find(f.forces.begin(), f.forces.end(), owner) - f.forces.begin();
+    out.values = f.Column("/forces/load", 6 * k + c + (quantity == "T" ? 3 : 0));
+    return out;
+  }
+  if (quantity == "F" || quantity == "T") {
+    const std::size_t port = FindName(f.ports, owner, "element", channel);
+    out.values = f.Column(quantity == "F" ? "/reactions/force" : "/reactions/torque", 3 * port + c);
+    return out;
+  }
+  EMB_THROW_IF(quantity != "p" && quantity != "v" && quantity != "omega",
+               "channel '" << channel << "': unknown quantity '" << quantity
+                           << "', expected p, v, omega (bodies) or F, T (elements)");
+  const std::size_t b = FindName(f.bodies, owner, "body", channel);
+  if (quantity == "p") {
+    out.values = f.Column("/state/q", 7 * b + c);
+  } else if (quantity == "v") {
+    out.values = f.Column("/state/v", 6 * b + c);
+  } else {
+    // omega_B in the file; the CSV convention is W.
+    const auto R = f.Rotations(b);
+    std::vector<Eigen::Vector3d> w(f.n);
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::vector<double> col = f.Column("/state/v", 6 * b + 3 + k);
+      for (std::size_t i = 0; i < f.n; ++i) w[i][static_cast<Eigen::Index>(k)] = col[i];
+    }
+    out.values.resize(f.n);
+    for (std::size_t i = 0; i < f.n; ++i)
+      out.values[i] = (R[i] * w[i])[static_cast<Eigen::Index>(c)];
+  }
+  return out;
+}
+
+ResultsChannel ReadBodyRotationAngle(const std::string& path, const std::string& body,
+                                     const std::string& axis, double start_deg) {
+  const ResultsFile f(path);
+  const int a = Component(axis);
+  EMB_THROW_IF(a < 0, "rotation angle axis: expected x, y or z, got '" << axis << "'");
+  const std::size_t b = FindName(f.bodies, body, "body", body + " (angle)");
+  const Eigen::Vector3d ax = Eigen::Vector3d::Unit(a);
+  const Eigen::Vector3d u = Eigen::Vector3d::Unit((a + 1) % 3), v = ax.cross(u);
+  ResultsChannel out;
+  out.time = f.time;
+  out.values.resize(f.n);
+  double previous = 0.0, turns = 0.0;
+  const auto R = f.Rotations(b);
+  for (std::size_t i = 0; i < f.n; ++i) {
+    const Eigen::Vector3d r = R[i] * u;
+    const double wrapped = std::atan2(r.dot(v), r.dot(u));
+    if (i > 0) turns += std::round((previous - wrapped) / (2 * std::numbers::pi));
+    previous = wrapped;
+    out.values[i] = (wrapped + 2 * std::numbers::pi * turns) * 180.0 / std::numbers::pi;
+  }
+  const double shift = f.n > 0 ? start_deg - out.values.front() : 0.0;
+  for (double& x : out.values) x += shift;
+  return out;
+}
+
+}  // namespace emb::scene

@@ -1,0 +1,113 @@
+#pragma once
+/// @file
+/// Writing multibody results as the run goes: an HDF5 file (layout below) and an optional
+/// CSV of chosen channels. Every sample is appended and flushed at once, so a run that
+/// fails (integrator failure) or is interrupted keeps every sample before it.
+///
+/// HDF5 layout (format "emb-mbs-results", version 2, SI units; N samples, nb moving bodies,
+/// m equations, ne constraint elements, np >= ne reaction ports; row-major as h5py shows
+/// it):
+///   /                   attrs format, version, units, scene, analysis, status, message,
+///                       t_reached (the last three written at the end of the run); dynamic
+///                       runs also atol, multiplier_atol, linear_solver as IDA used them
+///   /model/bodies       [nb] names (ground excluded), order of the state blocks
+///   /model/elements     [ne] constraint element names (joints, motions, couplers)
+///   /model/element_types[ne] "revolute", "motion", ...
+///   /model/equations    [m] "revolute 'main': at-point x", ... (order of lambda)
+///   /model/reaction_ports [np] the elements in order, then "<coupler>:<joint2>" for the
+///                       second joint of every coupler (a coupler loads both its joints)
+///   /model/removed_equations  names of redundant equations removed (may be empty)
+///   /model/mass [nb], /model/inertia [nb, 3, 3] (about the CM in B)
+///   /time               [N] s
+///   /state/q            [N, 7 nb] per body p_WB (m) then e_WB (w, x, y, z)
+///   /state/v            [N, 6 nb] per body v_WB (m/s, in W) then omega_B (rad/s, in B)
+///   /state/vdot         [N, 6 nb] time derivative of v
+///   /state/euler313     [N, 3 nb] per body (psi, theta, phi) rad, seed eq. (1.20)
+///   /multipliers/lambda [N, m] N or N m
+///   /reactions/force    [N, np, 3] N, on the body of marker I from J, at I, in J's axes
+///   /reactions/torque   [N, np, 3] N m, about marker I, in J's axes
+///                       (stored as [N, 3 np]; version 1 had [N, 3 ne] and no ports)
+///   /energy             [N, 5] kinetic, gravity potential, elastic, total (J),
+///                       dissipated power (W)
+///   /residuals          [N, 2] max |Phi| (m or rad), max |C v + Phi_t| (m/s or rad/s)
+///   /model/force_elements, /model/sensors  names
+///   /forces/load        [N, 6 nf] per force element F (N) and T (N m) on its first
+///                       marker's body in its second marker's axes (NaN if not reported)
+///   /sensors            [N, 6 ns] per sensor: position of marker I in J's axes (m) and the
+///                       rotation vector of R_J^T R_I (rad)
+///   with flexible bodies also
+///   /model/flexible_bodies [nf] names, /model/num_modes [nf]
+///   /state/eta, /state/eta_dot [N, sum num_modes] modal coordinates and rates, body after
+///                       body (/state/q and /state/v hold the rigid-body part only)
+
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "libemb/io/time_series_file.h"
+#include "libemb/mbs/analysis/analysis.h"
+
+namespace emb::scene {
+
+class ResultsWriter {
+ public:
+  /// Creates the file and writes the model description.
+  /// @throws InputError if the file cannot be created.
+  ResultsWriter(const std::string& path, const mbs::System& system, const std::string& scene,
+                const std::string& analysis);
+  /// Appends one sample and flushes.
+  void Write(const mbs::Sample& sample);
+  /// Records the outcome (status, message, t_reached) as root attributes and flushes.
+  void Finish(const mbs::RunResult& result);
+
+ private:
+  const mbs::System& system_;
+  TimeSeriesFile file_;
+  int time_, q_, v_, vdot_, euler_, lambda_, force_, torque_, energy_, residuals_;
+  int eta_{-1}, eta_dot_{-1}, loads_{-1}, sensors_{-1};
+};
+
+/// A CSV file with a header line "t,<channel>,..." and one line per sample.
+/// Channels: <body>.p.{x,y,z} (CM position, m), <body>.v.{x,y,z} (m/s), <body>.a.{x,y,z}
+/// (m/s^2), <body>.omega.{x,y,z} (rad/s, in W), <body>.euler.{psi,theta,phi} (rad),
+/// <element>.F.{x,y,z} and <element>.T.{x,y,z} (reactions, joint axes; for a coupler at its
+/// first joint), <coupler>.F2.{x,y,z} and <coupler>.T2.{x,y,z} (a coupler's reaction at its
+/// second joint),
+/// <force element>.F.{x,y,z} and .T.{x,y,z} (its load, ForceElement::CalcLoad),
+/// <sensor>.{dx,dy,dz,rx,ry,rz}, energy.{kinetic,gravity,elastic,total},
+/// residual.{position,velocity}.
+class CsvWriter {
+ public:
+  /// @throws InputError for an unknown channel (with a did-you-mean) or an unwritable file.
+  CsvWriter(const std::string& path, const mbs::System& system,
+            const std::vector<std::string>& channels);
+  void Write(const mbs::Sample& sample);
+
+ private:
+  struct Channel {
+    enum class Kind {
+      kPosition,
+      kVelocity,
+      kAcceleration,
+      kOmega,
+      kEuler,
+      kForce,
+      kTorque,
+      kEnergy,
+      kResidual,
+      kForceElement,
+      kSensor
+    } kind;
+    int index;      // body or reaction port
+    int component;  // 0..3
+  };
+  const mbs::System& system_;
+  std::ofstream out_;
+  std::vector<Channel> channels_;
+};
+
+/// Value of a channel name check without writing (used by tests and the CLI).
+std::vector<std::string> ValidChannelNames(const mbs::System& system);
+
+}  // namespace emb::scene

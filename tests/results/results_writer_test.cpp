@@ -1,0 +1,181 @@
+// Results files: the documented HDF5 layout, rows flushed as the run goes, and an
+// integrator failure that keeps every sample before it in the file; the tolerances a
+// dynamic run used; a coupler's reaction at both joints; CSV channels.
+
+#include "libemb/results/results_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "libemb/common/error.h"
+#include "libemb/io/hdf5_file.h"
+#include "libemb/scene/scene.h"
+
+namespace emb::scene {
+namespace {
+
+std::string TempPath(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("emb_results_test_" + name)).string();
+}
+
+Scene Pendulum() { return LoadScene(std::string(EMB_SOURCE_DIR) + "/tools/scenes/pendulum.yaml"); }
+
+TEST(ResultsWriter, LayoutAndRows) {
+  Scene sc = Pendulum();
+  sc.analysis.t_end = 0.5;
+  sc.analysis.output_step = 0.05;
+  const std::string path = TempPath("layout.h5");
+  const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
+  mbs::RunResult r;
+  {
+    ResultsWriter w(path, run.system, sc.source, "dynamic");
+    r = mbs::RunAnalysis(run, sc.analysis, [&](const mbs::Sample& s) { w.Write(s); });
+    w.Finish(r);
+  }
+  ASSERT_TRUE(r.ok()) << r.message;
+  H5File f(path, H5File::Mode::kRead);
+  EXPECT_EQ(f.ReadStringAttribute("/", "format"), "emb-mbs-results");
+  EXPECT_EQ(f.ReadStringAttribute("/", "status"), "success");
+  EXPECT_EQ(f.Shape("/time"), (std::vector<std::uint64_t>{11}));
+  EXPECT_EQ(f.Shape("/state/q"), (std::vector<std::uint64_t>{11, 7}));
+  EXPECT_EQ(f.Shape("/state/v"), (std::vector<std::uint64_t>{11, 6}));
+  EXPECT_EQ(f.Shape("/multipliers/lambda"), (std::vector<std::uint64_t>{11, 5}));
+  EXPECT_EQ(f.Shape("/reactions/force"), (std::vector<std::uint64_t>{11, 3}));
+  EXPECT_EQ(f.Shape("/energy"), (std::vector<std::uint64_t>{11, 5}));
+  EXPECT_EQ(f.ReadStrings("/model/bodies"), (std::vector<std::string>{"rod"}));
+  EXPECT_EQ(f.ReadStrings("/model/equations").size(), 5u);
+  const auto t = f.ReadDoubles("/time");
+  EXPECT_DOUBLE_EQ(t.back(), 0.5);
+  EXPECT_EQ(f.ReadIntAttribute("/", "version"), 2);
+  EXPECT_EQ(f.ReadStrings("/model/reaction_ports"), (std::vector<std::string>{"hinge"}));
+  EXPECT_DOUBLE_EQ(f.ReadDoubleAttribute("/", "atol"), r.atol);
+  EXPECT_GT(f.ReadDoubleAttribute("/", "multiplier_atol"), 0.0);
+  EXPECT_EQ(f.ReadStringAttribute("/", "linear_solver"), "dense");
+  std::filesystem::remove(path);
+}
+
+TEST(ResultsWriter, IntegratorFailureKeepsEarlierSamples) {
+  // A torque step to 1e9 N m at t = 0.25 s exhausts IDA's step budget (the scene says).
+  const Scene sc = LoadScene(std::string(EMB_SOURCE_DIR) + "/tests/scene/data/spin_up.yaml");
+  const std::string path = TempPath("failure.h5");
+  const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
+  mbs::RunResult r;
+  int written = 0;
+  {
+    ResultsWriter w(path, run.system, sc.source, "dynamic");
+    r = mbs::RunAnalysis(run, sc.analysis, [&](const mbs::Sample& s) {
+      w.Write(s);
+      ++written;
+    });
+    w.Finish(r);
+  }
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status, mbs::RunStatus::kIntegratorFailure);
+  EXPECT_TRUE(r.ida.status == IdaStatus::kTooMuchWork ||
+              r.ida.status == IdaStatus::kErrorTestFailure ||
+              r.ida.status == IdaStatus::kConvergenceFailure)
+      << Name(r.ida.status);
+  EXPECT_GT(r.t_reached, 0.25);
+  // The report names the time, the step size and the worst component.
+  EXPECT_NE(r.message.find("at t = "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("step size"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("body 'rod'"), std::string::npos) << r.message;
+  // ... and the joint equation furthest from closing at the last accepted state.
+  EXPECT_NE(r.message.find("largest constraint residual"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("revolute 'hinge'"), std::string::npos) << r.message;
+  EXPECT_GT(r.ida.last_step, 0.0);
+  EXPECT_GE(written, 6);  // the samples up to t = 0.25 s at least
+  H5File f(path, H5File::Mode::kRead);
+  EXPECT_EQ(f.ReadStringAttribute("/", "status"), "integrator-failure");
+  EXPECT_EQ(f.Shape("/time")[0], static_cast<std::uint64_t>(written));
+  std::filesystem::remove(path);
+}
+
+TEST(ResultsWriter, FreeBodyWithoutConstraints) {
+  // No joints: zero multipliers and reactions still give well-formed (empty-row) datasets.
+  const Scene sc = ParseScene(R"(
+bodies:
+  - {name: ball, mass: 1.0, inertia: [0.1, 0.1, 0.1], velocity: [1, 2, 0], angular_velocity: [0, 0, 3]}
+gravity: [0, 0, -9.81]
+analysis: {type: dynamic, t_end: 0.5, output_step: 0.1}
+)",
+                              "free.yaml");
+  const std::string path = TempPath("free.h5");
+  const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
+  mbs::Sample last;
+  {
+    ResultsWriter w(path, run.system, sc.source, "dynamic");
+    const mbs::RunResult r = mbs::RunAnalysis(run, sc.analysis, [&](const mbs::Sample& s) {
+      w.Write(s);
+      last = s;
+    });
+    ASSERT_TRUE(r.ok()) << r.message;
+    w.Finish(r);
+  }
+  // Ballistic flight: z = -g t^2 / 2 at t = 0.5 s (BDF at the default rtol 1e-6).
+  EXPECT_NEAR(last.q[2], -0.5 * 9.81 * 0.25, 1e-5);
+  EXPECT_NEAR(last.q[0], 0.5, 1e-6);
+  H5File f(path, H5File::Mode::kRead);
+  EXPECT_EQ(f.Shape("/multipliers/lambda"), (std::vector<std::uint64_t>{6, 0}));
+  EXPECT_EQ(f.Shape("/reactions/force"), (std::vector<std::uint64_t>{6, 0}));
+  std::filesystem::remove(path);
+}
+
+TEST(ResultsWriter, CouplerReactionAtBothJoints) {
+  // The gear pair: 2 joints, the motion and the coupler, plus the coupler's second port.
+  Scene sc = LoadScene(std::string(EMB_SOURCE_DIR) + "/tools/scenes/gear_pair.yaml");
+  sc.analysis.t_end = 0.05;
+  const std::string path = TempPath("gears.h5"), csv_path = TempPath("gears.csv");
+  const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
+  {
+    ResultsWriter w(path, run.system, sc.source, "kinematic");
+    CsvWriter csv(csv_path, run.system, {"mesh.T.z", "mesh.T2.z"});
+    w.Finish(mbs::RunAnalysis(run, sc.analysis, [&](const mbs::Sample& s) {
+      w.Write(s);
+      csv.Write(s);
+    }));
+  }
+  H5File f(path, H5File::Mode::kRead);
+  EXPECT_EQ(f.ReadStrings("/model/reaction_ports"),
+            (std::vector<std::string>{"pinion_shaft", "wheel_shaft", "drive", "mesh",
+                                      "mesh:wheel_shaft"}));
+  EXPECT_EQ(f.Shape("/reactions/torque"), (std::vector<std::uint64_t>{6, 15}));
+  std::ifstream in(csv_path);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "t,mesh.T.z,mesh.T2.z");
+  EXPECT_THROW(CsvWriter(csv_path, run.system, {"drive.T2.z"}), InputError);  // not a coupler
+  std::filesystem::remove(path);
+  std::filesystem::remove(csv_path);
+}
+
+TEST(CsvWriter, ChannelsAndUnknownChannel) {
+  Scene sc = Pendulum();
+  sc.analysis.t_end = 0.1;
+  sc.analysis.output_step = 0.05;
+  const std::string path = TempPath("channels.csv");
+  const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
+  {
+    CsvWriter csv(path, run.system, {"rod.p.x", "hinge.F.y", "energy.total"});
+    mbs::RunAnalysis(run, sc.analysis, [&](const mbs::Sample& s) { csv.Write(s); });
+  }
+  std::ifstream in(path);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "t,rod.p.x,hinge.F.y,energy.total");
+  int lines = 0;
+  for (std::string l; std::getline(in, l);) ++lines;
+  EXPECT_EQ(lines, 3);
+  try {
+    CsvWriter bad(path, run.system, {"rod.p.q"});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace emb::scene
