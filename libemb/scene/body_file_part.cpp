@@ -98,6 +98,12 @@ BodyFilePart LoadBodyFilePart(const std::string& path, const BodyFileOptions& op
     return part;
   }
   auto model = std::make_shared<mbs::ElasticModel>(full.Subset(keep));
+  if (options.dynamic_band_hz >= 0.0) {
+    std::vector<bool> flags(keep.size());
+    for (std::size_t j = 0; j < keep.size(); ++j)
+      flags[j] = model->frequencies_hz[static_cast<int>(j)] > options.dynamic_band_hz;
+    model->MakeQuasiStatic(flags, name);
+  }
   // Geometric stiffening: used when the file has it unless switched off. The file's data are
   // about the CM (the origin of B here), per c_p(omega) and per a_k.
   const bool has_kg = rb.geometric_stiffness.present;

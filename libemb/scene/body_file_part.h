@@ -20,6 +20,8 @@ struct BodyFileOptions {
   bool flexible{true};           ///< model: cms (false: model: rigid)
   int max_modes{-1};             ///< keep the lowest N elastic modes (-1: all)
   double fmax_hz{-1.0};          ///< keep modes up to this frequency (-1: no limit)
+  /// Kept modes above this frequency are quasi-static (ElasticModel::quasi_static; -1: none).
+  double dynamic_band_hz{-1.0};
   int geometric_stiffening{-1};  ///< 1 on, 0 off, -1 on if the file has the data
   std::string expect_mesh_hash;  ///< refuse the file if its mesh hash differs (empty: no check)
 };

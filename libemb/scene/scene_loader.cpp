@@ -38,6 +38,7 @@ BodyFileOptions ReadBodyFileOptions(MapReader& rb, bool flexible) {
   o.flexible = flexible;
   o.max_modes = rb.GetInt("modes", -1);
   o.fmax_hz = rb.GetDouble("fmax_hz", -1.0);
+  o.dynamic_band_hz = rb.GetDouble("dynamic_band_hz", -1.0);
   if (rb.Has("geometric_stiffening"))
     o.geometric_stiffening = rb.GetBool("geometric_stiffening", true) ? 1 : 0;
   else
@@ -287,10 +288,15 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   s->ida.max_step = r.GetDouble("max_step", s->ida.max_step);
   s->ida.max_num_steps = r.GetInt("max_steps", static_cast<int>(s->ida.max_num_steps));
   try {
-    s->ida.linear_solver = ParseIdaLinearSolver(r.GetString("linear_solver", "auto"));
+    s->ida.linear_solver = ParseLinearSolverKind(r.GetString("linear_solver", "auto"));
+    s->integrator = mbs::ParseDynamicIntegrator(r.GetString("integrator", Name(s->integrator)));
   } catch (const InputError& e) {
     EMB_THROW(InputError, Where(file, node) << ": analysis " << e.what());
   }
+  s->rho_inf = r.GetDouble("rho_inf", s->rho_inf);
+  EMB_THROW_IF(!(s->rho_inf >= 0.0 && s->rho_inf <= 1.0),
+               Where(file, node) << ": analysis rho_inf: expected a value in [0, 1], got "
+                                 << s->rho_inf);
   s->remove_redundant = r.GetBool("remove_redundant", s->remove_redundant);
   s->assembly.tolerance = r.GetDouble("assembly_tolerance", s->assembly.tolerance);
   s->assembly.max_iterations = r.GetInt("assembly_iterations", s->assembly.max_iterations);

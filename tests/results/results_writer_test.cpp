@@ -73,9 +73,9 @@ TEST(ResultsWriter, IntegratorFailureKeepsEarlierSamples) {
   }
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status, mbs::RunStatus::kIntegratorFailure);
-  EXPECT_TRUE(r.ida.status == IdaStatus::kTooMuchWork ||
-              r.ida.status == IdaStatus::kErrorTestFailure ||
-              r.ida.status == IdaStatus::kConvergenceFailure)
+  EXPECT_TRUE(r.ida.status == IntegratorStatus::kTooMuchWork ||
+              r.ida.status == IntegratorStatus::kErrorTestFailure ||
+              r.ida.status == IntegratorStatus::kConvergenceFailure)
       << Name(r.ida.status);
   EXPECT_GT(r.t_reached, 0.25);
   // The report names the time, the step size and the worst component.

@@ -151,7 +151,7 @@ analysis: {linear_solver: klu, atol_floor_relative: 1.0e-12, multiplier_atol_rel
            multiplier_atol: 0.5, initial_step_fraction: 1.0e-4, static_iterations: 7}
 )",
                               "keys.yaml");
-  EXPECT_EQ(sc.analysis.ida.linear_solver, IdaLinearSolver::kKlu);
+  EXPECT_EQ(sc.analysis.ida.linear_solver, LinearSolverKind::kKlu);
   EXPECT_EQ(sc.analysis.atol_floor_relative, 1e-12);
   EXPECT_EQ(sc.analysis.multiplier_atol_relative, 1e-3);
   EXPECT_EQ(sc.analysis.multiplier_atol, 0.5);
@@ -159,7 +159,7 @@ analysis: {linear_solver: klu, atol_floor_relative: 1.0e-12, multiplier_atol_rel
   EXPECT_EQ(sc.analysis.static_max_iterations, 7);
   // The default is auto: dense below 50 unknowns, KLU above.
   const Scene def = ParseScene("bodies:\n  - {name: b, mass: 1, inertia: [1, 1, 1]}\n", "d.yaml");
-  EXPECT_EQ(def.analysis.ida.linear_solver, IdaLinearSolver::kAuto);
+  EXPECT_EQ(def.analysis.ida.linear_solver, LinearSolverKind::kAuto);
 }
 
 // --- bad input -------------------------------------------------------------------------

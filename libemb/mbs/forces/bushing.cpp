@@ -113,6 +113,8 @@ void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sin
   jac.stiffness.bottomRows<6>() = WrenchStiffness(J.R_WB, 1, -F, -T, r_j, -dF_x, -dT_x, dr_j);
   jac.damping.topRows<6>() = WrenchDamping(I.R_WB, I.s_W, dF_v, dT_v);
   jac.damping.bottomRows<6>() = WrenchDamping(J.R_WB, r_j, -dF_v, -dT_v);
+  jac.SetSlotForce(0, WrenchForce(I.R_WB, F, T, I.s_W));
+  jac.SetSlotForce(1, WrenchForce(J.R_WB, -F, -T, r_j));
   jac.ScatterTo(sink);
 }
 

@@ -363,7 +363,7 @@ TEST(Bushing, ReleasedFromRestStartsWithTheFirstStepRule) {
   st.initial_step_fraction = 0.0;  // IDA's own estimate
   const RunResult r = RunAnalysis(PrepareRun(s, st), st, [](const Sample&) {});
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.ida.status, IdaStatus::kConvergenceFailure);
+  EXPECT_EQ(r.ida.status, IntegratorStatus::kConvergenceFailure);
   EXPECT_NE(r.message.find("initial_step_fraction"), std::string::npos) << r.message;
 }
 
