@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "libemb/common/error.h"
-#include "libemb/linalg/cross_matrix.h"
+#include "libemb/common/skew.h"
 
 namespace emb {
 namespace {
@@ -141,7 +141,7 @@ Eigen::Matrix3d BeamModel::ElementFrame(int e) const {
 
 Matrix6d BeamModel::RigidPartMass(int r) const {
   const RigidPart& p = rigid_parts_.at(r);
-  const Eigen::Matrix3d S = CrossMatrix(p.p_NC_W);
+  const Eigen::Matrix3d S = Skew(p.p_NC_W);
   Matrix6d M;
   M << p.mass * Eigen::Matrix3d::Identity(), -p.mass * S,  //
       p.mass * S, p.I_C_W - p.mass * S * S;

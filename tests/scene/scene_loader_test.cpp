@@ -15,6 +15,7 @@
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/scene/scene.h"
+#include "tests/support/temp_dir.h"
 
 namespace emb::scene {
 namespace {
@@ -129,18 +130,19 @@ TEST(SceneLoader, EngineMountStaticDeflection) {
 TEST(SceneLoader, OutputPathsAreRelativeToTheSceneFile) {
   // A scene in a subdirectory writes next to itself, whatever the working directory;
   // absolute paths stay; ParseScene (no file) leaves them as written.
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "emb_scene_loader_test" / "models";
+  const testing::ScopedTempDir tmp("emb_scene_loader");
+  const std::filesystem::path dir = tmp.path() / "models";
   std::filesystem::create_directories(dir);
+  // An absolute path (never written: LoadScene only resolves it).
+  const std::string absolute_csv = tmp.File("elsewhere/ball_abs.csv");
   const std::string body =
       "bodies:\n  - {name: ball, mass: 1.0, inertia: [0.1, 0.1, 0.1]}\n"
-      "output: {file: results/ball.h5, csv: /tmp/ball_abs.csv}\n";
+      "output: {file: results/ball.h5, csv: " + absolute_csv + "}\n";
   std::ofstream(dir / "ball.yaml") << body;
   const Scene sc = LoadScene((dir / "ball.yaml").string());
   EXPECT_EQ(sc.output.file, (dir / "results" / "ball.h5").string());
-  EXPECT_EQ(sc.output.csv, "/tmp/ball_abs.csv");
+  EXPECT_EQ(sc.output.csv, absolute_csv);
   EXPECT_EQ(ParseScene(body, "ball.yaml").output.file, "results/ball.h5");
-  std::filesystem::remove_all(dir.parent_path());
 }
 
 TEST(SceneLoader, AnalysisSolverAndToleranceKeys) {
