@@ -135,19 +135,15 @@ JournalBearing::FilmLoad JournalBearing::CalcFilmLoad(const RelativeMotion& rel,
 }
 
 void JournalBearing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
-  const System& sys = *ctx.system;
-  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
+  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
   const FilmLoad load = CalcFilmLoad(CalcRelativeMotion(I, J), ctx.t);
   const Eigen::Vector3d F_W = J.R_WM * Eigen::Vector3d(load.force.x(), load.force.y(), 0.0);
   const Eigen::Vector3d T_W = J.R_WM.col(2) * load.torque;
-  AddWrenchPair(sys.layout(), I, J, F_W, T_W, f);
+  AddWrenchPair(ctx.system->layout(), I, J, F_W, T_W, f);
 }
 
 bool JournalBearing::DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* out) const {
-  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
-  const FilmLoad load = CalcFilmLoad(CalcRelativeMotion(I, J), ctx.t);
+  const FilmLoad load = CalcFilmLoad(CalcRelativeMotion(CalcMarkerPair(ctx, i_, j_)), ctx.t);
   *out << load.force.x(), load.force.y(), 0.0, 0.0, 0.0, load.torque;
   return true;
 }
@@ -158,14 +154,13 @@ void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSi
   using Eigen::MatrixXd;
   using Eigen::Vector2d;
   using Eigen::Vector3d;
-  const System& sys = *ctx.system;
-  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
-  const RelativeMotion rel = CalcRelativeMotion(I, J);
+  const MarkerPair markers = CalcMarkerPair(ctx, i_, j_);
+  const auto& [I, J] = markers;
+  const RelativeMotion rel = CalcRelativeMotion(markers);
   const Vector2d e = rel.x.head<2>(), e_dot = rel.x_dot.head<2>();
   const double w = rel.w.z();
   CheckEccentricity(e, ctx.t);
-  const MarkerDerivatives dI = DifferentiateMarker(I, 0, 2), dJ = DifferentiateMarker(J, 1, 2);
+  const auto [dI, dJ] = DifferentiateMarkerPair(markers);
   const Matrix3d R_WJ = J.R_WM;
 
   // e = (x, y of I in J), e' and w = z . (relative angular velocity in J): relative_motion.h.
@@ -214,8 +209,7 @@ void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSi
 }
 
 double JournalBearing::DoCalcDissipatedPower(const ForceContext& ctx) const {
-  const RelativeMotion rel = CalcRelativeMotion(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
-                                                CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
+  const RelativeMotion rel = CalcRelativeMotion(CalcMarkerPair(ctx, i_, j_));
   const FilmLoad load = CalcFilmLoad(rel, ctx.t);
   return -(load.force.dot(rel.x_dot.head<2>()) + load.torque * rel.w.z());
 }

@@ -51,6 +51,13 @@ Eigen::Matrix<double, 6, 6> Read6x6(const YAML::Node& n, const std::string& file
   return K;
 }
 
+// A map that must give exactly one of `keys` (a comma-separated list for the message).
+void CheckExactlyOne(int given, const YAML::Node& n, const std::string& file,
+                     const std::string& what, const char* keys) {
+  EMB_THROW_IF(given != 1, Where(file, n) << ": " << what << ": expected exactly one of " << keys
+                                          << "; got " << given);
+}
+
 }  // namespace
 
 Matrix3d ReadInertia(const YAML::Node& n, const std::string& file, const std::string& what) {
@@ -129,10 +136,7 @@ Matrix3d ReadOrientation(const YAML::Node& n, const std::string& file, const std
     r.Optional("x_axis");
   }
   r.Finish();
-  EMB_THROW_IF(given != 1, Where(file, n) << ": " << what
-                                          << ": expected exactly one of euler313, euler313_deg, "
-                                             "quaternion, z_axis; got "
-                                          << given);
+  CheckExactlyOne(given, n, file, what, "euler313, euler313_deg, quaternion, z_axis");
   return R;
 }
 
@@ -197,10 +201,8 @@ mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
     r.Optional("cylinder_pressure");
   }
   r.Finish();
-  EMB_THROW_IF(given != 1, Where(file, n) << ": " << what
-                                          << ": expected exactly one of constant, polynomial, "
-                                             "rpm, harmonic, table, cylinder_pressure; got "
-                                          << given);
+  CheckExactlyOne(given, n, file, what,
+                  "constant, polynomial, rpm, harmonic, table, cylinder_pressure");
   return f;
 }
 

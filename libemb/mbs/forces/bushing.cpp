@@ -45,25 +45,22 @@ Bushing::State Bushing::Calc(const MarkerKinematics& I, const MarkerKinematics& 
 }
 
 void Bushing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
-  const System& sys = *ctx.system;
-  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
+  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
   const State s = Calc(I, J);
   const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
   const Eigen::Vector3d F_W = J.R_WM * m.head<3>();
   const Eigen::Vector3d T_W = J.R_WM * (s.inv_jacobian.transpose() * m.tail<3>());
-  AddWrenchPair(sys.layout(), I, J, F_W, T_W, f);
+  AddWrenchPair(ctx.system->layout(), I, J, F_W, T_W, f);
 }
 
 void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
   using Eigen::Matrix3d;
   using Eigen::MatrixXd;
   using Eigen::Vector3d;
-  const System& sys = *ctx.system;
-  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
+  const MarkerPair markers = CalcMarkerPair(ctx, i_, j_);
+  const auto& [I, J] = markers;
   const State s = Calc(I, J);
-  const MarkerDerivatives dI = DifferentiateMarker(I, 0, 2), dJ = DifferentiateMarker(J, 1, 2);
+  const auto [dI, dJ] = DifferentiateMarkerPair(markers);
   const RelativeMotionDerivatives dr = DifferentiateRelativeMotion(s.rel, I, J, dI, dJ);
   const Matrix3d R_WJ = J.R_WM, R_JW = s.rel.R_JW;
   const Vector3d theta = s.xi.tail<3>();
@@ -98,22 +95,22 @@ void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sin
 }
 
 bool Bushing::DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const {
-  const State s = Calc(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
-                       CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
+  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const State s = Calc(I, J);
   const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
   *load << m.head<3>(), s.inv_jacobian.transpose() * m.tail<3>();
   return true;
 }
 
 double Bushing::DoCalcPotentialEnergy(const ForceContext& ctx) const {
-  const State s = Calc(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
-                       CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
+  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const State s = Calc(I, J);
   return 0.5 * s.xi.dot(k_ * s.xi);
 }
 
 double Bushing::DoCalcDissipatedPower(const ForceContext& ctx) const {
-  const State s = Calc(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
-                       CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
+  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const State s = Calc(I, J);
   return s.xi_dot.dot(d_ * s.xi_dot);
 }
 

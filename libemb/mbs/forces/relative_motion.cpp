@@ -1,10 +1,19 @@
 #include "libemb/mbs/forces/relative_motion.h"
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/core/force_element.h"
 #include "libemb/mbs/core/rotation.h"
+#include "libemb/mbs/core/system.h"
 
 namespace emb::mbs {
+
+MarkerPair CalcMarkerPair(const ForceContext& ctx, int marker_i, int marker_j) {
+  return {CalcMarkerKinematics(*ctx.system, *ctx.bodies, marker_i),
+          CalcMarkerKinematics(*ctx.system, *ctx.bodies, marker_j)};
+}
+
+MarkerPairDerivatives DifferentiateMarkerPair(const MarkerPair& m) {
+  return {DifferentiateMarker(m.I, 0, 2), DifferentiateMarker(m.J, 1, 2)};
+}
 
 RelativeMotion CalcRelativeMotion(const MarkerKinematics& I, const MarkerKinematics& J) {
   RelativeMotion r;

@@ -18,11 +18,24 @@
 
 #include <Eigen/Dense>
 
+#include "libemb/mbs/core/force_element.h"
 #include "libemb/mbs/core/kinematics.h"
 #include "libemb/mbs/core/state_layout.h"
 #include "libemb/mbs/forces/force_jacobian.h"
 
 namespace emb::mbs {
+
+/// Markers I and J of a two-marker element at the state of a force context.
+struct MarkerPair {
+  MarkerKinematics I, J;
+};
+MarkerPair CalcMarkerPair(const ForceContext& ctx, int marker_i, int marker_j);
+
+/// Their derivatives in the local slots 0 (I) and 1 (J) of force_jacobian.h.
+struct MarkerPairDerivatives {
+  MarkerDerivatives dI, dJ;
+};
+MarkerPairDerivatives DifferentiateMarkerPair(const MarkerPair& markers);
 
 struct RelativeMotion {
   Eigen::Vector3d d_W;   ///< p_WI − p_WJ [m]
@@ -31,6 +44,7 @@ struct RelativeMotion {
   Eigen::Vector3d x, x_dot, w;  ///< in J's axes (file comment)
 };
 RelativeMotion CalcRelativeMotion(const MarkerKinematics& I, const MarkerKinematics& J);
+inline RelativeMotion CalcRelativeMotion(const MarkerPair& m) { return CalcRelativeMotion(m.I, m.J); }
 
 /// d(x, x', w)/d(X, V) in the two local slots (3 × 12 each).
 struct RelativeMotionDerivatives {
