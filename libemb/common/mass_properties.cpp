@@ -30,7 +30,8 @@ MassProperties MassPropertiesSum::Result() const {
   }
   if (!(mass_ > 0.0)) return out;
   out.center_of_mass = first / mass_;
-  for (const MassProperties& p : parts_) out.inertia_about_com += p.InertiaAbout(out.center_of_mass);
+  for (const MassProperties& p : parts_)
+    out.inertia_about_com += p.InertiaAbout(out.center_of_mass);
   return out;
 }
 

@@ -38,8 +38,9 @@ EigenpairCheck CheckEigenpairs(const Eigen::MatrixXd& Phi, const Eigen::MatrixXd
     c.backward_errors[i] = scale > 0 ? res.norm() / scale : res.norm();
   }
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  c.max_backward_error =
-      m == 0 ? 0.0 : c.backward_errors.hasNaN() ? kNaN : c.backward_errors.maxCoeff();
+  c.max_backward_error = m == 0                       ? 0.0
+                         : c.backward_errors.hasNaN() ? kNaN
+                                                      : c.backward_errors.maxCoeff();
   const Eigen::MatrixXd G = Phi.transpose() * MPhi - Eigen::MatrixXd::Identity(m, m);
   c.orthonormality_error = m == 0 ? 0.0 : G.hasNaN() ? kNaN : G.cwiseAbs().maxCoeff();
   return c;

@@ -24,8 +24,8 @@ inline constexpr double kOrthonormalityLimit = 1e-8;
 double NormOne(const Eigen::MatrixXd& A);
 
 struct EigenpairCheck {
-  Eigen::VectorXd backward_errors;  ///< η_i per pair
-  double max_backward_error{0.0};   ///< NaN if any η_i is
+  Eigen::VectorXd backward_errors;   ///< η_i per pair
+  double max_backward_error{0.0};    ///< NaN if any η_i is
   double orthonormality_error{0.0};  ///< ‖ΦᵀMΦ − I‖_max, NaN if not finite
   /// max η ≤ residual_tolerance and orthonormality ≤ kOrthonormalityLimit (NaN fails).
   bool Passed(double residual_tolerance) const;

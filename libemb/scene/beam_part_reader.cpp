@@ -32,8 +32,8 @@ BeamPartSpec ReadBeamPart(const YAML::Node& node, const std::string& file) {
   }
   const std::string webs = r.GetString("webs", "rigid");
   EMB_THROW_IF(webs != "rigid" && webs != "elastic",
-               Where(file, node) << ": " << what << " webs: expected rigid or elastic, got '" << webs
-                                 << "'");
+               Where(file, node) << ": " << what << " webs: expected rigid or elastic, got '"
+                                 << webs << "'");
   g.webs = webs == "rigid" ? WebModel::kRigid : WebModel::kElastic;
   g.web_width = r.GetDouble("web_width", 0.0);
   g.max_element_length = r.GetDouble("element_length", g.max_element_length);

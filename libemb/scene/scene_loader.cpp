@@ -8,12 +8,12 @@
 #include <sstream>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/forces/applied_load.h"
-#include "libemb/mbs/forces/bushing.h"
 #include "libemb/mbs/core/rotation.h"
-#include "libemb/mbs/forces/spring_damper.h"
 #include "libemb/mbs/flexible/beam_part.h"
 #include "libemb/mbs/flexible/flexible_body.h"
+#include "libemb/mbs/forces/applied_load.h"
+#include "libemb/mbs/forces/bushing.h"
+#include "libemb/mbs/forces/spring_damper.h"
 #include "libemb/scene/beam_part_reader.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
@@ -67,16 +67,20 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   placement.p_WM = rb.GetVector3("position", Vector3d::Zero());
   if (const YAML::Node o = rb.Optional("orientation"))
     placement.R_WM = ReadOrientation(o, file, what + " orientation");
-  if (rb.Has("velocity")) placement.v_WB = rb.GetVector3("velocity");
-  else rb.Optional("velocity");
+  if (rb.Has("velocity"))
+    placement.v_WB = rb.GetVector3("velocity");
+  else
+    rb.Optional("velocity");
   placement.omega_W = rb.GetVector3("angular_velocity", Vector3d::Zero());
   // The keys of `model: beam` (beam_part_reader.h) may stay in the entry: one-word switch.
   for (const char* key : {"geometry", "parameters", "webs", "web_width", "element_length",
                           "stiffness_damping", "material"})
     rb.Optional(key);
   std::vector<double> eta0;
-  if (rb.Has("modal_coordinates")) eta0 = rb.GetDoubles("modal_coordinates");
-  else rb.Optional("modal_coordinates");
+  if (rb.Has("modal_coordinates"))
+    eta0 = rb.GetDoubles("modal_coordinates");
+  else
+    rb.Optional("modal_coordinates");
   rb.Finish();
   const ReducedBody reduced = mbs::ReadPartBodyFile(path, name, expect_mesh_hash);
   mbs::FlexibleBodyModel m = mbs::MakeFlexibleBody(name, reduced, path, options, placement);
@@ -93,129 +97,136 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
 
 void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sys, Parts* parts,
                 std::vector<std::string>* notes) {
-  ReadNamedList(list, file, "bodies", "body", [&](MapReader& rb, const std::string& name,
-                                                  const YAML::Node& node) {
-    if (IsBeamPart(node)) {  // model: beam (beam_part_reader.h)
-      const BeamPartSpec spec = ReadBeamPart(node, file);
-      parts->beams[name] =
-          mbs::AddBeamPart(sys, name, MakeBeamModelFromGeometry(spec.geometry, spec.generation),
-                           spec.placement);
-      return;
-    }
-    const std::string model = rb.GetString("model", "rigid");
-    EMB_THROW_IF(model != "rigid" && model != "cms",
-                 Where(file, node) << ": " << rb.what() << " model: expected 'rigid' or 'cms', got '"
-                                   << model << "'");
-    const bool from_file = rb.Has("body_file");
-    EMB_THROW_IF(model == "cms" && !from_file,
-                 Where(file, node) << ": " << rb.what() << ": model 'cms' needs a body_file (from "
-                                   << "emb reduce)");
-    if (from_file) return ReadBodyFilePart(rb, file, model == "cms", sys, parts, notes);
-    mbs::RigidBody b;
-    b.name = name;
-    b.p_WB = rb.GetVector3("position", Vector3d::Zero());
-    if (const YAML::Node o = rb.Optional("orientation"))
-      b.R_WB = ReadOrientation(o, file, rb.what() + " orientation");
-    b.v_WB = rb.GetVector3("velocity", Vector3d::Zero());
-    b.omega_W = rb.GetVector3("angular_velocity", Vector3d::Zero());
-    b.mass = rb.GetDouble("mass");
-    b.inertia_B = ReadInertia(rb.Require("inertia"), file, rb.what() + " inertia");
-    rb.Finish();
-    sys->AddBody(b);
-  });
+  ReadNamedList(
+      list, file, "bodies", "body",
+      [&](MapReader& rb, const std::string& name, const YAML::Node& node) {
+        if (IsBeamPart(node)) {  // model: beam (beam_part_reader.h)
+          const BeamPartSpec spec = ReadBeamPart(node, file);
+          parts->beams[name] = mbs::AddBeamPart(
+              sys, name, MakeBeamModelFromGeometry(spec.geometry, spec.generation), spec.placement);
+          return;
+        }
+        const std::string model = rb.GetString("model", "rigid");
+        EMB_THROW_IF(model != "rigid" && model != "cms",
+                     Where(file, node)
+                         << ": " << rb.what() << " model: expected 'rigid' or 'cms', got '" << model
+                         << "'");
+        const bool from_file = rb.Has("body_file");
+        EMB_THROW_IF(model == "cms" && !from_file, Where(file, node)
+                                                       << ": " << rb.what()
+                                                       << ": model 'cms' needs a body_file (from "
+                                                       << "emb reduce)");
+        if (from_file) return ReadBodyFilePart(rb, file, model == "cms", sys, parts, notes);
+        mbs::RigidBody b;
+        b.name = name;
+        b.p_WB = rb.GetVector3("position", Vector3d::Zero());
+        if (const YAML::Node o = rb.Optional("orientation"))
+          b.R_WB = ReadOrientation(o, file, rb.what() + " orientation");
+        b.v_WB = rb.GetVector3("velocity", Vector3d::Zero());
+        b.omega_W = rb.GetVector3("angular_velocity", Vector3d::Zero());
+        b.mass = rb.GetDouble("mass");
+        b.inertia_B = ReadInertia(rb.Require("inertia"), file, rb.what() + " inertia");
+        rb.Finish();
+        sys->AddBody(b);
+      });
 }
 
 void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* sys,
                  const Parts& parts) {
-  ReadNamedList(list, file, "markers", "marker", [&](MapReader& r, const std::string& name,
-                                                     const YAML::Node& node) {
-    const std::string body = r.GetString("body");
-    const std::string frame = r.GetString("frame", "body");
-    EMB_THROW_IF(frame != "body" && frame != "world",
-                 Where(file, node) << ": marker '" << name
-                                   << "' frame: expected 'body' or 'world', got '" << frame << "'");
-    const std::string interface = r.GetString("interface", "");
-    EMB_THROW_IF(!interface.empty() && r.Has("position"),
-                 Where(file, node) << ": marker '" << name
-                                   << "': give either an interface or a position, not both");
-    const Vector3d p = r.GetVector3("position", Vector3d::Zero());
-    Matrix3d R = Matrix3d::Identity();
-    if (const YAML::Node o = r.Optional("orientation"))
-      R = ReadOrientation(o, file, "marker '" + name + "' orientation");
-    r.Finish();
-    // A beam part is no single body: an interface marker goes on the node body of the
-    // interface, with the orientation in part axes (mbs/flexible/beam_part.h).
-    if (const auto beam = parts.beams.find(body); beam != parts.beams.end() && !interface.empty()) {
-      mbs::AddInterfaceMarker(sys, beam->second, name, interface, R);
-      return;
-    }
-    const int b = sys->FindBody(body);
-    const mbs::RigidBody& rb = sys->body(b);
-    const auto part = parts.from_body_files.find(body);
-    if (!interface.empty()) {
-      EMB_THROW_IF(part == parts.from_body_files.end(),
-                   "marker '" << name << "': body '" << body
-                              << "' has no body_file, so no interfaces");
-      mbs::AddInterfaceMarker(sys, part->second, name, interface, R);
-      return;
-    }
-    EMB_THROW_IF(rb.elastic != nullptr,
-                 "marker '" << name << "': body '" << body
-                            << "' is flexible; expected `interface: NAME` (a marker must sit on "
-                               "an interface node to follow the deformation)");
-    Vector3d p_BM = p;
-    Matrix3d R_BM = R;
-    if (frame == "world") {  // given at the initial configuration
-      p_BM = rb.R_WB.transpose() * (p - rb.p_WB);
-      R_BM = rb.R_WB.transpose() * R;
-    } else if (part != parts.from_body_files.end()) {  // mesh coordinates
-      p_BM = part->second.MeshToBody(p);
-    }
-    sys->AddMarker(name, body, p_BM, R_BM);
-  });
+  ReadNamedList(
+      list, file, "markers", "marker",
+      [&](MapReader& r, const std::string& name, const YAML::Node& node) {
+        const std::string body = r.GetString("body");
+        const std::string frame = r.GetString("frame", "body");
+        EMB_THROW_IF(frame != "body" && frame != "world",
+                     Where(file, node)
+                         << ": marker '" << name << "' frame: expected 'body' or 'world', got '"
+                         << frame << "'");
+        const std::string interface = r.GetString("interface", "");
+        EMB_THROW_IF(!interface.empty() && r.Has("position"),
+                     Where(file, node) << ": marker '" << name
+                                       << "': give either an interface or a position, not both");
+        const Vector3d p = r.GetVector3("position", Vector3d::Zero());
+        Matrix3d R = Matrix3d::Identity();
+        if (const YAML::Node o = r.Optional("orientation"))
+          R = ReadOrientation(o, file, "marker '" + name + "' orientation");
+        r.Finish();
+        // A beam part is no single body: an interface marker goes on the node body of the
+        // interface, with the orientation in part axes (mbs/flexible/beam_part.h).
+        if (const auto beam = parts.beams.find(body);
+            beam != parts.beams.end() && !interface.empty()) {
+          mbs::AddInterfaceMarker(sys, beam->second, name, interface, R);
+          return;
+        }
+        const int b = sys->FindBody(body);
+        const mbs::RigidBody& rb = sys->body(b);
+        const auto part = parts.from_body_files.find(body);
+        if (!interface.empty()) {
+          EMB_THROW_IF(
+              part == parts.from_body_files.end(),
+              "marker '" << name << "': body '" << body << "' has no body_file, so no interfaces");
+          mbs::AddInterfaceMarker(sys, part->second, name, interface, R);
+          return;
+        }
+        EMB_THROW_IF(
+            rb.elastic != nullptr,
+            "marker '" << name << "': body '" << body
+                       << "' is flexible; expected `interface: NAME` (a marker must sit on "
+                          "an interface node to follow the deformation)");
+        Vector3d p_BM = p;
+        Matrix3d R_BM = R;
+        if (frame == "world") {  // given at the initial configuration
+          p_BM = rb.R_WB.transpose() * (p - rb.p_WB);
+          R_BM = rb.R_WB.transpose() * R;
+        } else if (part != parts.from_body_files.end()) {  // mesh coordinates
+          p_BM = part->second.MeshToBody(p);
+        }
+        sys->AddMarker(name, body, p_BM, R_BM);
+      });
 }
 
 void ReadJoints(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  ReadNamedList(list, file, "joints", "joint", [&](MapReader& r, const std::string& name,
-                                                   const YAML::Node&) {
-    const std::string type = r.GetString("type");
-    const std::string i = r.GetString("i"), j = r.GetString("j");
-    r.Finish();
-    sys->AddJoint(name, mbs::ParseJointType(type), i, j);
-  });
+  ReadNamedList(list, file, "joints", "joint",
+                [&](MapReader& r, const std::string& name, const YAML::Node&) {
+                  const std::string type = r.GetString("type");
+                  const std::string i = r.GetString("i"), j = r.GetString("j");
+                  r.Finish();
+                  sys->AddJoint(name, mbs::ParseJointType(type), i, j);
+                });
 }
 
 void ReadMotions(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  ReadNamedList(list, file, "motions", "motion", [&](MapReader& r, const std::string& name,
-                                                     const YAML::Node&) {
-    const std::string joint = r.GetString("joint");
-    const mbs::JointCoordinate c = ReadCoordinate(r, "coordinate");
-    const mbs::TimeFunction f = ReadFunction(r.Require("function"), file, r.what() + " function");
-    r.Finish();
-    sys->AddMotion(name, joint, c, f);
-  });
+  ReadNamedList(list, file, "motions", "motion",
+                [&](MapReader& r, const std::string& name, const YAML::Node&) {
+                  const std::string joint = r.GetString("joint");
+                  const mbs::JointCoordinate c = ReadCoordinate(r, "coordinate");
+                  const mbs::TimeFunction f =
+                      ReadFunction(r.Require("function"), file, r.what() + " function");
+                  r.Finish();
+                  sys->AddMotion(name, joint, c, f);
+                });
 }
 
 void ReadCouplers(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  ReadNamedList(list, file, "couplers", "coupler", [&](MapReader& r, const std::string& name,
-                                                       const YAML::Node&) {
-    const std::string j1 = r.GetString("joint1"), j2 = r.GetString("joint2");
-    const mbs::JointCoordinate c1 = ReadCoordinate(r, "coordinate1");
-    const mbs::JointCoordinate c2 = ReadCoordinate(r, "coordinate2");
-    const double ratio = r.GetDouble("ratio");
-    const double offset = r.GetDouble("offset", 0.0);
-    r.Finish();
-    sys->AddCoupler(name, j1, c1, j2, c2, ratio, offset);
-  });
+  ReadNamedList(list, file, "couplers", "coupler",
+                [&](MapReader& r, const std::string& name, const YAML::Node&) {
+                  const std::string j1 = r.GetString("joint1"), j2 = r.GetString("joint2");
+                  const mbs::JointCoordinate c1 = ReadCoordinate(r, "coordinate1");
+                  const mbs::JointCoordinate c2 = ReadCoordinate(r, "coordinate2");
+                  const double ratio = r.GetDouble("ratio");
+                  const double offset = r.GetDouble("offset", 0.0);
+                  r.Finish();
+                  sys->AddCoupler(name, j1, c1, j2, c2, ratio, offset);
+                });
 }
 
 void ReadSensors(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  ReadNamedList(list, file, "sensors", "sensor", [&](MapReader& r, const std::string& name,
-                                                     const YAML::Node&) {
-    const std::string i = r.GetString("i"), j = r.GetString("j");
-    r.Finish();
-    sys->AddSensor(name, i, j);
-  });
+  ReadNamedList(list, file, "sensors", "sensor",
+                [&](MapReader& r, const std::string& name, const YAML::Node&) {
+                  const std::string i = r.GetString("i"), j = r.GetString("j");
+                  r.Finish();
+                  sys->AddSensor(name, i, j);
+                });
 }
 
 void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::AnalysisSettings* s) {

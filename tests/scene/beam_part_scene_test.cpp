@@ -25,7 +25,9 @@ TEST(BeamPartScene, SceneKeyModelBeam) {
   std::ofstream(path) << "bodies:\n"
                          "  - name: crank\n"
                          "    model: beam\n"
-                         "    geometry: " << kCrank << "\n"
+                         "    geometry: "
+                      << kCrank
+                      << "\n"
                          "    webs: elastic\n"
                          "    stiffness_damping: 1.0e-5\n"
                          "    position: [0.1, 0, 0]\n"
@@ -66,13 +68,17 @@ TEST(BeamPartScene, SceneKeyModelBeam) {
   std::ofstream(path) << "bodies:\n"
                          "  - name: crank\n"
                          "    model: beam\n"
-                         "    geometry: " << kCrank << "\n"
+                         "    geometry: "
+                      << kCrank
+                      << "\n"
                          "    webs: flexible\n";
   EXPECT_TRUE(test::ContainsAll(test::InputErrorMessage([&] { LoadScene(path); }),
                                 {"webs: expected rigid or elastic"}));
   // An interface the part does not have is named, with the part's interfaces.
   std::ofstream(path) << "bodies:\n"
-                         "  - {name: crank, model: beam, geometry: " << kCrank << "}\n"
+                         "  - {name: crank, model: beam, geometry: "
+                      << kCrank
+                      << "}\n"
                          "markers:\n"
                          "  - {name: m, body: crank, interface: main_journal_9}\n";
   EXPECT_TRUE(test::ContainsAll(

@@ -23,8 +23,9 @@ void ExpectSceneError(const std::string& part_keys, const std::string& markers,
                       const std::vector<std::string>& words) {
   testing::BarSpec bar;
   bar.modes = 4;
-  const std::string yaml = "bodies:\n  - {name: bar, model: cms, body_file: " +
-                           testing::FlexibleBarFile(bar) + part_keys + "}\n" + markers;
+  const std::string yaml =
+      "bodies:\n  - {name: bar, model: cms, body_file: " + testing::FlexibleBarFile(bar) +
+      part_keys + "}\n" + markers;
   EXPECT_TRUE(test::ContainsAll(
       test::InputErrorMessage([&] { scene::ParseScene(yaml, "bad.yaml"); }), words))
       << part_keys << " / " << markers;
@@ -63,9 +64,10 @@ TEST(BodyFilePartErrors, InitialModalCoordinatesOfTheWrongSize) {
 
 TEST(BodyFilePartErrors, MissingFile) {
   EXPECT_TRUE(test::ContainsAll(test::InputErrorMessage([] {
-                                  scene::ParseScene("bodies:\n  - {name: crank, model: cms, "
-                                                    "body_file: /nonexistent/c.h5}\n",
-                                                    "bad.yaml");
+                                  scene::ParseScene(
+                                      "bodies:\n  - {name: crank, model: cms, "
+                                      "body_file: /nonexistent/c.h5}\n",
+                                      "bad.yaml");
                                 }),
                                 {"bad.yaml:2", "part 'crank'", "/nonexistent/c.h5"}));
 }

@@ -39,8 +39,7 @@ BeamPart AddBeamPart(System* sys, const std::string& name, const GeneratedBeamMo
     const Vector12d d = CalcBeamLumpedMass(model.ElementProperties(e));
     const Matrix3d R_PB = model.ElementFrame(e);
     const auto [pa, pb] = model.ElasticEnds(e);
-    lumps[el.node_a].Add(d[kUx], pa,
-                         R_PB * d.segment<3>(kThetaX).asDiagonal() * R_PB.transpose());
+    lumps[el.node_a].Add(d[kUx], pa, R_PB * d.segment<3>(kThetaX).asDiagonal() * R_PB.transpose());
     lumps[el.node_b].Add(d[6 + kUx], pb,
                          R_PB * d.segment<3>(6 + kThetaX).asDiagonal() * R_PB.transpose());
   }
@@ -60,7 +59,8 @@ BeamPart AddBeamPart(System* sys, const std::string& name, const GeneratedBeamMo
     RigidBody b;
     b.name = body_of(i);
     b.mass = l.mass;
-    b.inertia_B = R * (0.5 * (l.inertia_about_com + l.inertia_about_com.transpose())) * R.transpose();
+    b.inertia_B =
+        R * (0.5 * (l.inertia_about_com + l.inertia_about_com.transpose())) * R.transpose();
     b.p_WB = to_world(com[i]);
     b.R_WB = Matrix3d::Identity();
     b.omega_W = placement.omega_W;
@@ -69,7 +69,8 @@ BeamPart AddBeamPart(System* sys, const std::string& name, const GeneratedBeamMo
     part.bodies.push_back(b.name);
   }
   // A marker on node i's body at part point p_P with part-frame axes R_PM.
-  auto add_marker = [&](const std::string& marker, int i, const Vector3d& p_P, const Matrix3d& R_PM) {
+  auto add_marker = [&](const std::string& marker, int i, const Vector3d& p_P,
+                        const Matrix3d& R_PM) {
     return sys->AddMarker(marker, body_of(i), R * (p_P - com[i]), R * R_PM);
   };
   for (int e = 0; e < model.num_elements(); ++e) {

@@ -128,9 +128,9 @@ FlexiblePart AddFlexibleBody(System* sys, const std::string& name, const Reduced
   FlexibleBodyModel m = MakeFlexibleBody(name, reduced, source, options, placement);
   for (const Eigen::VectorXd* v : {&eta0, &eta_dot0})
     EMB_THROW_IF(v->size() != 0 && v->size() != m.part.num_modes(),
-                 "part '" << name << "': expected " << m.part.num_modes()
-                          << " initial modal " << (v == &eta0 ? "coordinates" : "rates")
-                          << " (one per kept mode), got " << v->size());
+                 "part '" << name << "': expected " << m.part.num_modes() << " initial modal "
+                          << (v == &eta0 ? "coordinates" : "rates") << " (one per kept mode), got "
+                          << v->size());
   m.body.eta0 = eta0;
   m.body.eta_dot0 = eta_dot0;
   m.part.body = sys->AddBody(m.body);

@@ -71,7 +71,7 @@ struct FlexiblePart {
   bool flexible{false};
   Eigen::Vector3d com_mesh{Eigen::Vector3d::Zero()};  ///< c̄ in M [m]
   std::vector<std::string> interface_names;
-  std::vector<Eigen::Vector3d> interface_points;      ///< in M [m]
+  std::vector<Eigen::Vector3d> interface_points;  ///< in M [m]
   /// 6 nb × ne (kept modes, B's axes): rows 6k..6k+2 the translation and 6k+3..6k+5 the
   /// rotation of interface k per unit modal coordinate. Empty for a rigid part.
   Eigen::MatrixXd interface_shapes;
@@ -116,8 +116,7 @@ FlexibleBodyModel MakeFlexibleBody(const std::string& name, const ReducedBody& r
 /// System::AddBody.
 FlexiblePart AddFlexibleBody(System* sys, const std::string& name, const ReducedBody& reduced,
                              const std::string& source, const FlexibleBodyOptions& options = {},
-                             const PartPlacement& placement = {},
-                             const Eigen::VectorXd& eta0 = {},
+                             const PartPlacement& placement = {}, const Eigen::VectorXd& eta0 = {},
                              const Eigen::VectorXd& eta_dot0 = {});
 
 /// Adds marker `marker` at interface `interface` of `part` with axes R_BM (in B, i.e. mesh

@@ -45,9 +45,9 @@ RelativeMotionDerivatives DifferentiateRelativeMotion(const RelativeMotion& rel,
   return r;
 }
 
-void AddWrenchPair(const StateLayout& layout, const MarkerKinematics& I,
-                   const MarkerKinematics& J, const Eigen::Vector3d& F_W,
-                   const Eigen::Vector3d& T_W, Eigen::Ref<Eigen::VectorXd> f) {
+void AddWrenchPair(const StateLayout& layout, const MarkerKinematics& I, const MarkerKinematics& J,
+                   const Eigen::Vector3d& F_W, const Eigen::Vector3d& T_W,
+                   Eigen::Ref<Eigen::VectorXd> f) {
   AddWrench(layout, I, I.p_WM, F_W, T_W, f);
   AddWrench(layout, J, I.p_WM, -F_W, -T_W, f);
 }

@@ -38,13 +38,15 @@ struct MarkerPairDerivatives {
 MarkerPairDerivatives DifferentiateMarkerPair(const MarkerPair& markers);
 
 struct RelativeMotion {
-  Eigen::Vector3d d_W;   ///< p_WI − p_WJ [m]
-  Eigen::Vector3d y_W;   ///< v_WI − v_WJ − ω_J × d [m/s]
-  Eigen::Matrix3d R_JW;  ///< J's axes from W
+  Eigen::Vector3d d_W;          ///< p_WI − p_WJ [m]
+  Eigen::Vector3d y_W;          ///< v_WI − v_WJ − ω_J × d [m/s]
+  Eigen::Matrix3d R_JW;         ///< J's axes from W
   Eigen::Vector3d x, x_dot, w;  ///< in J's axes (file comment)
 };
 RelativeMotion CalcRelativeMotion(const MarkerKinematics& I, const MarkerKinematics& J);
-inline RelativeMotion CalcRelativeMotion(const MarkerPair& m) { return CalcRelativeMotion(m.I, m.J); }
+inline RelativeMotion CalcRelativeMotion(const MarkerPair& m) {
+  return CalcRelativeMotion(m.I, m.J);
+}
 
 /// d(x, x', w)/d(X, V) in the two local slots (3 × 12 each).
 struct RelativeMotionDerivatives {
@@ -57,9 +59,9 @@ RelativeMotionDerivatives DifferentiateRelativeMotion(const RelativeMotion& rel,
                                                       const MarkerDerivatives& dJ);
 
 /// Adds F_W, T_W on I's body and −F_W, −T_W on J's body, both at p_WI, to f.
-void AddWrenchPair(const StateLayout& layout, const MarkerKinematics& I,
-                   const MarkerKinematics& J, const Eigen::Vector3d& F_W,
-                   const Eigen::Vector3d& T_W, Eigen::Ref<Eigen::VectorXd> f);
+void AddWrenchPair(const StateLayout& layout, const MarkerKinematics& I, const MarkerKinematics& J,
+                   const Eigen::Vector3d& F_W, const Eigen::Vector3d& T_W,
+                   Eigen::Ref<Eigen::VectorXd> f);
 
 /// The derivatives of AddWrenchPair's generalised forces given dF, dT (3 × 12) with respect
 /// to the local X and V, scattered to `sink`: the arm of I's load is s_WI on I's body and

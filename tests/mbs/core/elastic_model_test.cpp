@@ -47,7 +47,9 @@ TEST(ElasticModel, EnergiesEqualTheNodeByNodeSumsOnTheMesh) {
   double worst_kinetic = 0.0, worst_gravity = 0.0, worst_elastic = 0.0;
   std::mt19937 rng(20240611);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  auto random3 = [&](double scale) { return Vector3d(scale * u(rng), scale * u(rng), scale * u(rng)); };
+  auto random3 = [&](double scale) {
+    return Vector3d(scale * u(rng), scale * u(rng), scale * u(rng));
+  };
   for (int trial = 0; trial < 5; ++trial) {
     const Vector3d p_WB = random3(1.0), v_WB = random3(2.0), omega_B = random3(300.0);
     const Matrix3d R = mbs::RotationFromQuaternion(Eigen::Vector4d(u(rng), u(rng), u(rng), u(rng)));
@@ -71,15 +73,17 @@ TEST(ElasticModel, EnergiesEqualTheNodeByNodeSumsOnTheMesh) {
     const double V_gravity_fe = -gs.dot(fe.M * r);
     const double V_elastic_fe = 0.5 * d.dot(fe.K * d);
 
-    const mbs::FlexibleTerms t = mbs::CalcFlexibleTerms(model, p_WB, R, v_WB, omega_B, eta,
-                                                        eta_dot, g, Vector3d::Zero(), false);
+    const mbs::FlexibleTerms t = mbs::CalcFlexibleTerms(model, p_WB, R, v_WB, omega_B, eta, eta_dot,
+                                                        g, Vector3d::Zero(), false);
     VectorXd V(6 + ne);
     V << v_WB, omega_B, eta_dot;
     const double T_model = 0.5 * V.dot(t.mass * V);
     worst_kinetic = std::max(worst_kinetic, std::abs(T_model - T_fe) / T_fe);
-    worst_gravity = std::max(worst_gravity, std::abs(t.gravity_energy - V_gravity_fe) /
-                                                (std::abs(V_gravity_fe) + rb.invariants.mass * g.norm()));
-    worst_elastic = std::max(worst_elastic, std::abs(t.elastic_energy - V_elastic_fe) / V_elastic_fe);
+    worst_gravity =
+        std::max(worst_gravity, std::abs(t.gravity_energy - V_gravity_fe) /
+                                    (std::abs(V_gravity_fe) + rb.invariants.mass * g.norm()));
+    worst_elastic =
+        std::max(worst_elastic, std::abs(t.elastic_energy - V_elastic_fe) / V_elastic_fe);
     // The same sums of products of the consistent mass in another order: round-off relative
     // to the energy (measured 4e-15 kinetic, 3e-16 gravity over the trials).
     constexpr double kRoundOff = 1e-13;

@@ -29,8 +29,7 @@ TEST(BeamPart, CrankshaftIsTheLumpedBeamModel) {
   System sys;
   BeamPartPlacement placement;
   placement.p_WP = Eigen::Vector3d(0.1, -0.2, 0.3);
-  placement.R_WP =
-      Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix();
+  placement.R_WP = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix();
   const BeamPart info = AddBeamPart(&sys, "crank", g, placement);
   // An interface marker added by name, with axes in the part frame.
   const Eigen::Matrix3d R_PM = Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitX()).toRotationMatrix();
@@ -38,7 +37,8 @@ TEST(BeamPart, CrankshaftIsTheLumpedBeamModel) {
   sys.Finalize();
   for (int k = 1; k <= 5; ++k)
     EXPECT_NO_THROW(sys.FindMarker("crank.main_journal_" + std::to_string(k)));
-  for (int k = 1; k <= 4; ++k) EXPECT_NO_THROW(sys.FindMarker("crank.crankpin_" + std::to_string(k)));
+  for (int k = 1; k <= 4; ++k)
+    EXPECT_NO_THROW(sys.FindMarker("crank.crankpin_" + std::to_string(k)));
   EXPECT_NO_THROW(sys.FindMarker("crank.nose"));
   EXPECT_NO_THROW(sys.FindMarker("crank.flange"));
   EXPECT_EQ(info.interfaces.size(), g.interfaces.size());
@@ -95,7 +95,8 @@ TEST(BeamPart, CrankshaftIsTheLumpedBeamModel) {
   constexpr int kRigidModes = 6, kCompared = 8;
   for (int i = kRigidModes; i < kRigidModes + kCompared; ++i) {
     const double f = std::sqrt(es.eigenvalues()[i]) / (2 * std::numbers::pi);
-    EXPECT_NEAR(f, modes.frequencies_hz[i], kSamePencil * modes.frequencies_hz[i]) << "mode " << i + 1;
+    EXPECT_NEAR(f, modes.frequencies_hz[i], kSamePencil * modes.frequencies_hz[i])
+        << "mode " << i + 1;
   }
 }
 

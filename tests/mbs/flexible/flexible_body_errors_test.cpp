@@ -93,8 +93,10 @@ TEST(FlexibleBodyErrors, StaleMeshHashAndMissingFile) {
 TEST(FlexibleBodyErrors, RigidPartsHaveTheMassPropertiesAndNoModes) {
   for (const bool by_option : {true, false}) {
     mbs::FlexibleBodyOptions o;
-    if (by_option) o.flexible = false;
-    else o.modes.max_modes = 0;
+    if (by_option)
+      o.flexible = false;
+    else
+      o.modes.max_modes = 0;
     mbs::System sys;
     const mbs::FlexiblePart part = mbs::AddFlexibleBody(&sys, "bar", Bar(), "bar.h5", o);
     const mbs::RigidBody& b = sys.body(part.body);

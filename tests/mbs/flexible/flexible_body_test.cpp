@@ -190,8 +190,8 @@ TEST(FlexibleBody, PendulumTendsToTheRigidOneAsTheStiffnessGrows) {
   const auto rigid = PendulumPath(false, kE);
   const double d1 = MaxDistance(PendulumPath(true, kE), rigid);
   const double d100 = MaxDistance(PendulumPath(true, 100 * kE), rigid);
-  std::printf("tip path gap to the rigid pendulum: %.4e m at E, %.4e m at 100 E (ratio %.2f)\n",
-              d1, d100, d1 / d100);
+  std::printf("tip path gap to the rigid pendulum: %.4e m at E, %.4e m at 100 E (ratio %.2f)\n", d1,
+              d100, d1 / d100);
   // Deflections scale with 1/E: the gap to the rigid path must shrink 100-fold. Measured
   // 98.6 (3.73e-6 m at E): the small dynamic part of the deflection (the bar's first modes
   // are at ~70 Hz against a swing period of ~1 s) does not scale exactly. The band 90..110

@@ -24,15 +24,15 @@
 namespace emb {
 namespace {
 
-constexpr double kRodLength = 0.6;                       // the bar of BarSpec [m]
-constexpr double kOmega = 2.0 * std::numbers::pi;        // crank speed, 60 rpm [rad/s]
-constexpr double kRevolutions = 2.0;                     // four near-singular passages
+constexpr double kRodLength = 0.6;                 // the bar of BarSpec [m]
+constexpr double kOmega = 2.0 * std::numbers::pi;  // crank speed, 60 rpm [rad/s]
+constexpr double kRevolutions = 2.0;               // four near-singular passages
 
 struct Case {
-  double eps{1e-3};             // l = r (1 + eps)
+  double eps{1e-3};  // l = r (1 + eps)
   double youngs_modulus{210e9};
   double damping_ratio{0.02};
-  bool rigid_rod{false};        // the same file's mass properties as one rigid body
+  bool rigid_rod{false};  // the same file's mass properties as one rigid body
   double rtol{1e-6};
   double revolutions{kRevolutions};
   bool modal_atol_by_frequency{true};
@@ -68,8 +68,8 @@ mbs::System Model(const Case& c) {
   // A marker given in world coordinates at the initial configuration (bodies start unrotated).
   auto world_marker = [&](const std::string& name, const std::string& body, const Vector3d& p_W,
                           const Matrix3d& R = Matrix3d::Identity()) {
-    const Vector3d p_WB = body == "ground" ? Vector3d::Zero()
-                                           : Vector3d(sys.body(sys.FindBody(body)).p_WB);
+    const Vector3d p_WB =
+        body == "ground" ? Vector3d::Zero() : Vector3d(sys.body(sys.FindBody(body)).p_WB);
     sys.AddMarker(name, body, p_W - p_WB, R);
   };
   rigid("crank", 2.0, Vector3d(1.0e-4, 0.06, 0.06), Vector3d(r / 2, 0, 0));
@@ -114,8 +114,8 @@ mbs::AnalysisSettings Settings(const Case& c) {
 
 struct Trajectory {
   mbs::RunResult result;
-  std::vector<double> t, x;       // slider position along the slide
-  double max_residual{0.0};       // max |Phi| over the samples
+  std::vector<double> t, x;  // slider position along the slide
+  double max_residual{0.0};  // max |Phi| over the samples
 };
 
 Trajectory Simulate(const Case& c) {

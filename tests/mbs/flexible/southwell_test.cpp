@@ -56,9 +56,9 @@ double PeakFrequency(const std::vector<double>& t, std::vector<double> x, double
 }
 
 struct Case {
-  double Omega{0.0};           ///< hub speed [rad/s]
-  bool stiffening{true};       ///< geometric stiffening on (kOn) or off
-  bool tip_held{false};        ///< the tip interface held in the reduction's load cases
+  double Omega{0.0};      ///< hub speed [rad/s]
+  bool stiffening{true};  ///< geometric stiffening on (kOn) or off
+  bool tip_held{false};   ///< the tip interface held in the reduction's load cases
 };
 
 // Flap and lag frequencies [Hz]: the tip's z and y motion in the hub frame (a sensor), after
@@ -88,8 +88,8 @@ Eigen::Vector2d FlapAndLag(const Case& c) {
   placement.omega_W = spin;
   Eigen::VectorXd eta0 = Eigen::VectorXd::Zero(elastic);
   eta0.head(2).setConstant(1.0e-4);  // released from a small bend in flap and lag
-  const mbs::FlexiblePart part = mbs::AddFlexibleBody(&sys, "bar", testing::FlexibleBar(bar),
-                                                      "bar", options, placement, eta0);
+  const mbs::FlexiblePart part =
+      mbs::AddFlexibleBody(&sys, "bar", testing::FlexibleBar(bar), "bar", options, placement, eta0);
   mbs::AddInterfaceMarker(&sys, part, "root", "x0");
   mbs::AddInterfaceMarker(&sys, part, "tip", "x1");
   sys.AddMarker("hub_face", "hub", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
@@ -107,11 +107,13 @@ Eigen::Vector2d FlapAndLag(const Case& c) {
   settings.ida.atol = 1.0e-9;
   const mbs::PreparedRun run = mbs::PrepareRun(sys, settings);
   std::vector<double> t, y, z;
-  const mbs::RunResult r = mbs::RunAnalysis(run, settings, [&](const mbs::Sample& s) {
-    t.push_back(s.t);
-    y.push_back(s.sensors(0, 1));
-    z.push_back(s.sensors(0, 2));
-  }, {});
+  const mbs::RunResult r = mbs::RunAnalysis(run, settings,
+                                            [&](const mbs::Sample& s) {
+                                              t.push_back(s.t);
+                                              y.push_back(s.sensors(0, 1));
+                                              z.push_back(s.sensors(0, 2));
+                                            },
+                                            {});
   EXPECT_TRUE(r.ok()) << r.message;
   return {PeakFrequency(t, z, 40.0, 130.0), PeakFrequency(t, y, 60.0, 150.0)};
 }
