@@ -22,14 +22,12 @@ const std::string kCrank = std::string(EMB_SOURCE_DIR) + "/meshes/crankshaft_i4.
 TEST(BeamPartScene, SceneKeyModelBeam) {
   const testing::ScopedTempDir dir("emb_beam_part_scene");
   const std::string path = dir.File("scene.yaml");
-  std::ofstream(path) << "bodies:\n"
-                         "  - name: crank\n"
-                         "    model: beam\n"
-                         "    geometry: "
-                      << kCrank
-                      << "\n"
-                         "    webs: elastic\n"
-                         "    stiffness_damping: 1.0e-5\n"
+  // The crank as a `model: beam` entry with the keys `extra` (one per line).
+  auto entry = [&](const std::string& extra) {
+    return "bodies:\n  - name: crank\n    model: beam\n    geometry: " + kCrank + "\n" + extra;
+  };
+  std::ofstream(path) << entry("    webs: elastic\n")
+                      << "    stiffness_damping: 1.0e-5\n"
                          "    position: [0.1, 0, 0]\n"
                          "    orientation: {euler313: [0.2, 0.3, 0.4]}\n"
                          "    angular_velocity: [100, 0, 0]\n"
@@ -65,13 +63,7 @@ TEST(BeamPartScene, SceneKeyModelBeam) {
   EXPECT_EQ(m.p_BM, itf.p_BM);
   EXPECT_EQ(m.R_BM, itf.R_BM);
 
-  std::ofstream(path) << "bodies:\n"
-                         "  - name: crank\n"
-                         "    model: beam\n"
-                         "    geometry: "
-                      << kCrank
-                      << "\n"
-                         "    webs: flexible\n";
+  std::ofstream(path) << entry("    webs: flexible\n");
   EXPECT_TRUE(test::ContainsAll(test::InputErrorMessage([&] { LoadScene(path); }),
                                 {"webs: expected rigid or elastic"}));
   // An interface the part does not have is named, with the part's interfaces.
