@@ -72,12 +72,6 @@ Vector3d Euler313FromRotation(const Matrix3d& R) {
   return {psi, theta, phi};
 }
 
-Matrix3d Skew(const Vector3d& a) {
-  Matrix3d S;
-  S << 0, -a[2], a[1], a[2], 0, -a[0], -a[1], a[0], 0;
-  return S;
-}
-
 Vector3d RotationVectorFromRotation(const Matrix3d& R) {
   return RotationVectorFromQuaternion(QuaternionFromRotation(R));
 }

@@ -6,6 +6,8 @@
 
 #include <Eigen/Dense>
 
+#include "libemb/common/skew.h"  // Skew, used with these throughout mbs
+
 namespace emb::mbs {
 
 using Eigen::Matrix3d;
@@ -38,9 +40,6 @@ Matrix3d RotationFromEuler313(double psi, double theta, double phi);
 /// carries the whole rotation about z (a reporting convention; nothing is integrated in
 /// these angles).
 Vector3d Euler313FromRotation(const Matrix3d& R);
-
-/// [a x], the skew matrix with [a x] b = a x b.
-Matrix3d Skew(const Vector3d& a);
 
 /// Rotation vector (axis * angle, angle in [0, pi]) of R, through its quaternion
 /// (RotationVectorFromQuaternion).
