@@ -62,18 +62,28 @@ struct RunCommand {
     std::optional<scene::CsvWriter> csv_writer;
     if (!h5.empty()) writer.emplace(h5, run.system, sc.source, mbs::Name(st.type));
     if (!csv_path.empty()) csv_writer.emplace(csv_path, run.system, sc.output.channels);
+    std::optional<scene::SteadyStateMonitor> steady;
+    if (sc.steady_state.enabled() && st.type == mbs::AnalysisType::kDynamic) {
+      EMB_THROW_IF(t_end, "--t-end: the scene runs to steady state (analysis.steady_state); "
+                          "its max_cycles sets the end");
+      steady.emplace(run.system, sc.steady_state, st.t_start, st.output_step);
+      st.t_end = steady->t_end();
+    }
     mbs::Sample last;
+    bool at_steady_state = false;
     sw.Restart();
     const mbs::RunResult r = mbs::RunAnalysis(
         run, st,
         [&](const mbs::Sample& s) {
           if (writer) writer->Write(s);
           if (csv_writer) csv_writer->Write(s);
+          if (steady) at_steady_state = steady->Add(s);
           last = s;
         },
-        progress);
+        progress, [&] { return at_steady_state; });
     const double t_run = sw.seconds();
     if (writer) writer->Finish(r);
+    if (writer && steady) writer->RecordSteadyState(steady->report(), sc.steady_state);
     FinishProgressLine();
     for (const auto& w : run.warnings) std::cerr << "emb: warning: " << w << "\n";
     for (const auto& w : r.warnings) std::cerr << "emb: warning: " << w << "\n";
@@ -89,7 +99,20 @@ struct RunCommand {
     s.Add("true_dof", "true DOF", run.dof.true_dof);
     if (!run.system.removed_equations().empty())
       s.Add("removed_equations", "removed redundant equations", run.system.removed_equations());
+    if (!run.start_note.empty()) s.Add("elastic_start", "elastic start", run.start_note);
     s.Add("t_reached", "time reached [s]", r.t_reached);
+    if (steady) {
+      const scene::SteadyStateReport& ss = steady->report();
+      s.Add("steady_state", "steady state",
+            std::string(ss.converged ? "reached" : "NOT reached") + " after " +
+                std::to_string(ss.cycles) + " cycles of " + std::to_string(sc.steady_state.period) +
+                " s");
+      s.Add("steady_state_change", "last cycle-to-cycle change (RMS, relative)", ss.change);
+      s.Add("steady_state_tolerance", "steady-state tolerance", sc.steady_state.tolerance);
+      s.Add("steady_state_worst_channel", "channel of the largest change", ss.worst_channel);
+      s.Add("steady_state_cycle_start", "steady cycle from [s]", ss.cycle_start);
+      s.Add("steady_state_cycle_end", "steady cycle to [s]", ss.cycle_end);
+    }
     s.Add("samples", "output samples", r.num_samples);
     if (st.type == mbs::AnalysisType::kDynamic) {
       s.Add("rtol", "rtol", st.ida.rtol);
@@ -121,6 +144,16 @@ struct RunCommand {
       PrintJson({{"summary", s.ToJson()}});
     else
       s.Print(std::cout);
+    if (r.ok() && steady && !steady->report().converged)
+      EMB_THROW(NumericalError,
+                "no periodic steady state in " << sc.steady_state.max_cycles
+                                               << " cycles: the last change was "
+                                               << steady->report().change << " in "
+                                               << steady->report().worst_channel
+                                               << " (tolerance " << sc.steady_state.tolerance
+                                               << "); raise max_cycles or add damping (results "
+                                                  "are in "
+                                               << h5 << ")");
     if (!r.ok())
       EMB_THROW(NumericalError,
                 r.message << (h5.empty() ? ""
