@@ -7,10 +7,9 @@
 
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "libemb/common/timer.h"
 #include "libemb/fe/assembly.h"
@@ -62,7 +61,7 @@ int main(int argc, char** argv) {
     blocks.push_back({{"block", b}, {"seconds_per_rhs", per_rhs}, {"repeats", reps}});
     if (!json)
       std::printf("block %2d: %.4f s per right-hand side (%.1f x faster than single)\n", b, per_rhs,
-                single / per_rhs);
+                  single / per_rhs);
   }
   if (json)
     std::cout << nlohmann::json{{"mesh", args[0]},

@@ -15,11 +15,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/scene/scene.h"
@@ -139,8 +138,8 @@ int main(int argc, char** argv) {
   // Linear solver: a chain of N rods (planar, revolute joints), 1 s, rtol 1e-6, dense vs KLU
   // (dense skipped at 64 links: ~0.5 s per factorisation of the 1536-unknown matrix).
   if (!json)
-    std::printf("\n%-14s %8s %8s %9s %7s %7s %9s %10s\n", "chain", "solver", "steps",
-                "residuals", "jacobians", "full LU", "nnz", "wall [s]");
+    std::printf("\n%-14s %8s %8s %9s %7s %7s %9s %10s\n", "chain", "solver", "steps", "residuals",
+                "jacobians", "full LU", "nnz", "wall [s]");
   for (int n : {1, 2, 4, 16, 32, 64}) {
     emb::mbs::System chain;
     const double l = 0.3;

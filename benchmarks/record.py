@@ -339,24 +339,18 @@ def main():
         if not a.command:
             sys.exit(f"record.py {a.kind}: expected --command")
         command = a.command
-        if a.kind == "merge":
-            data = collect_merge(a.inputs)
-        elif a.kind == "modes":
-            data = collect_modes(a.inputs)
-        elif a.kind == "reduce-sizes":
-            data = collect_reduce_sizes(a.inputs)
-        elif a.kind == "reduce-modes":
-            data = collect_reduce_modes(a.inputs)
-        elif a.kind == "stiffening":
-            data = collect_stiffening(a.inputs)
-        elif a.kind == "compare":
-            data = collect_compare(a.inputs)
-        elif a.kind == "web-width":
-            data = collect_web_width(a.inputs, a.route)
-        elif a.kind == "inline4":
-            data = collect_inline4(a.inputs[0], a.inputs[1:])
-        else:
-            data = collect_profile(a.inputs[0])
+        collectors = {
+            "merge": lambda: collect_merge(a.inputs),
+            "modes": lambda: collect_modes(a.inputs),
+            "reduce-sizes": lambda: collect_reduce_sizes(a.inputs),
+            "reduce-modes": lambda: collect_reduce_modes(a.inputs),
+            "stiffening": lambda: collect_stiffening(a.inputs),
+            "compare": lambda: collect_compare(a.inputs),
+            "web-width": lambda: collect_web_width(a.inputs, a.route),
+            "inline4": lambda: collect_inline4(a.inputs[0], a.inputs[1:]),
+            "profile": lambda: collect_profile(a.inputs[0]),
+        }
+        data = collectors[a.kind]()
     write_result(a.name, command, data)
 
 

@@ -2,7 +2,7 @@
 //
 // Build:   cmake --build build --target ex01_tube_modes             (EMB_BUILD_EXAMPLES=ON)
 // Run:     build/examples/ex01_tube_modes                      (meshes/tube.geo, 24 x 60 Hex20)
-//          build/examples/ex01_tube_modes meshes/tube.geo 32 100          (finer: 32 around, 100 along)
+//          build/examples/ex01_tube_modes meshes/tube.geo 32 100     (32 around, 100 along)
 //
 // What it computes: the lowest natural frequencies of a steel tube (L = 1.5 m, Ø90 x 2 mm)
 // with nothing holding it (free-free), from a swept quadratic hexahedral (Hex20) mesh that
@@ -26,17 +26,17 @@
 
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <numbers>
 #include <string>
 
+#include "examples/example_main.h"
 #include "libemb/fe/assembly.h"
 #include "libemb/fe/modal_analysis.h"
 #include "libemb/mesh/gmsh_reader.h"
 
 namespace {
 
-int Run(int argc, char** argv) {
+bool Run(int argc, char** argv) {
   using namespace emb;
   const std::string geo = argc > 1 ? argv[1] : EMB_SOURCE_DIR "/meshes/tube.geo";
   const double n_circ = argc > 2 ? std::stod(argv[2]) : 24;   // elements around
@@ -63,7 +63,7 @@ int Run(int argc, char** argv) {
   const ModalResult modes = ComputeModes(fe, options);
   if (!modes.eig.ok()) {
     std::printf("eigen-solve failed: %s\n", modes.eig.message.c_str());
-    return 1;
+    return false;
   }
   std::printf("\n mode  frequency [Hz]  kind\n");
   for (int k = 0; k < modes.frequencies_hz.size(); ++k)
@@ -91,23 +91,15 @@ int Run(int argc, char** argv) {
   const bool pair = std::abs(f7 - f8) <= kPairSplit * f7;
   const bool below_beam = f7 < f_eb && f7 > (1 - kBelowBeam) * f_eb;
   std::printf("\nrigid-body modes: %d (expected 6): %s\n", modes.num_rigid_modes,
-              six_rigid ? "ok" : "WRONG");
+              emb::examples::Verdict(six_rigid));
   std::printf("bending pair: %.6f / %.6f Hz, split %.1e (limit %.0e): %s\n", f7, f8,
-              std::abs(f7 - f8) / f7, kPairSplit, pair ? "ok" : "WRONG");
+              std::abs(f7 - f8) / f7, kPairSplit, emb::examples::Verdict(pair));
   std::printf("bending vs Euler-Bernoulli %.4f Hz: %.2f %% below (expected 0 .. %.0f %%): %s\n",
-              f_eb, 100 * (1 - f7 / f_eb), 100 * kBelowBeam, below_beam ? "ok" : "WRONG");
+              f_eb, 100 * (1 - f7 / f_eb), 100 * kBelowBeam, emb::examples::Verdict(below_beam));
   const bool ok = six_rigid && pair && below_beam;
-  std::printf("%s\n", ok ? "all checks PASSED" : "a check FAILED");
-  return ok ? 0 : 1;
+  return ok;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  try {
-    return Run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "ex01_tube_modes: %s\n", e.what());
-    return 1;
-  }
-}
+int main(int argc, char** argv) { return emb::examples::Main("ex01_tube_modes", Run, argc, argv); }

@@ -30,9 +30,9 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <exception>
 #include <string>
 
+#include "examples/example_main.h"
 #include "libemb/cms/body_file.h"
 #include "libemb/cms/reduction.h"
 #include "libemb/fe/assembly.h"
@@ -40,11 +40,11 @@
 
 namespace {
 
-int Run(int argc, char** argv) {
+bool Run(int argc, char** argv) {
   using namespace emb;
   const std::string geo = argc > 1 ? argv[1] : EMB_SOURCE_DIR "/meshes/crankshaft_1cyl.geo";
-  const double h = argc > 2 ? std::stod(argv[2]) : 0.012;     // mesh size [m]
-  const int num_modes = argc > 3 ? std::stoi(argv[3]) : 10;   // fixed-interface modes
+  const double h = argc > 2 ? std::stod(argv[2]) : 0.012;    // mesh size [m]
+  const int num_modes = argc > 3 ? std::stoi(argv[3]) : 10;  // fixed-interface modes
   const std::string body_file = argc > 4 ? argv[4] : "crankshaft_1cyl_body.h5";
 
   // 1. Mesh (curved Tet10 at size h) and assemble K and M of steel.
@@ -53,8 +53,8 @@ int Run(int argc, char** argv) {
   const Mesh mesh = ReadMesh(geo, meshing);
   const IsotropicMaterial steel;
   const SystemMatrices fe = AssembleSystem(mesh, steel);
-  std::printf("crankshaft: %s, %d unknowns, mass %.4f kg\n", mesh.Summary().c_str(),
-              fe.num_dofs(), fe.mass);
+  std::printf("crankshaft: %s, %d unknowns, mass %.4f kg\n", mesh.Summary().c_str(), fe.num_dofs(),
+              fe.mass);
 
   // 2. The reduction job: the part's default interfaces (named physical groups of the .geo:
   //    main_journal_*, crankpin_* as RBE3, flange and nose as RBE2), the lowest N
@@ -81,10 +81,11 @@ int Run(int argc, char** argv) {
   for (const ModePair& p : cert.pairs)
     std::printf("%5d  %13.2f  %13.2f  %10.4f  %6.4f\n", p.full_mode, p.full_hz, p.reduced_hz,
                 100 * p.relative_error, p.mac);
-  std::printf("\nmass %.6f kg (full %.6f), relative errors: mass %.1e, centre of mass %.1e, "
-              "inertia %.1e\nstatic exactness %.1e, rigid-body modes %d\n",
-              cert.reduced.mass, cert.full.mass, cert.mass_error, cert.com_error,
-              cert.inertia_error, cert.static_error, cert.num_near_zero);
+  std::printf(
+      "\nmass %.6f kg (full %.6f), relative errors: mass %.1e, centre of mass %.1e, "
+      "inertia %.1e\nstatic exactness %.1e, rigid-body modes %d\n",
+      cert.reduced.mass, cert.full.mass, cert.mass_error, cert.com_error, cert.inertia_error,
+      cert.static_error, cert.num_near_zero);
   for (const std::string& f : cert.failures) std::printf("certificate: %s\n", f.c_str());
   std::printf("certificate %s\n", cert.passed() ? "passed" : "FAILED");
 
@@ -107,21 +108,15 @@ int Run(int argc, char** argv) {
     upper_bounds = upper_bounds && p.paired && p.relative_error >= -kRitzSlack;
   const bool accurate = cert.max_frequency_error <= kMaxError;
   std::printf("\nreduced frequencies are upper bounds of the full ones (all paired): %s\n",
-              upper_bounds ? "ok" : "WRONG");
+              emb::examples::Verdict(upper_bounds));
   std::printf("max frequency error %.3f %% (limit %.0f %%): %s\n", 100 * cert.max_frequency_error,
-              100 * kMaxError, accurate ? "ok" : "WRONG");
+              100 * kMaxError, emb::examples::Verdict(accurate));
   const bool ok = cert.passed() && upper_bounds && accurate;
-  std::printf("%s\n", ok ? "all checks PASSED" : "a check FAILED");
-  return ok ? 0 : 1;
+  return ok;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return Run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "ex02_crank_reduction: %s\n", e.what());
-    return 1;
-  }
+  return emb::examples::Main("ex02_crank_reduction", Run, argc, argv);
 }

@@ -25,10 +25,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <numbers>
 #include <string>
 
+#include "examples/example_main.h"
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/core/system.h"
 
@@ -47,11 +47,11 @@ emb::mbs::RigidBody Body(const std::string& name, double m, const Eigen::Vector3
   return b;
 }
 
-int Run(int argc, char** argv) {
+bool Run(int argc, char** argv) {
   using namespace emb::mbs;
   const double rpm = argc > 1 ? std::stod(argv[1]) : 600.0;
   const double rtol = argc > 2 ? std::stod(argv[2]) : 1e-8;
-  const double r = 0.05, l = 0.2;  // crank radius, rod length [m]
+  const double r = 0.05, l = 0.2;                        // crank radius, rod length [m]
   const double omega = rpm * 2 * std::numbers::pi / 60;  // [rad/s]
 
   // 1. Bodies at the start pose (crank angle 0: crank, rod and piston on the world x axis,
@@ -114,8 +114,10 @@ int Run(int argc, char** argv) {
     // Drive power T_z omega: the torque about z the motion puts on the crank (row `drive`
     // of the reactions: [F, T] in the axes of the ground marker "o").
     const double power = s.reactions(drive, 5) * omega;
-    if (s.t == 0) e0 = s.energies.kinetic;
-    else work += 0.5 * (power + power_prev) * (s.t - t_prev);  // trapezoidal rule
+    if (s.t == 0)
+      e0 = s.energies.kinetic;
+    else
+      work += 0.5 * (power + power_prev) * (s.t - t_prev);  // trapezoidal rule
     t_prev = s.t;
     power_prev = power;
     e_max = std::max(e_max, s.energies.kinetic);
@@ -123,7 +125,7 @@ int Run(int argc, char** argv) {
   });
   std::printf("IDA: %s, %ld steps, %d samples\n", Name(result.status), result.ida_stats.steps,
               result.num_samples);
-  if (!result.ok()) return 1;
+  if (!result.ok()) return false;
 
   // 6. Checks. The integration error is ~rtol times the scales r and r omega, with a factor
   //    100 for its growth over a revolution. The work integral's trapezoidal rule over
@@ -135,23 +137,17 @@ int Run(int argc, char** argv) {
   const bool ok_v = err_v <= kin_tol * r * omega;
   const bool ok_e = err_energy <= kEnergyTolerance * e_max;
   std::printf("piston position: max error %.2e m (limit %.1e): %s\n", err_x, kin_tol * r,
-              ok_x ? "ok" : "WRONG");
-  std::printf("piston velocity: max error %.2e m/s (limit %.1e): %s\n", err_v,
-              kin_tol * r * omega, ok_v ? "ok" : "WRONG");
+              emb::examples::Verdict(ok_x));
+  std::printf("piston velocity: max error %.2e m/s (limit %.1e): %s\n", err_v, kin_tol * r * omega,
+              emb::examples::Verdict(ok_v));
   std::printf("drive work vs kinetic energy change: max difference %.2e J of %.3f J: %s\n",
-              err_energy, e_max, ok_e ? "ok" : "WRONG");
+              err_energy, e_max, emb::examples::Verdict(ok_e));
   const bool ok = run.dof.true_dof == 0 && ok_x && ok_v && ok_e;
-  std::printf("%s\n", ok ? "all checks PASSED" : "a check FAILED");
-  return ok ? 0 : 1;
+  return ok;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return Run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "ex03_slider_crank: %s\n", e.what());
-    return 1;
-  }
+  return emb::examples::Main("ex03_slider_crank", Run, argc, argv);
 }

@@ -29,12 +29,12 @@
 
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
 
+#include "examples/example_main.h"
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
 #include "libemb/mbs/core/kinematics.h"
@@ -47,10 +47,10 @@ using namespace emb;
 // What one run gives: the energy balance and the largest nose twist.
 struct EngineRun {
   mbs::RunResult result;
-  double gas_work{0};         // [J] over the run
-  double dissipated{0};       // [J] by the dampers over the run
-  double balance_error{0};    // [J] max |int (P - D) dt - (E(t) - E(0))|
-  double max_twist{0};        // [rad] max |nose rotation vs flywheel about the crank axis|
+  double gas_work{0};       // [J] over the run
+  double dissipated{0};     // [J] by the dampers over the run
+  double balance_error{0};  // [J] max |int (P - D) dt - (E(t) - E(0))|
+  double max_twist{0};      // [rad] max |nose rotation vs flywheel about the crank axis|
 };
 
 EngineRun RunEngine(const std::string& scene_text, const std::string& name) {
@@ -59,7 +59,7 @@ EngineRun RunEngine(const std::string& scene_text, const std::string& name) {
   //    (invariants, modal stiffness and damping, interface shapes for the markers).
   const scene::Scene sc = scene::ParseScene(scene_text, name);
   mbs::AnalysisSettings settings = sc.analysis;
-  settings.t_end = 0.04;  // one four-stroke cycle at 3000 rpm
+  settings.t_end = 0.04;        // one four-stroke cycle at 3000 rpm
   settings.output_step = 2e-5;  // 0.36 deg: the power integrals below use these samples
   const mbs::PreparedRun run = mbs::PrepareRun(sc.system, settings);
   for (const std::string& note : sc.notes) std::printf("%s: %s\n", name.c_str(), note.c_str());
@@ -109,14 +109,15 @@ EngineRun RunEngine(const std::string& scene_text, const std::string& name) {
     out.balance_error = std::max(out.balance_error, std::abs(net - (s.energies.total() - e0)));
     out.max_twist = std::max(out.max_twist, std::abs(s.sensors(twist, 5)));
   });
-  std::printf("%s: %s, %ld IDA steps, gas work %.2f J, dissipated %.3f J, energy balance "
-              "error %.1e J, max nose twist %.2e rad\n",
-              name.c_str(), mbs::Name(out.result.status), out.result.ida_stats.steps,
-              out.gas_work, out.dissipated, out.balance_error, out.max_twist);
+  std::printf(
+      "%s: %s, %ld IDA steps, gas work %.2f J, dissipated %.3f J, energy balance "
+      "error %.1e J, max nose twist %.2e rad\n",
+      name.c_str(), mbs::Name(out.result.status), out.result.ida_stats.steps, out.gas_work,
+      out.dissipated, out.balance_error, out.max_twist);
   return out;
 }
 
-int Run(int argc, char** argv) {
+bool Run(int argc, char** argv) {
   const std::string body_file = argc > 1 ? argv[1] : "crankshaft_1cyl_body.h5";
   const std::string modes = argc > 2 ? argv[2] : "10";
 
@@ -125,14 +126,15 @@ int Run(int argc, char** argv) {
   std::ifstream in(EMB_SOURCE_DIR "/tools/scenes/engine_1cyl_cms.yaml");
   std::stringstream text;
   text << in.rdbuf();
-  std::string scene = std::regex_replace(text.str(), std::regex(R"(body_file: \S+)"),
-                                         "body_file: " + body_file);
+  std::string scene =
+      std::regex_replace(text.str(), std::regex(R"(body_file: \S+)"), "body_file: " + body_file);
   scene = std::regex_replace(scene, std::regex(R"(modes: \d+)"), "modes: " + modes);
-  const std::string rigid = std::regex_replace(scene, std::regex(R"(model: cms )"), "model: rigid ");
+  const std::string rigid =
+      std::regex_replace(scene, std::regex(R"(model: cms )"), "model: rigid ");
 
   const EngineRun flex = RunEngine(scene, "flexible crank");
   const EngineRun stiff = RunEngine(rigid, "rigid crank");
-  if (!flex.result.ok() || !stiff.result.ok()) return 1;
+  if (!flex.result.ok() || !stiff.result.ok()) return false;
 
   // 4. Checks. The balance closes to ~1.5e-2 J, ~2e-5 of the gas work (measured; it is the
   //    trapezoidal rule's error on the peaky gas power: 3.4e-3 J with half the output
@@ -146,21 +148,17 @@ int Run(int argc, char** argv) {
   const bool ok_flex = flex.balance_error <= kBalance * std::abs(flex.gas_work);
   const bool ok_rigid = stiff.balance_error <= kBalance * std::abs(stiff.gas_work);
   const bool ok_twist = flex.max_twist > kRealTwist && stiff.max_twist < kRigidTwist;
-  std::printf("energy balance (flexible): %s\nenergy balance (rigid): %s\n"
-              "flexible crank twists, rigid does not: %s\n",
-              ok_flex ? "ok" : "WRONG", ok_rigid ? "ok" : "WRONG", ok_twist ? "ok" : "WRONG");
+  std::printf(
+      "energy balance (flexible): %s\nenergy balance (rigid): %s\n"
+      "flexible crank twists, rigid does not: %s\n",
+      emb::examples::Verdict(ok_flex), emb::examples::Verdict(ok_rigid),
+      emb::examples::Verdict(ok_twist));
   const bool ok = ok_flex && ok_rigid && ok_twist;
-  std::printf("%s\n", ok ? "all checks PASSED" : "a check FAILED");
-  return ok ? 0 : 1;
+  return ok;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return Run(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "ex04_flexible_engine: %s\n", e.what());
-    return 1;
-  }
+  return emb::examples::Main("ex04_flexible_engine", Run, argc, argv);
 }

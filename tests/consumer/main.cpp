@@ -71,14 +71,13 @@ bool CheckPendulumPeriod() {
   // Upward zero crossings of the CM's x (the angle's sign), linearly interpolated.
   std::vector<double> crossings;
   double t_prev = 0.0, x_prev = 0.0;
-  const emb::mbs::RunResult r =
-      emb::mbs::RunAnalysis(run, s, [&](const emb::mbs::Sample& smp) {
-        const double xc = smp.q[x];
-        if (smp.t > 0 && x_prev < 0 && xc >= 0)
-          crossings.push_back(t_prev + (smp.t - t_prev) * (-x_prev) / (xc - x_prev));
-        t_prev = smp.t;
-        x_prev = xc;
-      });
+  const emb::mbs::RunResult r = emb::mbs::RunAnalysis(run, s, [&](const emb::mbs::Sample& smp) {
+    const double xc = smp.q[x];
+    if (smp.t > 0 && x_prev < 0 && xc >= 0)
+      crossings.push_back(t_prev + (smp.t - t_prev) * (-x_prev) / (xc - x_prev));
+    t_prev = smp.t;
+    x_prev = xc;
+  });
   if (!r.ok() || crossings.size() < 3) {
     std::cout << "pendulum: run " << emb::mbs::Name(r.status) << " " << r.message << ", "
               << crossings.size() << " crossings: FAILED\n";
