@@ -6,8 +6,8 @@ Every results file holds
      "machine": {"cpu": MODEL, "cores": N, "memory_gb": X, "os": ...},
      "command": the command line that ran the benchmark, "note": $EMB_BENCH_NOTE,
      "data": {...the numbers...}}
-"dirty" says whether tracked source files differed from the commit (results, Markdown and
-images excluded). benchmarks/render_tables.py renders the documentation's tables from them.
+"dirty" says whether the library, the tools, the meshes, the build files or the benchmarks
+differed from the commit (documents, plots and the table renderer excluded). benchmarks/render_tables.py renders the documentation's tables from them.
 
 The benchmark scripts call one subcommand each, which turns raw outputs into "data":
   run NAME -- PROGRAM ARGS...        PROGRAM prints one JSON document (C++ benchmarks)
@@ -60,11 +60,16 @@ def git(*args):
                           check=True).stdout.strip()
 
 
+# What the benchmarks' programs and scripts are made of (a change elsewhere, e.g. in tests,
+# examples or documents, does not make a run "dirty").
+BUILT_FROM = ("libemb/", "tools/", "meshes/", "cmake/", "CMakeLists.txt", "benchmarks/")
+NOT_BUILT = (".md", ".png", "render_tables.py")
+
+
 def commit():
     sha = git("rev-parse", "HEAD")
     changed = [line[3:] for line in git("status", "--porcelain", "--untracked-files=no").splitlines()]
-    dirty = [p for p in changed if not (p.startswith("benchmarks/results/") or
-                                        p.endswith((".md", ".png")))]
+    dirty = [p for p in changed if p.startswith(BUILT_FROM) and not p.endswith(NOT_BUILT)]
     return sha, bool(dirty)
 
 

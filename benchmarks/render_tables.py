@@ -57,6 +57,15 @@ def num(x, spec="g"):
     return format(x, spec)
 
 
+def sig3(x):
+    """Three significant digits without an exponent: 1.64, 37.3, 408, 1130."""
+    if x is None:
+        return "–"
+    if abs(x) >= 1000:
+        return f"{x:.0f}"
+    return format(x, "#.3g").rstrip(".")
+
+
 def thousands(n):
     return f"{n:,}".replace(",", " ")
 
@@ -281,8 +290,8 @@ def mbs_residual(res):
         by[int(n)]["unknowns"] = int(b.get("unknowns", 0))
         if "nnz" in b:
             by[int(n)]["nnz"] = int(b["nnz"])
-    rows = [[n, v["unknowns"], num(v.get("BM_Residual"), ".3g"), num(v.get("BM_Jacobian"), ".3g"),
-             num(v.get("BM_SparseJacobian"), ".3g"), thousands(v.get("nnz", 0))] for n, v in sorted(by.items())]
+    rows = [[n, v["unknowns"], sig3(v.get("BM_Residual")), sig3(v.get("BM_Jacobian")),
+             sig3(v.get("BM_SparseJacobian")), thousands(v.get("nnz", 0))] for n, v in sorted(by.items())]
     return table(["N", "unknowns", "residual µs", "dense Jacobian µs", "sparse Jacobian µs", "nnz"],
                  rows), [doc]
 
