@@ -40,8 +40,8 @@ if [[ $what == tube || $what == all ]]; then
   "${record[@]}" compare beam_vs_cms_tube --command "bash benchmarks/beam_vs_cms.sh tube" \
     "tube_free-free=$dir/tube_free-free.json"
 fi
-if [[ $what == crank || $what == tube || $what == all ]]; then
-  "${render[@]}" beam_vs_cms
+if [[ -f $root/benchmarks/results/beam_vs_cms_crank.json && -f $root/benchmarks/results/beam_vs_cms_tube.json ]]; then
+  "${render[@]}" beam_vs_cms   # the table has both parts
 fi
 if [[ $what == webs || $what == all ]]; then
   # The elastic-web beam crankshaft against the arm width b (consistent mass), h = 20 mm.

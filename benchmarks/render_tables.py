@@ -8,7 +8,8 @@ The documents (benchmarks/README.md, README.md) mark what is generated:
     <!-- value:FILE/PATH|FORMAT -->42.0<!-- /value -->  one number in running text: the
         field PATH of benchmarks/results/FILE.json's "data" ('/'-separated: dict keys, list
         indices (negative from the end) or, in a list of objects, the one whose name, route
-        or label is the segment), printed with the Python format spec FORMAT (default 'g')
+        or label is the segment; a last segment @min, @max, @maxabs or @count reduces a
+        list, nulls left out), printed with the Python format spec FORMAT (default 'g')
 Usage (stdlib only; run with /usr/bin/python3 from anywhere):
     render_tables.py            rewrite the marked parts of the documents in place
     render_tables.py --check    exit 1 (listing them) if a marked part differs from its
@@ -86,10 +87,21 @@ def source(doc, name):
     return line + "."
 
 
+REDUCERS = {"@min": min, "@max": max, "@maxabs": lambda xs: max(abs(x) for x in xs),
+            "@count": len}
+
+
 def find(data, path):
     node = data
     for seg in path:
-        if isinstance(node, dict):
+        if seg in REDUCERS:
+            if not isinstance(node, list):
+                raise RenderError(f"'{seg}' of a non-list")
+            values = [x for x in node if x is not None]
+            if not values and seg != "@count":
+                raise RenderError(f"'{seg}' of an empty list")
+            node = REDUCERS[seg](values)
+        elif isinstance(node, dict):
             if seg not in node:
                 raise RenderError(f"no key '{seg}'")
             node = node[seg]
@@ -139,14 +151,20 @@ def block_solve(res):
                   "32", "single / b=16"], rows), [doc]
 
 
-REDUCE_PHASES = ["mesh", "assembly", "factorisation", "eigen-solve", "constraint modes",
-                 "reduced matrices", "orthonormalisation", "invariants", "certificate", "write"]
+# emb reduce's phases in pipeline order ("total" is their sum without "write").
+REDUCE_PHASES = ["mesh", "assembly", "interfaces", "partition", "factorisation", "eigen-solve",
+                 "checks", "constraint modes", "basis", "reduced matrices", "orthonormalisation",
+                 "invariants", "static load cases", "geometric stiffness", "certificate", "write"]
 
 
 def crank_reduce_sizes(res):
     doc = res("crank_reduce_sizes")
+    runs = doc["data"]["runs"]
+    unknown = sorted({p for r in runs for p in r["seconds"]} - set(REDUCE_PHASES) - {"total"})
+    if unknown:
+        raise RenderError(f"crank_reduce_sizes: phases {unknown} not in REDUCE_PHASES")
     rows = []
-    for r in doc["data"]["runs"]:
+    for r in runs:
         s = r["seconds"]
         c = r["certificate"]
         rows.append([r["dofs"], r["fixed_interface_modes"]] +
@@ -181,9 +199,11 @@ def crank_reduce_stiffening(res):
                      num(s.get("static load cases"), ".1f") if with_k else "—",
                      num(s.get("geometric stiffness"), ".1f") if with_k else "—",
                      num(s["total"] - s.get("certificate", 0.0), ".1f"), num(s.get("certificate"), ".1f"),
-                     num(s["total"], ".1f"), num(r["peak_memory_mb"], ".0f"), num(r["file_mb"], ".2f")])
+                     num(s.get("write"), ".1f"), num(s["total"] + s.get("write", 0.0), ".1f"),
+                     num(r["peak_memory_mb"], ".0f"), num(r["file_mb"], ".2f")])
     return table(["run", "FE DOF", "elastic modes", "static load cases s", "geometric stiffness s",
-                  "total − certificate s", "certificate s", "total s", "peak MB", "file MB"],
+                  "total − certificate − write s", "certificate s", "write s", "total s", "peak MB",
+                  "file MB"],
                  rows), [doc]
 
 
