@@ -164,8 +164,8 @@ int main(int argc, char** argv) {
     sc.system = chain;
     sc.analysis.t_end = 1.0;
     sc.analysis.output_step = 0.1;
-    for (auto ls : {emb::IdaLinearSolver::kDense, emb::IdaLinearSolver::kKlu}) {
-      if (n > 32 && ls == emb::IdaLinearSolver::kDense) continue;
+    for (auto ls : {emb::LinearSolverKind::kDense, emb::LinearSolverKind::kKlu}) {
+      if (n > 32 && ls == emb::LinearSolverKind::kDense) continue;
       sc.analysis.ida.linear_solver = ls;
       const int chain_repeats = n > 16 ? 1 : 3;
       const Outcome o = Run(sc, sc.analysis, 1e-6, chain_repeats);

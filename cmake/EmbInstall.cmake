@@ -33,7 +33,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/libemb/ DESTINATION ${CMAKE_INSTALL_INCL
         FILES_MATCHING PATTERN "*.h"
         PATTERN "analysis_internal.h" EXCLUDE
         PATTERN "klu_linear_solver.h" EXCLUDE
-        PATTERN "body_file_part.h" EXCLUDE
+        PATTERN "beam_part_reader.h" EXCLUDE
         PATTERN "engine_parts.h" EXCLUDE
         PATTERN "scene_parts.h" EXCLUDE)
 

@@ -5,18 +5,27 @@
 #include <cmath>
 #include <numbers>
 
+#include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
 #include "libemb/io/hdf5_file.h"
-#include "libemb/mbs/core/system.h"
+#include "libemb/mbs/core/state_layout.h"
 
 namespace emb::scene {
 namespace {
+
+// Where a body's values sit in a row of /state/q and /state/v: the layout record the writer
+// stores (version 3), or for version 2 files mbs::StateLayout's, which they were written with.
+struct StateColumns {
+  std::size_t q_stride{mbs::StateLayout::kQPerBody}, position{0}, quaternion{3};
+  std::size_t v_stride{mbs::StateLayout::kVPerBody}, velocity{0}, angular_velocity{3};
+};
 
 struct ResultsFile {
   H5File h5;
   std::vector<std::string> bodies, ports, sensors, forces;
   std::vector<double> time;
   std::size_t n{0};
+  StateColumns state;
 
   explicit ResultsFile(const std::string& path) : h5(path, H5File::Mode::kRead) {
     std::string format;
@@ -32,6 +41,18 @@ struct ResultsFile {
     if (h5.Exists("/model/force_elements")) forces = h5.ReadStrings("/model/force_elements");
     time = h5.ReadDoubles("/time");
     n = time.size();
+    const mbs::StateLayout layout(2);  // one moving body: its offsets within a block
+    state.quaternion = layout.quaternion(1) - layout.position(1);
+    state.angular_velocity = layout.angular_velocity(1) - layout.velocity(1);
+    auto column = [&](const char* dataset, const char* name, std::size_t* out) {
+      if (h5.HasAttribute(dataset, name)) *out = static_cast<std::size_t>(h5.ReadIntAttribute(dataset, name));
+    };
+    column("/state/q", "values_per_body", &state.q_stride);
+    column("/state/q", "position_column", &state.position);
+    column("/state/q", "quaternion_column", &state.quaternion);
+    column("/state/v", "values_per_body", &state.v_stride);
+    column("/state/v", "velocity_column", &state.velocity);
+    column("/state/v", "angular_velocity_column", &state.angular_velocity);
   }
   /// Column `col` of the [n, width] dataset `path`.
   std::vector<double> Column(const std::string& path, std::size_t col) const {
@@ -48,7 +69,7 @@ struct ResultsFile {
     const std::size_t width = q.size() / std::max<std::size_t>(n, 1);
     std::vector<Eigen::Matrix3d> out(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const double* e = &q[i * width + 7 * body + 3];
+      const double* e = &q[i * width + state.q_stride * body + state.quaternion];
       out[i] = Eigen::Quaterniond(e[0], e[1], e[2], e[3]).normalized().toRotationMatrix();
     }
     return out;
@@ -66,7 +87,7 @@ std::size_t FindName(const std::vector<std::string>& names, const std::string& n
                      const std::string& what, const std::string& channel) {
   const auto it = std::find(names.begin(), names.end(), name);
   EMB_THROW_IF(it == names.end(), "channel '" << channel << "': unknown " << what << " '" << name
-                                              << "'" << mbs::DidYouMean(name, names));
+                                              << "'" << DidYouMean(name, names));
   return static_cast<std::size_t>(it - names.begin());
 }
 
@@ -123,15 +144,16 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
                            << "', expected p, v, omega (bodies) or F, T (elements)");
   const std::size_t b = FindName(f.bodies, owner, "body", channel);
   if (quantity == "p") {
-    out.values = f.Column("/state/q", 7 * b + c);
+    out.values = f.Column("/state/q", f.state.q_stride * b + f.state.position + c);
   } else if (quantity == "v") {
-    out.values = f.Column("/state/v", 6 * b + c);
+    out.values = f.Column("/state/v", f.state.v_stride * b + f.state.velocity + c);
   } else {
     // omega_B in the file; the CSV convention is W.
     const auto R = f.Rotations(b);
     std::vector<Eigen::Vector3d> w(f.n);
     for (std::size_t k = 0; k < 3; ++k) {
-      const std::vector<double> col = f.Column("/state/v", 6 * b + 3 + k);
+      const std::vector<double> col =
+          f.Column("/state/v", f.state.v_stride * b + f.state.angular_velocity + k);
       for (std::size_t i = 0; i < f.n; ++i) w[i][static_cast<Eigen::Index>(k)] = col[i];
     }
     out.values.resize(f.n);

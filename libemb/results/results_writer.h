@@ -4,7 +4,7 @@
 /// CSV of chosen channels. Every sample is appended and flushed at once, so a run that
 /// fails (integrator failure) or is interrupted keeps every sample before it.
 ///
-/// HDF5 layout (format "emb-mbs-results", version 2, SI units; N samples, nb moving bodies,
+/// HDF5 layout (format "emb-mbs-results", version 3, SI units; N samples, nb moving bodies,
 /// m equations, ne constraint elements, np >= ne reaction ports; row-major as h5py shows
 /// it):
 ///   /                   attrs format, version, units, scene, analysis, status, message,
@@ -19,8 +19,12 @@
 ///   /model/removed_equations  names of redundant equations removed (may be empty)
 ///   /model/mass [nb], /model/inertia [nb, 3, 3] (about the CM in B)
 ///   /time               [N] s
-///   /state/q            [N, 7 nb] per body p_WB (m) then e_WB (w, x, y, z)
-///   /state/v            [N, 6 nb] per body v_WB (m/s, in W) then omega_B (rad/s, in B)
+///   /state/q            [N, 7 nb] per body p_WB (m) then e_WB (w, x, y, z); attributes
+///                       values_per_body (7), position_column (0), quaternion_column (3)
+///                       (mbs::StateLayout; version 2 files lack them, same layout)
+///   /state/v            [N, 6 nb] per body v_WB (m/s, in W) then omega_B (rad/s, in B);
+///                       attributes values_per_body (6), velocity_column (0),
+///                       angular_velocity_column (3)
 ///   /state/vdot         [N, 6 nb] time derivative of v
 ///   /state/euler313     [N, 3 nb] per body (psi, theta, phi) rad, seed eq. (1.20)
 ///   /multipliers/lambda [N, m] N or N m

@@ -46,7 +46,7 @@ struct RunCommand {
     if (atol > 0) st.ida.atol = atol;
     if (output_step > 0) st.output_step = output_step;
     if (remove_redundant) st.remove_redundant = true;
-    if (!linear_solver.empty()) st.ida.linear_solver = ParseIdaLinearSolver(linear_solver);
+    if (!linear_solver.empty()) st.ida.linear_solver = ParseLinearSolverKind(linear_solver);
     // Output paths: -o beats the scene; the scene's were made relative to its directory by
     // LoadScene, the command line's are relative to the working directory.
     std::string h5 = no_output ? "" : (!output.empty() ? output : sc.output.file);
