@@ -7,7 +7,7 @@ Every results file holds
      "command": the command line that ran the benchmark, "note": $EMB_BENCH_NOTE,
      "data": {...the numbers...}}
 "dirty" says whether the library, the tools, the meshes, the build files or the benchmarks
-differed from the commit (documents, plots and the table renderer excluded). benchmarks/render_tables.py renders the documentation's tables from them.
+differed from the commit (documents, plots, results and the table renderer excluded). benchmarks/render_tables.py renders the documentation's tables from them.
 
 The benchmark scripts call one subcommand each, which turns raw outputs into "data":
   run NAME -- PROGRAM ARGS...        PROGRAM prints one JSON document (C++ benchmarks)
@@ -64,12 +64,14 @@ def git(*args):
 # examples or documents, does not make a run "dirty").
 BUILT_FROM = ("libemb/", "tools/", "meshes/", "cmake/", "CMakeLists.txt", "benchmarks/")
 NOT_BUILT = (".md", ".png", "render_tables.py")
+RESULTS_DIR = "benchmarks/results/"  # the benchmarks write there themselves
 
 
 def commit():
     sha = git("rev-parse", "HEAD")
     changed = [line[3:] for line in git("status", "--porcelain", "--untracked-files=no").splitlines()]
-    dirty = [p for p in changed if p.startswith(BUILT_FROM) and not p.endswith(NOT_BUILT)]
+    dirty = [p for p in changed if p.startswith(BUILT_FROM) and not p.endswith(NOT_BUILT)
+             and not p.startswith(RESULTS_DIR)]
     return sha, bool(dirty)
 
 
