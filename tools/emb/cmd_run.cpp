@@ -64,7 +64,7 @@ struct RunCommand {
     if (!csv_path.empty()) csv_writer.emplace(csv_path, run.system, sc.output.channels);
     std::optional<scene::SteadyStateMonitor> steady;
     if (sc.steady_state.enabled() && st.type == mbs::AnalysisType::kDynamic) {
-      EMB_THROW_IF(t_end, "--t-end: the scene runs to steady state (analysis.steady_state); "
+      EMB_THROW_IF(t_end >= 0, "--t-end: the scene runs to steady state (analysis.steady_state); "
                           "its max_cycles sets the end");
       steady.emplace(run.system, sc.steady_state, st.t_start, st.output_step);
       st.t_end = steady->t_end();
