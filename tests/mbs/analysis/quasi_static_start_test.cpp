@@ -12,7 +12,7 @@
 
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/flexible/flexible_body.h"
-#include "tests/support/flexible_bar.h"
+#include "tests/support/spinning_bar.h"
 
 namespace emb {
 namespace {
@@ -26,31 +26,9 @@ std::vector<double> TipStretch(mbs::ElasticStart start, std::string* note) {
   bar.modes = 2;
   bar.damping_ratio = 0.02;
   bar.stiffening_supports = {"x0"};
-  const Eigen::Vector3d spin(0, 0, kOmega), hub_point(0, 0.02, 0.015);
-  mbs::System sys;
-  mbs::RigidBody hub;
-  hub.name = "hub";
-  hub.mass = 1.0;
-  hub.inertia_B = 0.01 * Eigen::Matrix3d::Identity();
-  hub.p_WB = hub_point;
-  hub.omega_W = spin;
-  sys.AddBody(hub);
   mbs::FlexibleBodyOptions options;
   options.geometric_stiffening = mbs::GeometricStiffening::kOn;
-  mbs::PartPlacement placement;
-  placement.omega_W = spin;
-  const mbs::FlexiblePart part =
-      mbs::AddFlexibleBody(&sys, "bar", testing::FlexibleBar(bar), "bar", options, placement);
-  mbs::AddInterfaceMarker(&sys, part, "root", "x0");
-  mbs::AddInterfaceMarker(&sys, part, "tip", "x1");
-  sys.AddMarker("hub_face", "hub", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  sys.AddMarker("axis", "ground", hub_point, Eigen::Matrix3d::Identity());
-  sys.AddJoint("clamp", mbs::JointType::kFixed, "root", "hub_face");
-  sys.AddJoint("spin", mbs::JointType::kRevolute, "hub_face", "axis");
-  sys.AddMotion("drive", "spin", mbs::JointCoordinate::kRotation,
-                mbs::TimeFunction::Polynomial({0.0, kOmega}));
-  sys.AddSensor("tip_in_hub", "tip", "hub_face");
-  sys.Finalize();
+  const mbs::System sys = testing::SpinningBar(bar, kOmega, options);
   mbs::AnalysisSettings settings;
   settings.t_end = 2e-3;
   settings.output_step = 1e-5;

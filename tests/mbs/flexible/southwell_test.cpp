@@ -14,7 +14,7 @@
 
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/flexible/flexible_body.h"
-#include "tests/support/flexible_bar.h"
+#include "tests/support/spinning_bar.h"
 
 namespace emb {
 namespace {
@@ -72,34 +72,12 @@ Eigen::Vector2d FlapAndLag(const Case& c) {
   bar.damping_ratio = 0.02;
   if (!c.tip_held) bar.stiffening_supports = {"x0"};
   const int elastic = 6 * static_cast<int>(bar.interfaces.size()) + bar.modes - 6;
-  const Eigen::Vector3d spin(0, 0, c.Omega), hub_point(0, 0.02, 0.015);
-  mbs::System sys;
-  mbs::RigidBody hub;
-  hub.name = "hub";
-  hub.mass = 1.0;
-  hub.inertia_B = 0.01 * Eigen::Matrix3d::Identity();
-  hub.p_WB = hub_point;
-  hub.omega_W = spin;
-  sys.AddBody(hub);
   mbs::FlexibleBodyOptions options;
   options.geometric_stiffening =
       c.stiffening ? mbs::GeometricStiffening::kOn : mbs::GeometricStiffening::kOff;
-  mbs::PartPlacement placement;
-  placement.omega_W = spin;
   Eigen::VectorXd eta0 = Eigen::VectorXd::Zero(elastic);
   eta0.head(2).setConstant(1.0e-4);  // released from a small bend in flap and lag
-  const mbs::FlexiblePart part =
-      mbs::AddFlexibleBody(&sys, "bar", testing::FlexibleBar(bar), "bar", options, placement, eta0);
-  mbs::AddInterfaceMarker(&sys, part, "root", "x0");
-  mbs::AddInterfaceMarker(&sys, part, "tip", "x1");
-  sys.AddMarker("hub_face", "hub", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  sys.AddMarker("axis", "ground", hub_point, Eigen::Matrix3d::Identity());
-  sys.AddJoint("clamp", mbs::JointType::kFixed, "root", "hub_face");
-  sys.AddJoint("spin", mbs::JointType::kRevolute, "hub_face", "axis");
-  sys.AddMotion("drive", "spin", mbs::JointCoordinate::kRotation,
-                mbs::TimeFunction::Polynomial({0.0, c.Omega}));
-  sys.AddSensor("tip_in_hub", "tip", "hub_face");
-  sys.Finalize();
+  const mbs::System sys = testing::SpinningBar(bar, c.Omega, options, eta0);
   mbs::AnalysisSettings settings;
   settings.t_end = 0.1;
   settings.output_step = 1.0e-4;
