@@ -10,6 +10,7 @@
 
 #include "libemb/beam/beam_modal.h"
 #include "libemb/common/error.h"
+#include "libemb/mesh/gmsh_input_audit.h"
 #include "libemb/mesh/gmsh_reader.h"
 #include "libemb/mesh/gmsh_session.h"
 
@@ -172,6 +173,7 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
   EMB_THROW_IF(!(o.contact_tolerance > 0.0),
                "beam generation: contact tolerance: expected > 0 m, got " << o.contact_tolerance);
   o.material.Validate();
+  if (!o.trust_scripts) AuditGmshInput(path);
 
   auto overrides = o.parameters;
   const auto declared = GeoParameters(path);
@@ -192,7 +194,7 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
   std::vector<Integrals> integrals;
   {
     GmshSession session(args);
-    GmshCall("open", path, [&] { gmsh::open(path); });
+    GmshOpen(path, /*trusted=*/true);  // audited above unless trusted
     gmsh::vectorpair groups;
     GmshCall("read physical groups of", path, [&] { gmsh::model::getPhysicalGroups(groups, 3); });
     std::string found;

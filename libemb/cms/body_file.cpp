@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "libemb/common/error.h"
@@ -300,9 +301,11 @@ void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const 
       const std::uint64_t ne = body.mesh_shapes.cols(), n = mesh->num_nodes();
       h5.Write("/modes/mesh_shapes", body.mesh_shapes.data(), {ne, n, 3});
     }
+    h5.Close();
   }
-  out.Commit();
 
+  // Both files are complete before either takes its name.
+  std::optional<AtomicFile> xdmf;
   if (shapes && !xdmf_path.empty()) {
     std::vector<double> steps;
     std::vector<std::string> names;
@@ -313,9 +316,12 @@ void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const 
       names.emplace_back(buf);
     }
     const std::string h5_name = std::filesystem::path(path).filename().string();
-    WriteTextFileAtomic(xdmf_path,
-                        MakeXdmfSteps(h5_name, *mesh, "/modes/mesh_shapes", "mode_shape", steps, names));
+    xdmf.emplace(xdmf_path);
+    xdmf->WriteText(
+        MakeXdmfSteps(h5_name, *mesh, "/modes/mesh_shapes", "mode_shape", steps, names));
   }
+  out.Commit();
+  if (xdmf) xdmf->Commit();
 }
 
 ReducedBody ReadBodyFile(const std::string& path, BodyFileInfo* info_out) {

@@ -158,6 +158,25 @@ void ResultsWriter::Write(const mbs::Sample& s) {
   file_.Flush();
 }
 
+void ResultsWriter::MarkStopped(const std::string& status, const std::string& reason,
+                                double t_reached) {
+  file_.SetAttribute("/", "status", status);
+  file_.SetAttribute("/", "message", reason);
+  file_.SetAttribute("/", "t_reached", t_reached);
+  file_.Flush();
+}
+
+void ResultsWriter::Close() { file_.Close(); }
+
+std::uint64_t ResultsWriter::BytesPerSample(const mbs::System& system) {
+  const std::uint64_t nb = system.layout().num_moving();
+  const std::uint64_t np = system.reaction_ports().size();
+  const std::uint64_t doubles = 1 + 7 * nb + 6 * nb + 6 * nb + 3 * nb + system.num_equations() +
+                                6 * np + 5 + 2 + 2 * system.layout().num_elastic_total() +
+                                6 * system.force_elements().size() + 6 * system.sensors().size();
+  return 8 * doubles;
+}
+
 void ResultsWriter::Finish(const mbs::RunResult& r) {
   file_.SetAttribute("/", "status", std::string(mbs::Name(r.status)));
   file_.SetAttribute("/", "message", r.message);
@@ -218,9 +237,7 @@ std::vector<std::string> ValidChannelNames(const mbs::System& system) {
   return n;
 }
 
-CsvWriter::CsvWriter(const std::string& path, const mbs::System& system,
-                     const std::vector<std::string>& channels)
-    : system_(system) {
+void CheckChannels(const mbs::System& system, const std::vector<std::string>& channels) {
   const std::vector<std::string> valid = ValidChannelNames(system);
   for (const auto& c : channels) {
     const auto it = std::find(valid.begin(), valid.end(), c);
@@ -228,6 +245,14 @@ CsvWriter::CsvWriter(const std::string& path, const mbs::System& system,
                                                        << mbs::DidYouMean(c, valid)
                                                        << " (channels look like crank.p.x, "
                                                           "main.F.y, energy.total)");
+  }
+}
+
+CsvWriter::CsvWriter(const std::string& path, const mbs::System& system,
+                     const std::vector<std::string>& channels)
+    : system_(system), path_(path) {
+  CheckChannels(system, channels);
+  for (const auto& c : channels) {
     const auto dot1 = c.find('.');
     const auto dot2 = c.rfind('.');
     const std::string owner = c.substr(0, dot1);
@@ -275,6 +300,13 @@ CsvWriter::CsvWriter(const std::string& path, const mbs::System& system,
   for (const auto& c : channels) out_ << "," << c;
   out_ << "\n";
   out_ << std::setprecision(12);
+  out_.flush();
+  EMB_THROW_IF(!out_, "CSV file '" << path << "': write failed (disk full?)");
+}
+
+void CsvWriter::Close() {
+  out_.close();
+  EMB_THROW_IF(!out_, "CSV file '" << path_ << "': closing failed (disk full?)");
 }
 
 void CsvWriter::Write(const mbs::Sample& s) {
@@ -328,6 +360,7 @@ void CsvWriter::Write(const mbs::Sample& s) {
   }
   out_ << "\n";
   out_.flush();
+  EMB_THROW_IF(!out_, "CSV file '" << path_ << "': write failed (disk full?)");
 }
 
 }  // namespace emb::scene

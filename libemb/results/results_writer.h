@@ -4,6 +4,12 @@
 /// CSV of chosen channels. Every sample is appended and flushed at once, so a run that
 /// fails (integrator failure) or is interrupted keeps every sample before it.
 ///
+/// The file is written in place, not atomically: it is a log of the run. Its root attribute
+/// `status` says how far it is: "running" while the run goes (and forever if the process was
+/// killed outright), then the run's outcome ("success", "integrator-failure", ...), or
+/// "interrupted" (SIGINT/SIGTERM) or "failed" (an error), with `message` and `t_reached`
+/// (the last sample written). Readers warn on anything but "success" (results_reader.h).
+///
 /// HDF5 layout (format "emb-mbs-results", version 2, SI units; N samples, nb moving bodies,
 /// m equations, ne constraint elements, np >= ne reaction ports; row-major as h5py shows
 /// it):
@@ -50,6 +56,12 @@
 
 namespace emb::scene {
 
+/// Limits on what one run writes, checked before it starts (`emb run --force` lifts them): the
+/// output times are built up front and every sample is appended and flushed (about a
+/// millisecond each), so 2 million samples is already half an hour of writing.
+inline constexpr double kMaxOutputSamples = 2e6;
+inline constexpr double kMaxOutputBytes = 4e9;  ///< [bytes] of one results file
+
 class ResultsWriter {
  public:
   /// Creates the file and writes the model description.
@@ -60,6 +72,13 @@ class ResultsWriter {
   void Write(const mbs::Sample& sample);
   /// Records the outcome (status, message, t_reached) as root attributes and flushes.
   void Finish(const mbs::RunResult& result);
+  /// Records a run that stopped early: `status` "interrupted" or "failed", the reason and
+  /// the time of the last sample written, and flushes.
+  void MarkStopped(const std::string& status, const std::string& reason, double t_reached);
+  /// Closes the file. @throws InputError if the close fails (disk full, I/O error).
+  void Close();
+  /// Bytes one sample adds to the file of `system` (for output-size estimates).
+  static std::uint64_t BytesPerSample(const mbs::System& system);
 
  private:
   const mbs::System& system_;
@@ -82,7 +101,10 @@ class CsvWriter {
   /// @throws InputError for an unknown channel (with a did-you-mean) or an unwritable file.
   CsvWriter(const std::string& path, const mbs::System& system,
             const std::vector<std::string>& channels);
+  /// Appends one line and flushes. @throws InputError if the write fails (disk full).
   void Write(const mbs::Sample& sample);
+  /// Closes the file. @throws InputError if the close fails.
+  void Close();
 
  private:
   struct Channel {
@@ -103,9 +125,14 @@ class CsvWriter {
     int component;  // 0..3
   };
   const mbs::System& system_;
+  std::string path_;
   std::ofstream out_;
   std::vector<Channel> channels_;
 };
+
+/// @throws InputError naming the first of `channels` that `system` does not have (with a
+/// did-you-mean), before any file is created.
+void CheckChannels(const mbs::System& system, const std::vector<std::string>& channels);
 
 /// Value of a channel name check without writing (used by tests and the CLI).
 std::vector<std::string> ValidChannelNames(const mbs::System& system);

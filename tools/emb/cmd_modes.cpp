@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "libemb/common/error.h"
+#include "libemb/common/number_check.h"
 #include "libemb/common/timer.h"
 #include "libemb/fe/assembly.h"
 #include "libemb/fe/modal_analysis.h"
@@ -42,6 +43,16 @@ struct ModesCommand {
   void Run() const {
     part.material.Validate();
     EMB_THROW_IF(num_modes < 1, "--modes: expected at least 1, got " << num_modes);
+    CheckSolverOptions(tolerance, subspace, max_restarts, shift_hz);
+    // Every output checked and locked before any work.
+    const std::string h5_path = no_output ? "" : OutputPath();
+    const std::string xdmf_path =
+        h5_path.empty() || no_xdmf
+            ? ""
+            : std::filesystem::path(h5_path).replace_extension(".xdmf").string();
+    const PreparedOutputs outputs(
+        {{h5_path, "-o"}, {xdmf_path, "the .xdmf beside -o"}, {part.save_mesh, "--save-mesh"}},
+        {part.file});
     const ProgressFn progress = MakeProgressDisplay(out.quiet);
     PhaseTimes times;
     Stopwatch sw;
@@ -61,14 +72,6 @@ struct ModesCommand {
     for (const auto& g : fixed_groups) {
       const auto dofs = GroupDofs(mesh, g);
       mo.fixed_dofs.insert(mo.fixed_dofs.end(), dofs.begin(), dofs.end());
-    }
-    // Check the output location before the expensive part.
-    const std::string h5_path = no_output ? "" : OutputPath();
-    if (!h5_path.empty()) {
-      const auto dir = std::filesystem::path(h5_path).parent_path();
-      std::error_code ec;
-      EMB_THROW_IF(!dir.empty() && !std::filesystem::is_directory(dir, ec),
-                   "-o '" << h5_path << "': directory '" << dir.string() << "' does not exist");
     }
 
     sw.Restart();
@@ -116,10 +119,7 @@ struct ModesCommand {
     s.Add("seconds_total", "time total [s]", times.Total());
     s.Add("peak_memory_mb", "peak memory [MB]", PeakResidentBytes() / 1e6);
 
-    std::string xdmf_path;
     if (!h5_path.empty() && modes.eig.ok()) {
-      if (!no_xdmf)
-        xdmf_path = (std::filesystem::path(h5_path).replace_extension(".xdmf")).string();
       Provenance prov{CommandLine(), part.file, sys.mesh_hash, part.Describe()};
       WriteModesFile(h5_path, xdmf_path, mesh, part.material, modes, prov);
       s.Add("output", "written", h5_path + (xdmf_path.empty() ? "" : " and " + xdmf_path));
