@@ -22,6 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy.spatial.transform import Rotation  # noqa: E402
+from results_status import warn_if_unfinished  # noqa: E402  (tools/plots/results_status.py)
 
 ENERGY = ["kinetic", "gravity", "elastic", "total", "dissipated"]
 
@@ -81,6 +82,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     written = []
     with h5py.File(args.results, "r") as f:
+        warn_if_unfinished(f, args.results)
         traces = [c for c in args.traces.split(",") if c]
         if traces:
             x = f["time"][:] if args.time else crank_angle(f, args.angle, args.axis)
