@@ -285,6 +285,11 @@ bool H5File::Exists(const std::string& path) const {
   return true;
 }
 
+bool H5File::HasAttribute(const std::string& object, const std::string& name) const {
+  if (object != "/" && !Exists(object)) return false;
+  return H5Aexists_by_name(id_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
+}
+
 std::vector<std::uint64_t> H5File::Shape(const std::string& path) const {
   EMB_THROW_IF(!Exists(path), "HDF5 file '" << path_ << "': expected dataset '" << path
                                             << "', not found");

@@ -46,6 +46,8 @@ class H5File {
   void SetAttribute(const std::string& object, const std::string& name, long long value);
 
   bool Exists(const std::string& path) const;
+  /// True if `object` exists and has the attribute `name`.
+  bool HasAttribute(const std::string& object, const std::string& name) const;
   /// Shape of a dataset. @throws InputError if missing.
   std::vector<std::uint64_t> Shape(const std::string& path) const;
   std::vector<double> ReadDoubles(const std::string& path) const;

@@ -6,6 +6,7 @@
 #include <hdf5.h>
 
 #include <filesystem>
+#include <tuple>
 
 #include "libemb/common/error.h"
 #include "libemb/fe/assembly.h"
@@ -100,6 +101,34 @@ TEST(BodyFile, RefusesATamperedFile) {
     SCOPED_TRACE(dataset);
     WriteBodyFile(path, "", f.body, f.info, nullptr);
     ChangeOneEntry(path, dataset, static_cast<std::size_t>(f.body.K.rows()) + 1);
+    ExpectDigestRefusal(path);
+  }
+  std::filesystem::remove(path);
+}
+
+// Changes the double attribute `object@name` in place.
+void ChangeAttribute(const std::string& path, const char* object, const char* name, double value) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hid_t attr = H5Aopen_by_name(file, object, name, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(attr, 0);
+  ASSERT_GE(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), 0);
+  H5Aclose(attr);
+  H5Fclose(file);
+}
+
+// Issue 14: the attributes the reader uses (damping, material, counts) are covered by the
+// digest too (version 2), so changing them is refused like changing a matrix entry.
+TEST(BodyFile, RefusesTamperedAttributes) {
+  const Fixture f;
+  const std::string path = TempPath("attributes.h5");
+  for (auto [object, name, value] : {std::tuple{"/damping", "ratio", 0.5},
+                                     std::tuple{"/material", "density", 7851.0},
+                                     std::tuple{"/provenance", "shift_hz", 1.0}}) {
+    SCOPED_TRACE(std::string(object) + "@" + name);
+    WriteBodyFile(path, "", f.body, f.info, nullptr);
+    EXPECT_NO_THROW(ReadBodyFile(path));
+    ChangeAttribute(path, object, name, value);
     ExpectDigestRefusal(path);
   }
   std::filesystem::remove(path);
