@@ -106,14 +106,19 @@ TEST(BodyFile, RefusesATamperedFile) {
   std::filesystem::remove(path);
 }
 
-// Changes the double attribute `object@name` in place.
+// Replaces the double attribute `object@name` (as an editor would: delete, create).
 void ChangeAttribute(const std::string& path, const char* object, const char* name, double value) {
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   ASSERT_GE(file, 0);
-  const hid_t attr = H5Aopen_by_name(file, object, name, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(H5Adelete_by_name(file, object, name, H5P_DEFAULT), 0);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t attr =
+      H5Acreate_by_name(file, object, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
+                        H5P_DEFAULT);
   ASSERT_GE(attr, 0);
   ASSERT_GE(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), 0);
   H5Aclose(attr);
+  H5Sclose(space);
   H5Fclose(file);
 }
 
