@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "libemb/io/signal_cleanup.h"
+#include "libemb/common/signal_cleanup.h"
 
 namespace emb {
 

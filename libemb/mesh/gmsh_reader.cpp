@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -13,6 +15,7 @@
 #include "libemb/mesh/geo_lexer.h"
 #include "libemb/mesh/gmsh_input_audit.h"
 #include "libemb/mesh/gmsh_session.h"
+#include "libemb/mesh/saved_mesh.h"
 
 namespace emb {
 namespace {
@@ -81,21 +84,39 @@ CellBlock MakeBlock(int gmsh_type, const std::vector<std::size_t>& tags,
   return b;
 }
 
-// gmsh picks the format from the extension, so the temporary name keeps it.
-void SaveMesh(const std::string& target) {
-  namespace fs = std::filesystem;
-  const fs::path p(target);
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  std::error_code ec;
-  EMB_THROW_IF(!fs::is_directory(dir, ec),
-               "output '" << target << "': directory '" << dir.string() << "' does not exist");
-  const fs::path tmp = dir / ("." + p.stem().string() + ".tmp" + p.extension().string());
-  GmshCall("write", target, [&] { gmsh::write(tmp.string()); });
-  fs::rename(tmp, p, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    EMB_THROW(InputError, "output '" << target << "': could not move the written mesh into place");
+// gmsh reads a mesh file with a node or element number given twice by keeping one of them and
+// only logging it; emb refuses the file (which of the two is meant is not known).
+// The MSH2 reader keeps the last of two elements numbered alike without a word; its log
+// line "N elements" (the count the file declares) then exceeds the elements gmsh holds.
+void RefuseDuplicates(const std::string& path) {
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  long long declared = -1;
+  for (const std::string& line : log) {
+    for (const char* what : {"duplicate node", "duplicate element"}) {
+      const auto at = line.find(std::string("Skipping ") + what);
+      if (at == std::string::npos) continue;
+      EMB_THROW(InputError, "mesh '" << path << "': " << (what + 10)
+                                     << line.substr(at + 9 + std::string(what).size())
+                                     << " is defined twice; expected unique numbers");
+    }
+    long long n = 0;
+    char tail[16] = {};
+    if (std::sscanf(line.c_str(), "Info: %lld element%15s", &n, tail) == 2 &&
+        std::string(tail) == "s")
+      declared = n;
   }
+  if (declared < 0 || Extension(path) != ".msh") return;
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, nodes;
+  GmshCall("read elements of", path,
+           [&] { gmsh::model::mesh::getElements(types, tags, nodes, -1, -1); });
+  long long held = 0;
+  for (const auto& t : tags) held += static_cast<long long>(t.size());
+  EMB_THROW_IF(held < declared, "mesh '" << path << "' declares " << declared
+                                         << " elements but only " << held
+                                         << " have distinct numbers: an element is defined "
+                                            "twice; expected unique numbers");
 }
 
 // Refuses a mesh size that would make more than kMaxEstimatedElements elements, from the
@@ -195,6 +216,9 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
                  "parameters can only be set for .geo geometry files, not '" << path << "'");
   }
 
+  Mesh mesh;
+  std::optional<SavedMeshFile> saved;
+  {
   GmshSession session(args);
   ReportProgress(progress, geometry ? "meshing" : "reading mesh", 0.0);
   GmshOpen(path, /*trusted=*/true);  // audited above unless trusted
@@ -208,9 +232,8 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
     });
   }
   ReportProgress(progress, geometry ? "meshing" : "reading mesh", 0.5);
-  if (!options.save_as.empty()) SaveMesh(options.save_as);
-
-  Mesh mesh;
+  RefuseDuplicates(path);
+  if (!options.save_as.empty()) saved.emplace(options.save_as);
   mesh.source = path;
 
   // Solid cells first: they decide which nodes exist.
@@ -249,6 +272,9 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
     EMB_THROW_IF(placed[i] && mesh.nodes.col(i) != x,
                  "mesh '" << path << "': node " << node_tags[k]
                           << " is defined twice at different places; expected unique node ids");
+    EMB_THROW_IF(!x.allFinite(), "mesh '" << path << "': node " << node_tags[k]
+                                          << " has a non-finite coordinate (" << x.transpose()
+                                          << "); expected finite coordinates [m]");
     placed[i] = 1;
     mesh.nodes.col(i) = x;
     mesh.node_tags[i] = node_tags[k];
@@ -300,6 +326,8 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
     }
     mesh.groups.push_back(std::move(g));
   }
+  }  // the gmsh session ends here: the saved mesh is read back in a new one
+  if (saved) saved->Commit();
   ReportProgress(progress, geometry ? "meshing" : "reading mesh", 1.0);
   return mesh;
 }

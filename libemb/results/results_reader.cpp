@@ -77,6 +77,10 @@ struct ResultsFile {
         n = std::min<std::size_t>(n, shape[0]);
       }
     time.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      EMB_THROW_IF(!std::isfinite(time[i]) || (i > 0 && !(time[i] > time[i - 1])),
+                   "'" << path << "': /time[" << i << "] = " << time[i]
+                       << ": expected finite, increasing sample times (damaged file?)");
   }
   /// Column `col` of the [rows, width] dataset `path`, its first n rows.
   std::vector<double> Column(const std::string& path, std::size_t col) const {

@@ -4,7 +4,7 @@
 
 #include <atomic>
 
-#include "libemb/io/signal_cleanup.h"
+#include "libemb/common/signal_cleanup.h"
 
 namespace emb::cli {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// SIGINT and SIGTERM in emb. By default a signal removes the temporaries and lock files the
-/// library registered (libemb/io/signal_cleanup.h) and ends the process by the same signal
+/// library registered (libemb/common/signal_cleanup.h) and ends the process by the same signal
 /// (the shell sees 130 or 143): `emb modes`/`reduce` leave no hidden files behind. Where a
 /// command can stop cleanly — `emb run` between two samples — it asks for a graceful stop:
 /// the first signal only sets a flag (StopSignal()), the run ends at the next sample and

@@ -1,4 +1,4 @@
-#include "libemb/io/signal_cleanup.h"
+#include "libemb/common/signal_cleanup.h"
 
 #include <unistd.h>
 
