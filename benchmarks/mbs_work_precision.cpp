@@ -128,8 +128,8 @@ int main(int argc, char** argv) {
     sc.system = chain;
     sc.analysis.t_end = 1.0;
     sc.analysis.output_step = 0.1;
-    for (auto ls : {emb::IdaLinearSolver::kDense, emb::IdaLinearSolver::kKlu}) {
-      if (n > 32 && ls == emb::IdaLinearSolver::kDense) continue;
+    for (auto ls : {emb::LinearSolverKind::kDense, emb::LinearSolverKind::kKlu}) {
+      if (n > 32 && ls == emb::LinearSolverKind::kDense) continue;
       sc.analysis.ida.linear_solver = ls;
       const Outcome o = Run(sc, sc.analysis, 1e-6, n > 16 ? 1 : 3);
       std::printf("%-14d %8s %8ld %9ld %7ld %7ld %9ld %10.4f %s\n", n, emb::Name(ls),

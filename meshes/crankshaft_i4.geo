@@ -93,9 +93,11 @@
 //   beam_parts  0       1: geometry for the beam generator (libemb/beam):
 //                       the parts are NOT fused and NOT meshable as one
 //                       solid; each part is a named Physical Volume (see
-//                       BEAM PARTS below) and the surface groups and the
-//                       volume "crankshaft" are not defined.  0 (default):
-//                       the fused solid described here, unchanged.    -
+//                       BEAM PARTS below), the volume "crankshaft" is not
+//                       defined and the surface groups are, on the
+//                       unfused parts (the generator names its interface
+//                       nodes after them).  0 (default): the fused solid
+//                       described here, unchanged.                    -
 //
 // MESH SIZE vs h (Tet10, measured with HXT, gmsh 4.8.4, 1 thread; Delaunay
 // gives counts within a few % of these, e.g. h = 0.008: 46.2 k nodes):
@@ -313,7 +315,8 @@ Macro KeepAxial
   EndFor
 Return
 
-// The rest (union, groups) only for the solid: with beam_parts = 1 the parts stay apart.
+// The union only for the solid: with beam_parts = 1 the parts stay apart. The surface groups
+// below are defined either way (on the unfused parts for the beam generator).
 If (!beam_parts)
 
 // fuse everything into one volume.  Same-domain faces are NOT unified, so
@@ -324,6 +327,7 @@ crank[] = BooleanUnion{ Volume{parts[0]}; Delete; }{ Volume{parts[{1 : np - 1}]}
 If (#crank[] != 1)
   Error("crankshaft: boolean union gave %g volumes instead of 1", #crank[]);
 EndIf
+EndIf  // !beam_parts
 
 // ---------------------------------------------------------------- groups
 For k In {1 : n_cyl + 1}
@@ -366,8 +370,9 @@ If (#sel[] == 0)
 EndIf
 Physical Surface("flange", 302) = {sel[]};
 
-Physical Volume("crankshaft", 1) = {crank[]};
-EndIf  // !beam_parts
+If (!beam_parts)
+  Physical Volume("crankshaft", 1) = {crank[]};
+EndIf
 
 // ---------------------------------------------------------------- mesh
 Mesh.MeshSizeMax = h;

@@ -92,18 +92,7 @@ MassProperties CalcRigidBodyMassProperties(const BeamModel& model, const Eigen::
                                                  << " mass matrix, got " << M.rows() << "x"
                                                  << M.cols());
   const Eigen::MatrixXd Phi = CalcRigidBodyModes(model);
-  const Matrix6d Mr = Phi.transpose() * M * Phi;
-  MassProperties p;
-  p.mass = Mr.topLeftCorner<3, 3>().trace() / 3.0;
-  if (!(p.mass > 0.0)) return p;
-  // Lower-left block m[c×]: c from its off-diagonal entries.
-  const Eigen::Matrix3d mS = 0.5 * (Mr.block<3, 3>(3, 0) - Mr.block<3, 3>(0, 3));
-  const Eigen::Vector3d c = Eigen::Vector3d(mS(2, 1), mS(0, 2), mS(1, 0)) / p.mass;
-  p.center_of_mass = c;
-  const Eigen::Matrix3d I_O = Mr.bottomRightCorner<3, 3>();
-  p.inertia_about_com =
-      I_O - p.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
-  return p;
+  return MassPropertiesFromRigidMass(Phi.transpose() * M * Phi);
 }
 
 }  // namespace emb

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "libemb/beam/beam_model.h"
-#include "libemb/fe/mass_properties.h"
+#include "libemb/common/mass_properties.h"
 
 namespace emb {
 

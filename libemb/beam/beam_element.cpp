@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "libemb/common/error.h"
+#include "libemb/common/skew.h"
 
 namespace emb {
 namespace {
@@ -42,12 +43,6 @@ Matrix4d PlaneConsistentMass(double rhoA, double rhoI, double L, double phi) {
 void Scatter(const Matrix4d& A, const int (&idx)[4], Matrix12d& out) {
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) out(idx[i], idx[j]) += A(i, j);
-}
-
-Eigen::Matrix3d Skew(const Eigen::Vector3d& r) {
-  Eigen::Matrix3d S;
-  S << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
-  return S;
 }
 
 }  // namespace

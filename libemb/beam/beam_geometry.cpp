@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -32,40 +33,67 @@ struct Integrals {
 
 Integrals Integrate(const std::vector<int>& volumes, const std::string& path,
                     const std::string& group) {
-  struct One {
-    double v;
-    Eigen::Vector3d c;
-    Eigen::Matrix3d I;
-  };
-  std::vector<One> ones;
+  MassPropertiesSum sum;  // density 1: masses are volumes
   Integrals out;
   for (int tag : volumes) {
-    One o;
+    double v;
+    Eigen::Vector3d c;
     std::vector<double> I;
     double x0, y0, z0, x1, y1, z1;
     GmshCall("integrate volume " + std::to_string(tag) + " of group '" + group + "' in", path, [&] {
-      gmsh::model::occ::getMass(3, tag, o.v);
-      gmsh::model::occ::getCenterOfMass(3, tag, o.c.x(), o.c.y(), o.c.z());
+      gmsh::model::occ::getMass(3, tag, v);
+      gmsh::model::occ::getCenterOfMass(3, tag, c.x(), c.y(), c.z());
       gmsh::model::occ::getMatrixOfInertia(3, tag, I);
       gmsh::model::occ::getBoundingBox(3, tag, x0, y0, z0, x1, y1, z1);
     });
     EMB_THROW_IF(I.size() != 9, "geometry '" << path << "': group '" << group
                                              << "': expected a 3x3 inertia from gmsh, got "
                                              << I.size() << " values");
-    o.I = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(I.data());
-    ones.push_back(o);
-    out.volume += o.v;
-    out.center += o.v * o.c;
+    sum.Add(v, c, Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(I.data()), v);
     out.box_min = out.box_min.cwiseMin(Eigen::Vector3d(x0, y0, z0));
     out.box_max = out.box_max.cwiseMax(Eigen::Vector3d(x1, y1, z1));
   }
-  EMB_THROW_IF(!(out.volume > 0.0), "geometry '" << path << "': group '" << group
-                                                 << "': expected a positive volume, got "
-                                                 << out.volume << " m^3");
-  out.center /= out.volume;
-  for (const One& o : ones) {
-    const Eigen::Vector3d d = o.c - out.center;
-    out.inertia += o.I + o.v * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+  const MassProperties total = sum.Result();
+  EMB_THROW_IF(!(total.volume > 0.0), "geometry '" << path << "': group '" << group
+                                                   << "': expected a positive volume, got "
+                                                   << total.volume << " m^3");
+  out.volume = total.volume;
+  out.center = total.center_of_mass;
+  out.inertia = total.inertia_about_com;
+  return out;
+}
+
+// Every physical surface group with its area centroid (the nodes are set later).
+std::vector<BeamInterface> SurfaceGroupCentroids(const std::string& path) {
+  std::vector<BeamInterface> out;
+  gmsh::vectorpair groups;
+  GmshCall("read surface groups of", path, [&] { gmsh::model::getPhysicalGroups(groups, 2); });
+  for (const auto& [dim, tag] : groups) {
+    BeamInterface itf;
+    std::vector<int> surfaces;
+    GmshCall("read surface group " + std::to_string(tag) + " of", path, [&] {
+      gmsh::model::getPhysicalName(dim, tag, itf.name);
+      gmsh::model::getEntitiesForPhysicalGroup(dim, tag, surfaces);
+    });
+    double area = 0.0;
+    Eigen::Vector3d first = Eigen::Vector3d::Zero();
+    for (int s : surfaces) {
+      double a = 0.0;
+      Eigen::Vector3d c;
+      GmshCall("integrate surface " + std::to_string(s) + " of group '" + itf.name + "' in", path,
+               [&] {
+                 gmsh::model::occ::getMass(2, s, a);
+                 gmsh::model::occ::getCenterOfMass(2, s, c.x(), c.y(), c.z());
+               });
+      area += a;
+      first += a * c;
+    }
+    EMB_THROW_IF(itf.name.empty() || !(area > 0.0),
+                 "geometry '" << path << "': surface group " << tag << " ('" << itf.name
+                              << "'): expected a named group of positive area, got " << area
+                              << " m^2");
+    itf.centroid_W = first / area;
+    out.push_back(itf);
   }
   return out;
 }
@@ -189,8 +217,9 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
 
   EMB_THROW_IF(!(std::isfinite(o.damping_ratio) && o.damping_ratio >= 0.0),
                "beam generation: damping ratio: expected >= 0, got " << o.damping_ratio);
-  GeneratedBeamModel out{BeamModel(fs::path(path).stem().string(), std::max(0.0, o.stiffness_damping)), {}, {},
-                         path};
+  GeneratedBeamModel out;
+  out.model = BeamModel(fs::path(path).stem().string(), std::max(0.0, o.stiffness_damping));
+  out.source = path;
   std::vector<Integrals> integrals;
   {
     GmshSession session(args);
@@ -224,6 +253,7 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
                  "geometry '" << path << "': expected physical volumes named '" << kSegmentPrefix
                               << "*' or '" << kRigidPrefix << "*', got "
                               << (found.empty() ? "no volume groups" : found));
+    out.interfaces = SurfaceGroupCentroids(path);
   }
 
   const double rho = o.material.density;
@@ -382,21 +412,20 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
     model.SetStiffnessDamping(StiffnessDampingForRatio(o.damping_ratio, modes.frequencies_hz[first]));
   }
 
+  // Interfaces at the beam nodes nearest their surface groups' centroids (header).
+  for (BeamInterface& itf : out.interfaces) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < model.num_nodes(); ++i) {
+      const double d = (model.nodes()[i].p_W - itf.centroid_W).norm();
+      if (d < best) best = d, itf.node = i;
+    }
+    itf.offset_W = itf.centroid_W - model.nodes()[itf.node].p_W;
+  }
+
   // Mass properties of the exact geometry: all parts together.
-  MassProperties& g = out.geometry;
-  Eigen::Vector3d first = Eigen::Vector3d::Zero();
-  for (const GeometryPart& p : parts) {
-    g.volume += p.mass_properties.volume;
-    g.mass += p.mass_properties.mass;
-    first += p.mass_properties.mass * p.mass_properties.center_of_mass;
-  }
-  g.center_of_mass = first / g.mass;
-  for (const GeometryPart& p : parts) {
-    const Eigen::Vector3d d = p.mass_properties.center_of_mass - g.center_of_mass;
-    g.inertia_about_com += p.mass_properties.inertia_about_com +
-                           p.mass_properties.mass *
-                               (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
-  }
+  MassPropertiesSum all;
+  for (const GeometryPart& p : parts) all.Add(p.mass_properties);
+  out.geometry = all.Result();
   return out;
 }
 

@@ -30,6 +30,15 @@
 /// webs' nodes. Two touching rigid parts, a gap, an overlap or non-coaxial touching segments
 /// are InputErrors naming both parts.
 ///
+/// Interfaces: every physical *surface* group of the geometry (the surfaces `emb reduce` can
+/// condense to an interface of the 3-D model: main_journal_k, crankpin_i, nose, flange; end_a,
+/// end_b of the tube) becomes a named interface of the beam model at the beam node nearest to
+/// the group's area centroid (OpenCASCADE's exact surface integrals): a journal's or pin's
+/// cylindrical bearing surface → its segment's mid-length node, the flange's rear face → the
+/// flange's end node, a tube's end face → its end node. The distance from the centroid to the
+/// node is recorded (offset_W); the multibody beam part (mbs/flexible/beam_part.h) puts its
+/// interface markers there.
+///
 /// Webs (BeamGenerationOptions::webs). kRigid (the seed's dummy parts): a segment off the
 /// rigid part's axis (a crankpin) hangs on the part's node through a rigid offset, so the web
 /// arm between the crank axis and the pin axis is infinitely stiff — the beam crankshaft is
@@ -48,7 +57,7 @@
 #include <vector>
 
 #include "libemb/beam/beam_model.h"
-#include "libemb/fe/mass_properties.h"
+#include "libemb/common/mass_properties.h"
 
 namespace emb {
 
@@ -104,9 +113,18 @@ struct GeometryPart {
   int pin_node{-1};                ///< elastic webs: the node on the pin axis, else −1
 };
 
+/// A surface group of the geometry as a point of the beam model (file comment).
+struct BeamInterface {
+  std::string name;  ///< the surface group's name, e.g. "main_journal_3"
+  int node{-1};      ///< the beam node it sits at
+  Eigen::Vector3d centroid_W{Eigen::Vector3d::Zero()};  ///< area centroid of the surfaces [m]
+  Eigen::Vector3d offset_W{Eigen::Vector3d::Zero()};    ///< centroid − node position [m]
+};
+
 struct GeneratedBeamModel {
   BeamModel model;
   std::vector<GeometryPart> parts;  ///< sorted along x
+  std::vector<BeamInterface> interfaces;  ///< in the geometry's group order
   MassProperties geometry;          ///< all parts together (exact geometry, not the beams)
   std::string source;               ///< the geometry file
 };

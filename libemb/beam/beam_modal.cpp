@@ -3,19 +3,12 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/fe/modal_analysis.h"
+#include "libemb/linalg/dense_eigen.h"
 
 namespace emb {
-namespace {
-
-double NormOne(const Eigen::MatrixXd& A) {
-  return A.size() == 0 ? 0.0 : A.cwiseAbs().colwise().sum().maxCoeff();
-}
-
-}  // namespace
 
 BeamModes CalcBeamModes(const BeamSystem& sys, const BeamModalOptions& o) {
   EMB_THROW_IF(o.num_modes < 0, "beam modes: number of modes: expected >= 0 (0 = all), got "
@@ -72,28 +65,15 @@ BeamModes CalcBeamModes(const BeamSystem& sys, const BeamModalOptions& o) {
   r.frequencies_hz = r.eigenvalues.unaryExpr([](double l) { return FrequencyHz(l); });
   r.num_rigid_modes = static_cast<int>((r.eigenvalues.array().abs() < r.rigid_threshold).count());
 
-  // Checks of every pair.
-  const Eigen::MatrixXd KPhi = K * Phi, MPhi = M * Phi;
-  const double k1 = NormOne(K), m1 = NormOne(M);
-  for (int k = 0; k < m; ++k) {
-    const double lam = r.eigenvalues[k];
-    const double eta = (KPhi.col(k) - lam * MPhi.col(k)).norm() /
-                       ((k1 + std::abs(lam) * m1) * Phi.col(k).norm());
-    r.max_backward_error = std::max(r.max_backward_error, eta);
-  }
-  r.orthonormality_error =
-      m == 0 ? 0.0 : (Phi.transpose() * MPhi - Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff();
+  const EigenpairCheck check =
+      CheckEigenpairs(Phi, K * Phi, M * Phi, r.eigenvalues, NormOne(K), NormOne(M));
+  r.max_backward_error = check.max_backward_error;
+  r.orthonormality_error = check.orthonormality_error;
   r.shapes = Eigen::MatrixXd::Zero(sys.num_dofs(), m);
   for (int i = 0; i < n; ++i) r.shapes.row(free[i]) = Phi.row(i);
-
-  // Written so that NaN fails.
-  if (!(r.max_backward_error <= o.residual_tolerance && r.orthonormality_error <= 1e-8)) {
-    std::ostringstream msg;
-    msg << "beam eigenpair check failed: largest backward error " << r.max_backward_error
-        << " (limit " << o.residual_tolerance << "), M-orthonormality error "
-        << r.orthonormality_error << " (limit 1e-8)";
+  if (!check.Passed(o.residual_tolerance)) {
     r.status = EigenStatus::kInaccurate;
-    r.message = msg.str();
+    r.message = "beam eigenpair check failed: " + check.Describe(o.residual_tolerance);
     return r;
   }
   r.status = EigenStatus::kSuccess;

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "libemb/common/error.h"
-#include "libemb/linalg/cross_matrix.h"
+#include "libemb/common/skew.h"
 
 namespace emb {
 namespace {
@@ -141,10 +141,10 @@ Eigen::Matrix3d BeamModel::ElementFrame(int e) const {
 
 Matrix6d BeamModel::RigidPartMass(int r) const {
   const RigidPart& p = rigid_parts_.at(r);
-  const Eigen::Matrix3d S = CrossMatrix(p.p_NC_W);
-  Matrix6d M;
+  const Eigen::Matrix3d S = Skew(p.p_NC_W);
+  Matrix6d M;  // about the node: −m [c×]² = ParallelAxisTerm(m, c)
   M << p.mass * Eigen::Matrix3d::Identity(), -p.mass * S,  //
-      p.mass * S, p.I_C_W - p.mass * S * S;
+      p.mass * S, p.I_C_W + ParallelAxisTerm(p.mass, p.p_NC_W);
   return M;
 }
 
@@ -167,15 +167,7 @@ double StiffnessDampingForRatio(double damping_ratio, double frequency_hz) {
 }
 
 MassProperties CalcBeamModelMassProperties(const BeamModel& model) {
-  double m = 0.0, volume = 0.0;
-  Eigen::Vector3d first = Eigen::Vector3d::Zero();
-  // Σ over bodies of (I_C + m (|c|² 1 − c cᵀ)): inertia about W's origin.
-  Eigen::Matrix3d I_O = Eigen::Matrix3d::Zero();
-  auto add = [&](double mi, const Eigen::Vector3d& c, const Eigen::Matrix3d& I_C) {
-    m += mi;
-    first += mi * c;
-    I_O += I_C + mi * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
-  };
+  MassPropertiesSum sum;  // elements as prisms about their centres, and the rigid parts
   for (int e = 0; e < model.num_elements(); ++e) {
     const BeamElementProperties p = model.ElementProperties(e);
     const auto [pa, pb] = model.ElasticEnds(e);
@@ -185,20 +177,11 @@ MassProperties CalcBeamModelMassProperties(const BeamModel& model) {
     const Eigen::Vector3d I_B(rho * s.polar_moment() * L, rho * s.second_moment_y * L + me * L * L / 12,
                               rho * s.second_moment_z * L + me * L * L / 12);
     const Eigen::Matrix3d R = model.ElementFrame(e);
-    volume += s.area * L;
-    add(me, 0.5 * (pa + pb), R * I_B.asDiagonal() * R.transpose());
+    sum.Add(me, 0.5 * (pa + pb), R * I_B.asDiagonal() * R.transpose(), s.area * L);
   }
   for (const RigidPart& r : model.rigid_parts())
-    add(r.mass, model.nodes()[r.node].p_W + r.p_NC_W, r.I_C_W);
-  MassProperties out;
-  out.volume = volume;
-  out.mass = m;
-  if (m > 0.0) {
-    const Eigen::Vector3d c = first / m;
-    out.center_of_mass = c;
-    out.inertia_about_com = I_O - m * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
-  }
-  return out;
+    sum.Add(r.mass, model.nodes()[r.node].p_W + r.p_NC_W, r.I_C_W);
+  return sum.Result();
 }
 
 }  // namespace emb

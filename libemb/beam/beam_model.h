@@ -29,7 +29,7 @@
 #include <vector>
 
 #include "libemb/beam/beam_element.h"
-#include "libemb/fe/mass_properties.h"
+#include "libemb/common/mass_properties.h"
 
 namespace emb {
 

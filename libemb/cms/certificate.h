@@ -56,7 +56,7 @@ struct ModePair {
 
 struct ReductionCertificate {
   // 1.
-  RigidMassProperties full, reduced;
+  MassProperties full, reduced;  ///< from the rigid-body mass matrices (no volume)
   MassProperties quadrature;  ///< CalcMassProperties of the mesh (independent route)
   double mass_error{0.0}, com_error{0.0}, inertia_error{0.0};  ///< reduced vs full, relative
   double quadrature_mass_error{0.0};  ///< full (RᵀMR) vs quadrature, relative

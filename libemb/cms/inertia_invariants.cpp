@@ -1,6 +1,7 @@
 #include "libemb/cms/inertia_invariants.h"
 
 #include "libemb/common/error.h"
+#include "libemb/common/mass_properties.h"
 #include "libemb/linalg/kronecker_matrix.h"
 
 namespace emb {
@@ -8,7 +9,7 @@ namespace emb {
 Eigen::Matrix3d InertiaInvariants::InertiaAboutCom() const {
   const Eigen::Vector3d c = CenterOfMass();
   const Eigen::Matrix3d Jc = second_moment - mass * c * c.transpose();
-  return Jc.trace() * Eigen::Matrix3d::Identity() - Jc;
+  return InertiaFromSecondMoment(Jc);
 }
 
 InertiaInvariants CalcInertiaInvariants(const Eigen::Matrix3Xd& nodes, const SparseMatrix& M,
@@ -47,19 +48,6 @@ InertiaInvariants CalcInertiaInvariants(const Eigen::Matrix3Xd& nodes, const Spa
       inv.Sbar[3 * l + k] = inv.Sbar[3 * k + l].transpose();
     }
   return inv;
-}
-
-RigidMassProperties MassPropertiesFromRigidMass(const Eigen::Matrix<double, 6, 6>& Mrr) {
-  // R̃ᵀ M R̃ = [ m I, −m [c]× ; m [c]×, J_O ] with J_O the inertia about the origin.
-  RigidMassProperties p;
-  p.mass = Mrr.topLeftCorner<3, 3>().trace() / 3.0;
-  const Eigen::Matrix3d mc = 0.5 * (Mrr.block<3, 3>(3, 0) - Mrr.block<3, 3>(0, 3));  // m [c]×
-  p.center_of_mass = Eigen::Vector3d(mc(2, 1), mc(0, 2), mc(1, 0)) / p.mass;
-  const Eigen::Matrix3d JO = 0.5 * (Mrr.block<3, 3>(3, 3) + Mrr.block<3, 3>(3, 3).transpose());
-  const Eigen::Vector3d& c = p.center_of_mass;
-  // Parallel axes: J_O = I_c + m (|c|² I − c cᵀ).
-  p.inertia_about_com = JO - p.mass * (c.squaredNorm() * Eigen::Matrix3d::Identity() - c * c.transpose());
-  return p;
 }
 
 }  // namespace emb

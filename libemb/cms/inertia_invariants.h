@@ -54,13 +54,4 @@ struct InertiaInvariants {
 InertiaInvariants CalcInertiaInvariants(const Eigen::Matrix3Xd& nodes, const SparseMatrix& M,
                                         const Eigen::MatrixXd& modes);
 
-/// Mass properties of a body from its 6 × 6 rigid-body mass matrix R̃ᵀ M R̃, where the columns
-/// of R̃ are the translations x, y, z and the rotations about x, y, z about the origin.
-struct RigidMassProperties {
-  double mass{0.0};
-  Eigen::Vector3d center_of_mass{Eigen::Vector3d::Zero()};
-  Eigen::Matrix3d inertia_about_com{Eigen::Matrix3d::Zero()};
-};
-RigidMassProperties MassPropertiesFromRigidMass(const Eigen::Matrix<double, 6, 6>& M_rr);
-
 }  // namespace emb

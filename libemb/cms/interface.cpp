@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "libemb/common/error.h"
-#include "libemb/linalg/cross_matrix.h"
+#include "libemb/common/skew.h"
 
 namespace emb {
 namespace {
@@ -281,7 +281,7 @@ std::string InterfaceSpec::ToString() const {
 
 Eigen::Matrix<double, 3, 6> Interface::RigidMap(const Eigen::Vector3d& x_s) const {
   Eigen::Matrix<double, 3, 6> B;
-  B << Eigen::Matrix3d::Identity(), -CrossMatrix(x_s - point);
+  B << Eigen::Matrix3d::Identity(), -Skew(x_s - point);
   return B;
 }
 

@@ -5,14 +5,14 @@
 
 #include "libemb/common/error.h"
 #include "libemb/fe/assembly.h"
-#include "libemb/linalg/cross_matrix.h"
+#include "libemb/common/skew.h"
 #include "libemb/linalg/submatrix.h"
 
 namespace emb {
 
 Eigen::Matrix<double, 6, 6> ReferenceRigidMotions(const Eigen::Vector3d& p) {
   Eigen::Matrix<double, 6, 6> R = Eigen::Matrix<double, 6, 6>::Identity();
-  R.block<3, 3>(0, 3) = -CrossMatrix(p);  // t = t0 + θ0 × p = t0 − [p]× θ0
+  R.block<3, 3>(0, 3) = -Skew(p);  // t = t0 + θ0 × p = t0 − [p]× θ0
   return R;
 }
 

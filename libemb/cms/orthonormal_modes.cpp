@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "libemb/common/error.h"
+#include "libemb/linalg/dense_eigen.h"
 
 namespace emb {
 namespace {
@@ -67,11 +68,14 @@ OrthonormalModes Orthonormalise(const Eigen::MatrixXd& K, const Eigen::MatrixXd&
   out.num_near_zero = static_cast<int>((all.array().abs() < 1e-10 * lmax).count());
   out.rigid_frequencies_hz = all.head(std::min<int>(6, all.size())).unaryExpr([](double l) { return Hz(l); });
 
-  // Checks.
+  // Checks: every pair (the rigid ones with λ = 0) on (K̂, M̂).
   Eigen::MatrixXd X(nr, 6 + out.elastic.cols());
   X << out.rigid, out.elastic;
-  out.orthonormality_error =
-      (X.transpose() * Ms * X - Eigen::MatrixXd::Identity(X.cols(), X.cols())).cwiseAbs().maxCoeff();
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(X.cols());
+  lambda.tail(out.eigenvalues.size()) = out.eigenvalues;
+  const EigenpairCheck check = CheckEigenpairs(X, Ks * X, Ms * X, lambda, NormOne(Ks), NormOne(Ms));
+  out.orthonormality_error = check.orthonormality_error;
+  out.max_backward_error = check.max_backward_error;
   Eigen::MatrixXd KX = out.elastic.transpose() * Ks * out.elastic;
   KX.diagonal() -= out.eigenvalues;
   const double scale = out.eigenvalues.size() > 0 ? out.eigenvalues.cwiseAbs().maxCoeff() : 1.0;

@@ -27,6 +27,9 @@ struct OrthonormalModes {
   int num_near_zero{0};
   int num_dropped{0};               ///< dependent basis directions removed in step (1)
   double orthonormality_error{0.0}; ///< ‖XᵀM̂X − I‖_max (elastic and rigid together)
+  /// Largest backward error of the pairs (λ, x) on (K̂, M̂), rigid ones with λ = 0
+  /// (linalg/dense_eigen.h).
+  double max_backward_error{0.0};
   double k_diagonality_error{0.0};  ///< ‖XᵀK̂X − Λ‖_max / max λ
   double rigid_stiffness{0.0};      ///< ‖K̂ R̂‖_F / (‖K̂‖_F ‖R̂‖_F): rigid motion strain-free
 };

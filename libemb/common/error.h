@@ -5,7 +5,7 @@
 /// A caller's mistake (bad file, mesh, parameter) throws emb::InputError whose message
 /// names the thing and says "expected X, got Y". Numerical outcomes (not converged, not
 /// positive definite) are *not* exceptions: they are a status in a result struct
-/// (see e.g. linalg/eigen_result.h). Broken internal invariants throw emb::InternalError
+/// (see e.g. linalg/eigen_solver.h, EigenResult). Broken internal invariants throw emb::InternalError
 /// through EMB_CHECK (always on, for cheap checks) or EMB_DEBUG_CHECK (debug builds only).
 
 #include <sstream>

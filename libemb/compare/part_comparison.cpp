@@ -1,6 +1,5 @@
 #include "libemb/compare/part_comparison.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -16,6 +15,7 @@
 #include "libemb/compare/station_sampling.h"
 #include "libemb/fe/assembly.h"
 #include "libemb/fe/modal_analysis.h"
+#include "libemb/linalg/dense_eigen.h"
 
 namespace emb {
 namespace {
@@ -79,12 +79,18 @@ Eigen::VectorXd DenseFrequenciesHz(const Eigen::MatrixXd& K, const Eigen::Matrix
       Kf(a, b) = K(free[a], free[b]);
       Mf(a, b) = M(free[a], free[b]);
     }
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kf, Mf, Eigen::EigenvaluesOnly);
-  if (es.info() != Eigen::Success)
-    EMB_THROW(NumericalError, "reduced eigen-problem (" << n << " unknowns) failed");
-  Eigen::VectorXd hz(n);
-  for (int i = 0; i < n; ++i) hz[i] = FrequencyHz(es.eigenvalues()[i]);
-  return hz;
+  const DenseEigenpairs es = SolveDenseEigenpairs(Kf, Mf);
+  if (!es.ok)
+    EMB_THROW(NumericalError, "reduced eigen-problem (" << n << " unknowns) failed: its mass "
+                                                            "matrix is not positive definite");
+  // The reduced pencils are small and well scaled: round-off level backward errors.
+  constexpr double kReducedResidualTolerance = 1e-8;
+  if (!es.check.Passed(kReducedResidualTolerance))
+    EMB_THROW(NumericalError, "reduced eigen-problem (" << n << " unknowns): eigenpair check "
+                                                            "failed: "
+                                                         << es.check.Describe(
+                                                                kReducedResidualTolerance));
+  return es.eigenvalues.unaryExpr([](double l) { return FrequencyHz(l); });
 }
 
 struct Context {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "libemb/common/error.h"
-#include "libemb/linalg/cross_matrix.h"
+#include "libemb/common/skew.h"
 
 namespace emb {
 namespace {
@@ -98,7 +98,7 @@ SampledShapes SampleMeshShapes(const Mesh& mesh, const std::vector<Station>& sta
     for (int k = 0; k < ns; ++k) {
       const int n = st.mesh_nodes[k];
       B.block<3, 3>(3 * k, 0).setIdentity();
-      B.block<3, 3>(3 * k, 3) = -CrossMatrix(mesh.nodes.col(n) - st.p_W) / st.radius;
+      B.block<3, 3>(3 * k, 3) = -Skew(mesh.nodes.col(n) - st.p_W) / st.radius;
       U.middleRows(3 * k, 3) = shapes.middleRows(3 * n, 3);
     }
     const Eigen::MatrixXd q = (B.transpose() * B).ldlt().solve(B.transpose() * U);

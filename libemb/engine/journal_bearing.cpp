@@ -6,6 +6,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/forces/force_jacobian.h"
+#include "libemb/mbs/forces/relative_motion.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/core/system.h"
 
@@ -129,34 +130,20 @@ JournalBearing::FilmLoad JournalBearing::CalcFilmLoad(const Eigen::Vector2d& e,
   return load;
 }
 
-JournalBearing::Relative JournalBearing::CalcRelative(const MarkerKinematics& I,
-                                                      const MarkerKinematics& J) const {
-  Relative rel;
-  const Eigen::Vector3d d = I.p_WM - J.p_WM;
-  const Eigen::Matrix3d R_JW = J.R_WM.transpose();
-  rel.e = R_JW * d;
-  rel.e_dot = R_JW * (I.v_WM - J.v_WM - J.omega_W.cross(d));
-  rel.w = (R_JW * (I.omega_W - J.omega_W)).z();
-  return rel;
+JournalBearing::FilmLoad JournalBearing::CalcFilmLoad(const RelativeMotion& rel, double t) const {
+  return CalcFilmLoad(rel.x.head<2>(), rel.x_dot.head<2>(), rel.w.z(), t);
 }
 
 void JournalBearing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
-  const System& sys = *ctx.system;
-  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
-  const Relative rel = CalcRelative(I, J);
-  const FilmLoad load = CalcFilmLoad(rel.e.head<2>(), rel.e_dot.head<2>(), rel.w, ctx.t);
+  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const FilmLoad load = CalcFilmLoad(CalcRelativeMotion(I, J), ctx.t);
   const Eigen::Vector3d F_W = J.R_WM * Eigen::Vector3d(load.force.x(), load.force.y(), 0.0);
   const Eigen::Vector3d T_W = J.R_WM.col(2) * load.torque;
-  AddWrench(sys.layout(), I, I.p_WM, F_W, T_W, f);
-  AddWrench(sys.layout(), J, I.p_WM, -F_W, -T_W, f);
+  AddWrenchPair(ctx.system->layout(), I, J, F_W, T_W, f);
 }
 
 bool JournalBearing::DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* out) const {
-  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
-  const Relative rel = CalcRelative(I, J);
-  const FilmLoad load = CalcFilmLoad(rel.e.head<2>(), rel.e_dot.head<2>(), rel.w, ctx.t);
+  const FilmLoad load = CalcFilmLoad(CalcRelativeMotion(CalcMarkerPair(ctx, i_, j_)), ctx.t);
   *out << load.force.x(), load.force.y(), 0.0, 0.0, 0.0, load.torque;
   return true;
 }
@@ -167,39 +154,31 @@ void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSi
   using Eigen::MatrixXd;
   using Eigen::Vector2d;
   using Eigen::Vector3d;
-  const System& sys = *ctx.system;
-  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
-  const Relative rel = CalcRelative(I, J);
-  const Vector2d e = rel.e.head<2>(), e_dot = rel.e_dot.head<2>();
+  const MarkerPair markers = CalcMarkerPair(ctx, i_, j_);
+  const auto& [I, J] = markers;
+  const RelativeMotion rel = CalcRelativeMotion(markers);
+  const Vector2d e = rel.x.head<2>(), e_dot = rel.x_dot.head<2>();
+  const double w = rel.w.z();
   CheckEccentricity(e, ctx.t);
-  const MarkerDerivatives dI = DifferentiateMarker(I, 0, 2), dJ = DifferentiateMarker(J, 1, 2);
-  const int n = static_cast<int>(dI.point_x.cols());
-  const Matrix3d R_WJ = J.R_WM, R_JW = R_WJ.transpose();
-  const Vector3d d = I.p_WM - J.p_WM;
+  const auto [dI, dJ] = DifferentiateMarkerPair(markers);
+  const Matrix3d R_WJ = J.R_WM;
 
-  // e3 = R_JW d and e3' = R_JW y, y = d' - omega_J x d (d(R_JW y) = R_JW (dy + [y x] dphi_J)).
-  const MatrixXd dd_x = dI.point_x - dJ.point_x;
-  const MatrixXd de_x = R_JW * (dd_x + Skew(d) * dJ.rotation_x);
-  const Vector3d y = I.v_WM - J.v_WM - J.omega_W.cross(d);
-  const MatrixXd dy_x =
-      dI.velocity_x - dJ.velocity_x + Skew(d) * dJ.omega_x - Skew(J.omega_W) * dd_x;
-  const MatrixXd dedot_x = R_JW * (dy_x + Skew(y) * dJ.rotation_x);
-  const MatrixXd dedot_v = R_JW * (dI.velocity_v - dJ.velocity_v + Skew(d) * dJ.omega_v);
-  // w = z . R_JW (omega_I - omega_J).
-  const Vector3d w_rel = I.omega_W - J.omega_W;
-  const MatrixXd dw_x =
-      (R_JW * (dI.omega_x - dJ.omega_x + Skew(w_rel) * dJ.rotation_x)).bottomRows<1>();
-  const MatrixXd dw_v = (R_JW * (dI.omega_v - dJ.omega_v)).bottomRows<1>();
+  // e = (x, y of I in J), e' and w = z . (relative angular velocity in J): relative_motion.h.
+  const RelativeMotionDerivatives dr = DifferentiateRelativeMotion(rel, I, J, dI, dJ);
+  const MatrixXd& de_x = dr.x_x;
+  const MatrixXd& dedot_x = dr.x_dot_x;
+  const MatrixXd& dedot_v = dr.x_dot_v;
+  const MatrixXd dw_x = dr.w_x.bottomRows<1>();
+  const MatrixXd dw_v = dr.w_v.bottomRows<1>();
 
   // u = e' - (w/2) z x e = e' + (w/2) (e_y, -e_x).
-  const Vector2d u = e_dot - 0.5 * rel.w * Perp(e);
+  const Vector2d u = e_dot - 0.5 * w * Perp(e);
   Matrix2d minus_perp;  // d(-z x e)/de
   minus_perp << 0, 1, -1, 0;
   const Vector2d half_minus_perp_e = 0.5 * minus_perp * e;
   const MatrixXd de2_x = de_x.topRows<2>();
   const MatrixXd du_x = dedot_x.topRows<2>() + half_minus_perp_e * dw_x +
-                        0.5 * rel.w * minus_perp * de2_x;
+                        0.5 * w * minus_perp * de2_x;
   const MatrixXd du_v = dedot_v.topRows<2>() + half_minus_perp_e * dw_v;
 
   Matrix2d Fe, Fu;
@@ -212,9 +191,9 @@ void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSi
   const double s = 1.0 - e.squaredNorm() / c2;
   const double k = 2.0 * std::numbers::pi * p_.viscosity * std::pow(p_.radius, 3) * p_.length /
                    p_.clearance;
-  const double torque = -0.5 * (e.x() * F2.y() - e.y() * F2.x()) - k * rel.w / std::sqrt(s);
-  const Eigen::RowVector2d dT_de(-0.5 * F2.y() - k * rel.w * std::pow(s, -1.5) * e.x() / c2,
-                                 0.5 * F2.x() - k * rel.w * std::pow(s, -1.5) * e.y() / c2);
+  const double torque = -0.5 * (e.x() * F2.y() - e.y() * F2.x()) - k * w / std::sqrt(s);
+  const Eigen::RowVector2d dT_de(-0.5 * F2.y() - k * w * std::pow(s, -1.5) * e.x() / c2,
+                                 0.5 * F2.x() - k * w * std::pow(s, -1.5) * e.y() / c2);
   const Eigen::RowVector2d dT_dF(0.5 * e.y(), -0.5 * e.x());
   const MatrixXd dtorque_x = dT_de * de2_x + dT_dF * dF2_x - (k / std::sqrt(s)) * dw_x;
   const MatrixXd dtorque_v = dT_dF * dF2_v - (k / std::sqrt(s)) * dw_v;
@@ -226,25 +205,13 @@ void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSi
   const MatrixXd dF_v = R_WJ.leftCols<2>() * dF2_v;
   const MatrixXd dT_x = R_WJ.col(2) * dtorque_x - Skew(T) * dJ.rotation_x;
   const MatrixXd dT_v = R_WJ.col(2) * dtorque_v;
-
-  // Both loads act at p_WI: arm s_WI on I's body, p_WI - p_WJbody on J's.
-  const Vector3d r_j = I.p_WM - (J.p_WM - J.s_W);
-  MatrixXd dr_j = dI.point_x;
-  dr_j -= dJ.point_x - dJ.arm_x;  // d p_WJbody = d p_WJ - d s_WJ
-  LocalForceJacobian jac({&I, &J});
-  EMB_CHECK(jac.num_columns() == n);
-  jac.stiffness.topRows<6>() = WrenchStiffness(I.R_WB, 0, F, T, I.s_W, dF_x, dT_x, dI.arm_x);
-  jac.stiffness.bottomRows<6>() = WrenchStiffness(J.R_WB, 1, -F, -T, r_j, -dF_x, -dT_x, dr_j);
-  jac.damping.topRows<6>() = WrenchDamping(I.R_WB, I.s_W, dF_v, dT_v);
-  jac.damping.bottomRows<6>() = WrenchDamping(J.R_WB, r_j, -dF_v, -dT_v);
-  jac.ScatterTo(sink);
+  ScatterWrenchPairJacobian(I, J, dI, dJ, F, T, dF_x, dT_x, dF_v, dT_v, sink);
 }
 
 double JournalBearing::DoCalcDissipatedPower(const ForceContext& ctx) const {
-  const Relative rel = CalcRelative(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
-                                    CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
-  const FilmLoad load = CalcFilmLoad(rel.e.head<2>(), rel.e_dot.head<2>(), rel.w, ctx.t);
-  return -(load.force.dot(rel.e_dot.head<2>()) + load.torque * rel.w);
+  const RelativeMotion rel = CalcRelativeMotion(CalcMarkerPair(ctx, i_, j_));
+  const FilmLoad load = CalcFilmLoad(rel, ctx.t);
+  return -(load.force.dot(rel.x_dot.head<2>()) + load.torque * rel.w.z());
 }
 
 }  // namespace emb::mbs

@@ -48,6 +48,7 @@
 #include <Eigen/Dense>
 
 #include "libemb/mbs/core/force_element.h"
+#include "libemb/mbs/forces/relative_motion.h"
 
 namespace emb::mbs {
 
@@ -81,12 +82,9 @@ class JournalBearing final : public ForceElement {
   bool DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const override;
 
  private:
-  /// Relative kinematics in J's axes: e3 = R_JW d, e3' (bushing convention), w.
-  struct Relative {
-    Eigen::Vector3d e, e_dot;
-    double w{0.0};
-  };
-  Relative CalcRelative(const MarkerKinematics& I, const MarkerKinematics& J) const;
+  /// The film load of the relative motion of I in J (relative_motion.h): e = x.head<2>,
+  /// e' = x'.head<2>, w = w.z.
+  FilmLoad CalcFilmLoad(const RelativeMotion& rel, double t) const;
   /// F(e, u) and, if the pointers are set, dF/de and dF/du (2x2 each).
   Eigen::Vector2d FilmForce(const Eigen::Vector2d& e, const Eigen::Vector2d& u,
                             Eigen::Matrix2d* dF_de, Eigen::Matrix2d* dF_du) const;

@@ -30,7 +30,7 @@ MassProperties CalcMassProperties(const Mesh& mesh, double density) {
   p.center_of_mass = first / volume;
   // Second moment about the centre: ∫ r rᵀ = ∫ x xᵀ − V c cᵀ.
   const Eigen::Matrix3d S = density * (second - volume * p.center_of_mass * p.center_of_mass.transpose());
-  p.inertia_about_com = S.trace() * Eigen::Matrix3d::Identity() - S;
+  p.inertia_about_com = InertiaFromSecondMoment(S);
   return p;
 }
 

@@ -15,45 +15,6 @@
 
 namespace emb {
 
-const char* Name(IdaLinearSolver solver) {
-  switch (solver) {
-    case IdaLinearSolver::kAuto:
-      return "auto";
-    case IdaLinearSolver::kDense:
-      return "dense";
-    case IdaLinearSolver::kKlu:
-      return "klu";
-  }
-  return "unknown";
-}
-
-IdaLinearSolver ParseIdaLinearSolver(const std::string& name) {
-  for (IdaLinearSolver k : {IdaLinearSolver::kAuto, IdaLinearSolver::kDense, IdaLinearSolver::kKlu})
-    if (name == Name(k)) return k;
-  EMB_THROW(InputError, "linear solver: expected 'auto', 'dense' or 'klu', got '" << name << "'");
-}
-
-const char* Name(IdaStatus status) {
-  switch (status) {
-    case IdaStatus::kSuccess:
-      return "success";
-    case IdaStatus::kTooMuchWork:
-      return "too-much-work";
-    case IdaStatus::kTooMuchAccuracy:
-      return "too-much-accuracy";
-    case IdaStatus::kErrorTestFailure:
-      return "error-test-failure";
-    case IdaStatus::kConvergenceFailure:
-      return "convergence-failure";
-    case IdaStatus::kLinearSolverFailure:
-      return "linear-solver-failure";
-    case IdaStatus::kResidualFailure:
-      return "residual-failure";
-    case IdaStatus::kOtherFailure:
-      return "failure";
-  }
-  return "unknown";
-}
 
 namespace {
 
@@ -73,27 +34,27 @@ Eigen::Map<Eigen::VectorXd> View(N_Vector v) {
   return {N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v))};
 }
 
-IdaStatus StatusOf(int flag) {
+IntegratorStatus StatusOf(int flag) {
   switch (flag) {
     case IDA_TOO_MUCH_WORK:
-      return IdaStatus::kTooMuchWork;
+      return IntegratorStatus::kTooMuchWork;
     case IDA_TOO_MUCH_ACC:
-      return IdaStatus::kTooMuchAccuracy;
+      return IntegratorStatus::kTooMuchAccuracy;
     case IDA_ERR_FAIL:
-      return IdaStatus::kErrorTestFailure;
+      return IntegratorStatus::kErrorTestFailure;
     case IDA_CONV_FAIL:
     case IDA_NLS_FAIL:
-      return IdaStatus::kConvergenceFailure;
+      return IntegratorStatus::kConvergenceFailure;
     case IDA_LINIT_FAIL:
     case IDA_LSETUP_FAIL:
     case IDA_LSOLVE_FAIL:
-      return IdaStatus::kLinearSolverFailure;
+      return IntegratorStatus::kLinearSolverFailure;
     case IDA_RES_FAIL:
     case IDA_REP_RES_ERR:
     case IDA_FIRST_RES_FAIL:
-      return IdaStatus::kResidualFailure;
+      return IntegratorStatus::kResidualFailure;
     default:
-      return IdaStatus::kOtherFailure;
+      return IntegratorStatus::kOtherFailure;
   }
 }
 
@@ -229,13 +190,11 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
   if (options.initial_step > 0.0)
     CheckSetup(IDASetInitStep(m.mem, options.initial_step), "IDASetInitStep");
   if (options.max_step > 0.0) CheckSetup(IDASetMaxStep(m.mem, options.max_step), "IDASetMaxStep");
-  linear_solver_ = options.linear_solver;
-  if (linear_solver_ == IdaLinearSolver::kAuto)
-    linear_solver_ = problem.has_jacobian() && options.use_analytic_jacobian &&
-                             problem.has_sparse_jacobian() && n >= options.sparse_min_size
-                         ? IdaLinearSolver::kKlu
-                         : IdaLinearSolver::kDense;
-  if (linear_solver_ == IdaLinearSolver::kKlu) {
+  linear_solver_ = ResolveLinearSolverKind(
+      options.linear_solver,
+      problem.has_jacobian() && options.use_analytic_jacobian && problem.has_sparse_jacobian(), n,
+      options.sparse_min_size);
+  if (linear_solver_ == LinearSolverKind::kKlu) {
     EMB_THROW_IF(!problem.has_jacobian() || !options.use_analytic_jacobian,
                  "IDA: the KLU linear solver needs the problem's analytic Jacobian");
     // The structure, built once; the values at t0 are overwritten before the first solve.
@@ -274,9 +233,9 @@ void IdaSolver::Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::
   yp_ = yp0;
 }
 
-IdaReport IdaSolver::AdvanceTo(double t_out) {
+IntegratorReport IdaSolver::AdvanceTo(double t_out) {
   Impl& m = *impl_;
-  IdaReport report;
+  IntegratorReport report;
   if (t_out <= t_) {
     report.t = t_;
     return report;
@@ -298,7 +257,7 @@ IdaReport IdaSolver::AdvanceTo(double t_out) {
 
   report.status = StatusOf(flag);
   report.message = m.last_message;
-  if (linear_solver_ == IdaLinearSolver::kKlu && !KluFactorizationOf(m.ls).message().empty())
+  if (linear_solver_ == LinearSolverKind::kKlu && !KluFactorizationOf(m.ls).message().empty())
     report.message += " (" + KluFactorizationOf(m.ls).message() + ")";
   realtype h = 0.0;
   if (IDAGetLastStep(m.mem, &h) >= 0) report.last_step = h;
@@ -322,14 +281,14 @@ IdaReport IdaSolver::AdvanceTo(double t_out) {
   return report;
 }
 
-IdaStats IdaSolver::stats() const {
-  IdaStats s;
+IntegratorStats IdaSolver::stats() const {
+  IntegratorStats s;
   void* mem = impl_->mem;
   long v = 0;
   if (IDAGetNumSteps(mem, &v) >= 0) s.steps = v;
   if (IDAGetNumResEvals(mem, &v) >= 0) s.residual_evals = v;
   if (IDAGetNumJacEvals(mem, &v) >= 0) s.jacobian_evals = v;
-  if (linear_solver_ == IdaLinearSolver::kKlu) {
+  if (linear_solver_ == LinearSolverKind::kKlu) {
     const KluStats& k = KluFactorizationOf(impl_->ls).stats();
     s.full_factorizations = k.full_factorizations;
     s.refactorizations = k.refactorizations;

@@ -3,7 +3,7 @@
 /// RAII wrapper of SUNDIALS IDA (variable-order, variable-step BDF for F(t, y, y') = 0)
 /// with the dense direct linear solver or KLU (sparse direct, on the problem's compressed-column
 /// iteration matrix, through emb's own SUNLinearSolver: klu_linear_solver.h). Every SUNDIALS flag is checked; a failure to advance is a status
-/// (IdaStatus) with the time, the step size and the component with the largest weighted local
+/// (IntegratorStatus) with the time, the step size and the component with the largest weighted local
 /// error, never a print or an exit.
 
 #include <Eigen/Dense>
@@ -12,27 +12,11 @@
 #include <string>
 
 #include "libemb/integrators/dae_problem.h"
+#include "libemb/integrators/dae_integrator.h"
+#include "libemb/integrators/integrator_report.h"
+#include "libemb/integrators/linear_solver_kind.h"
 
 namespace emb {
-
-/// Linear solver for IDA's Newton iterations.
-enum class IdaLinearSolver {
-  /// kKlu when the problem assembles a sparse Jacobian (DaeProblem::has_sparse_jacobian)
-  /// and has at least IdaOptions::sparse_min_size unknowns, else kDense.
-  kAuto,
-  kDense,  ///< SUNDIALS dense LU on the dense iteration matrix: small systems
-  /// SuiteSparse KLU on the problem's compressed-column iteration matrix
-  /// (DaeProblem::CalcSparseJacobian, structure fixed at construction); needs an analytic
-  /// Jacobian. One symbolic analysis; each Jacobian update is refactored with the previous
-  /// pivot order and factored again with pivoting only if the pivot growth check fails
-  /// (KluFactorization).
-  kKlu,
-};
-
-/// "auto", "dense" or "klu".
-const char* Name(IdaLinearSolver solver);
-/// The solver of that name. @throws InputError listing the valid names.
-IdaLinearSolver ParseIdaLinearSolver(const std::string& name);
 
 /// Settings of one IDA run.
 struct IdaOptions {
@@ -55,7 +39,7 @@ struct IdaOptions {
   bool suppress_algebraic{true};
   /// Use the problem's analytic Jacobian when it has one (otherwise difference quotients).
   bool use_analytic_jacobian{true};
-  IdaLinearSolver linear_solver{IdaLinearSolver::kAuto};
+  LinearSolverKind linear_solver{LinearSolverKind::kAuto};
   /// kAuto picks KLU from this many unknowns on. Measured with the GGL multibody DAE
   /// (benchmarks/README.md, "Dense vs KLU"): at 24 and 48 unknowns (1-2 rods) dense LU and
   /// KLU cost the same, from 72 (3 rods; the 74-78-unknown slider-crank and engine (c))
@@ -63,59 +47,15 @@ struct IdaOptions {
   int sparse_min_size{50};
 };
 
-/// Outcome of IdaSolver::AdvanceTo.
-enum class IdaStatus {
-  kSuccess,
-  kTooMuchWork,          ///< max_num_steps reached before t_out
-  kTooMuchAccuracy,      ///< tolerances too tight for double precision
-  kErrorTestFailure,     ///< repeated local error test failures (step size underflow)
-  kConvergenceFailure,   ///< repeated Newton convergence failures
-  kLinearSolverFailure,  ///< singular iteration matrix or setup failure
-  kResidualFailure,      ///< the residual function failed unrecoverably
-  kOtherFailure,
-};
-
-/// Short name of a status ("success", "error-test-failure", ...).
-const char* Name(IdaStatus status);
-
-/// Where and why IDA stopped.
-struct IdaReport {
-  IdaStatus status{IdaStatus::kSuccess};
-  double t{0.0};          ///< time reached [s]
-  double last_step{0.0};  ///< last step size attempted/taken [s]
-  /// Index of the largest weighted local error among the error-tested components.
-  int worst_component{-1};
-  std::string worst_component_name;
-  double worst_weighted_error{0.0};  ///< |e_i| * w_i (1 = at the tolerance)
-  std::string message;               ///< IDA's own message
-  bool ok() const { return status == IdaStatus::kSuccess; }
-};
-
-/// Counters (cumulative since construction).
-struct IdaStats {
-  long steps{0};
-  long residual_evals{0};
-  long jacobian_evals{0};
-  /// LU factorisations with pivoting: one per Jacobian evaluation with kDense; with kKlu the
-  /// first one and those after a refactorisation was rejected (klu_factorization.h).
-  long full_factorizations{0};
-  /// kKlu only: accepted refactorisations with the pivot order of the last full one.
-  long refactorizations{0};
-  long error_test_failures{0};
-  long nonlinear_convergence_failures{0};
-  int last_order{0};
-  double last_step{0.0};
-};
-
 /// Integrates a DaeProblem from consistent initial values (t0, y0, y'0).
 /// The problem must outlive the solver. Not copyable.
-class IdaSolver {
+class IdaSolver final : public DaeIntegrator {
  public:
   /// @throws InputError if sizes disagree or options are out of range;
   ///         InternalError if SUNDIALS cannot be set up.
   IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd& y0,
             const Eigen::VectorXd& yp0, const IdaOptions& options);
-  ~IdaSolver();
+  ~IdaSolver() override;
   IdaSolver(const IdaSolver&) = delete;
   IdaSolver& operator=(const IdaSolver&) = delete;
 
@@ -123,20 +63,20 @@ class IdaSolver {
   /// never taken beyond it). On success y() and yp() are the values at t_out.
   /// On failure they are the last values IDA accepted and the report says where.
   /// Exceptions thrown by the problem are re-thrown here.
-  IdaReport AdvanceTo(double t_out);
+  IntegratorReport AdvanceTo(double t_out) override;
 
   /// Restarts from new values at t0 (after a discontinuity or a projection).
-  void Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0);
+  void Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
 
   /// The linear solver in use (kAuto resolved at construction).
-  IdaLinearSolver linear_solver() const { return linear_solver_; }
+  LinearSolverKind linear_solver() const override { return linear_solver_; }
   /// Structural non-zeros of the iteration matrix (n^2 for the dense solver).
-  long jacobian_nonzeros() const { return jacobian_nonzeros_; }
+  long jacobian_nonzeros() const override { return jacobian_nonzeros_; }
 
-  double t() const { return t_; }
-  const Eigen::VectorXd& y() const { return y_; }
-  const Eigen::VectorXd& yp() const { return yp_; }
-  IdaStats stats() const;
+  double t() const override { return t_; }
+  const Eigen::VectorXd& y() const override { return y_; }
+  const Eigen::VectorXd& yp() const override { return yp_; }
+  IntegratorStats stats() const override;
 
  private:
   // Holds the SUNDIALS objects and the private static C trampolines (defined in the .cpp so
@@ -146,7 +86,7 @@ class IdaSolver {
   const DaeProblem& problem_;
   IdaOptions options_;
   std::unique_ptr<Impl> impl_;
-  IdaLinearSolver linear_solver_{IdaLinearSolver::kDense};
+  LinearSolverKind linear_solver_{LinearSolverKind::kDense};
   long jacobian_nonzeros_{0};
   double t_{0.0};
   Eigen::VectorXd y_, yp_;

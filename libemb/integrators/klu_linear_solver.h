@@ -3,7 +3,7 @@
 /// A SUNDIALS linear solver (direct, matrix-based, SUNLINEARSOLVER_CUSTOM) on a
 /// KluFactorization: one symbolic analysis, then per setup one KLU refactorisation checked by
 /// pivot growth, and a full factorisation only when the check fails (policy in
-/// klu_factorization.h). Used by IdaSolver for IdaLinearSolver::kKlu in place of SUNDIALS'
+/// klu_factorization.h). Used by IdaSolver for LinearSolverKind::kKlu in place of SUNDIALS'
 /// SUNLinSol_KLU, which follows most refactorisations of emb's badly scaled GGL matrices with
 /// a condition estimate and a second, full factorisation.
 ///

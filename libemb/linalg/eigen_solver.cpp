@@ -14,6 +14,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
+#include "libemb/linalg/dense_eigen.h"
 #include "libemb/linalg/kronecker_matrix.h"
 #include "libemb/linalg/shift_invert_solver.h"
 
@@ -109,38 +110,30 @@ class CachedMassProduct {
 void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
                           EigenResult& r) {
   Eigen::MatrixXd& Phi = r.vectors;
-  const int m = static_cast<int>(Phi.cols());
   Eigen::MatrixXd KPhi = K * Phi;
   Eigen::MatrixXd MPhi = M * Phi;
-  Eigen::MatrixXd Kr = Phi.transpose() * KPhi;
-  Eigen::MatrixXd Mr = Phi.transpose() * MPhi;
-  Kr = 0.5 * (Kr + Kr.transpose()).eval();
-  Mr = 0.5 * (Mr + Mr.transpose()).eval();
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ges(Kr, Mr);
-  if (ges.info() == Eigen::Success) {  // else keep Spectra's pairs; the checks will judge
-    const Eigen::MatrixXd& Q = ges.eigenvectors();
+  const DenseEigenpairs ritz =
+      SolveDenseEigenpairs(Phi.transpose() * KPhi, Phi.transpose() * MPhi, /*check=*/false);
+  if (ritz.ok) {  // else keep Spectra's pairs; the checks will judge
+    const Eigen::MatrixXd& Q = ritz.vectors;
     Phi = Phi * Q;
     KPhi = KPhi * Q;
     MPhi = MPhi * Q;
-    r.eigenvalues = ges.eigenvalues();
+    r.eigenvalues = ritz.eigenvalues;
   }
-  r.backward_errors.resize(m);
-  const double k1 = NormOne(K), m1 = NormOne(M);
   Eigen::LLT<Eigen::MatrixXd> cct;
-  if (C.rows() > 0) cct.compute(Eigen::MatrixXd(C * C.transpose()));
-  for (int i = 0; i < m; ++i) {
-    const double lam = r.eigenvalues[i];
-    Eigen::VectorXd res_vec = KPhi.col(i) - lam * MPhi.col(i);
-    if (C.rows() > 0) res_vec -= C.transpose() * cct.solve(C * res_vec);
-    const double res = res_vec.norm();
-    const double scale = (k1 + std::abs(lam) * m1) * Phi.col(i).norm();
-    r.backward_errors[i] = scale > 0 ? res / scale : res;
+  ResidualProjection outside_constraints;
+  if (C.rows() > 0) {
+    cct.compute(Eigen::MatrixXd(C * C.transpose()));
+    outside_constraints = [&](Eigen::VectorXd& res) {
+      res -= C.transpose() * cct.solve(C * res);
+    };
   }
-  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  r.max_backward_error =
-      m == 0 ? 0.0 : r.backward_errors.hasNaN() ? kNaN : r.backward_errors.maxCoeff();
-  const Eigen::MatrixXd G = Phi.transpose() * MPhi - Eigen::MatrixXd::Identity(m, m);
-  r.orthonormality_error = m == 0 ? 0.0 : G.hasNaN() ? kNaN : G.cwiseAbs().maxCoeff();
+  const EigenpairCheck check =
+      CheckEigenpairs(Phi, KPhi, MPhi, r.eigenvalues, NormOne(K), NormOne(M), outside_constraints);
+  r.backward_errors = check.backward_errors;
+  r.max_backward_error = check.max_backward_error;
+  r.orthonormality_error = check.orthonormality_error;
 }
 
 // Dense solve; with constraints, on an orthonormal basis Z of null(C) (from a full QR of Cᵀ).
@@ -160,20 +153,19 @@ void SolveDense(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix
     Z = Eigen::MatrixXd(qr.householderQ()).rightCols(K.rows() - rank);
     Kd = (Z.transpose() * Kd * Z).eval();
     Md = (Z.transpose() * Md * Z).eval();
-    Kd = 0.5 * (Kd + Kd.transpose()).eval();
-    Md = 0.5 * (Md + Md.transpose()).eval();
   }
   EMB_THROW_IF(o.num_modes > Kd.rows(), "number of modes: " << o.num_modes
                                             << " requested but the constrained model has only "
                                             << Kd.rows() << " degrees of freedom");
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ges(Kd, Md);
-  if (ges.info() != Eigen::Success) {
+  // Checked below against K and M themselves (RayleighRitzAndCheck).
+  const DenseEigenpairs dense = SolveDenseEigenpairs(Kd, Md, /*check=*/false);
+  if (!dense.ok) {
     r.status = EigenStatus::kFactorizationFailed;
     r.message = "dense generalized eigen-solver failed (M not positive definite?)";
     return;
   }
   // The num_modes eigenvalues nearest σ, reported ascending.
-  const Eigen::VectorXd& all = ges.eigenvalues();
+  const Eigen::VectorXd& all = dense.eigenvalues;
   std::vector<int> idx(all.size());
   for (int i = 0; i < all.size(); ++i) idx[i] = i;
   std::stable_sort(idx.begin(), idx.end(), [&](int a, int b) {
@@ -185,7 +177,7 @@ void SolveDense(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix
   r.vectors.resize(Kd.rows(), o.num_modes);
   for (int k = 0; k < o.num_modes; ++k) {
     r.eigenvalues[k] = all[idx[k]];
-    r.vectors.col(k) = ges.eigenvectors().col(idx[k]);
+    r.vectors.col(k) = dense.vectors.col(idx[k]);
   }
   if (Z.size() > 0) r.vectors = (Z * r.vectors).eval();
   r.num_converged = o.num_modes;
@@ -360,15 +352,10 @@ EigenResult SolveGeneralizedEigen(ShiftInvertSolver& solver, const EigenSolverOp
 
   Stopwatch sw;
   RayleighRitzAndCheck(K, M, C, r);
-  // Written so that NaN fails the check.
-  if (r.status == EigenStatus::kSuccess && !(r.max_backward_error <= o.residual_tolerance &&
-                                             r.orthonormality_error <= 1e-8)) {
-    std::ostringstream m;
-    m << "eigenpair check failed: largest backward error " << r.max_backward_error
-      << " (limit " << o.residual_tolerance << "), M-orthonormality error "
-      << r.orthonormality_error << " (limit 1e-8)";
+  const EigenpairCheck check{r.backward_errors, r.max_backward_error, r.orthonormality_error};
+  if (r.status == EigenStatus::kSuccess && !check.Passed(o.residual_tolerance)) {
     r.status = EigenStatus::kInaccurate;
-    r.message = m.str();
+    r.message = "eigenpair check failed: " + check.Describe(o.residual_tolerance);
   }
   if (o.sturm_check && r.status == EigenStatus::kSuccess) {
     // Count eigenvalues below σ_c, a little below the highest found, by Sylvester's inertia:

@@ -6,9 +6,10 @@
 #include <numbers>
 #include <sstream>
 
+#include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
 #include "libemb/io/hdf5_file.h"
-#include "libemb/mbs/core/system.h"
+#include "libemb/mbs/core/state_layout.h"
 
 namespace emb::scene {
 namespace {
@@ -45,6 +46,12 @@ ResultsStatus ReadStatus(const H5File& h5, const std::string& path) {
 constexpr const char* kSeries[] = {"/state/q",         "/state/v",         "/reactions/force",
                                    "/reactions/torque", "/energy",          "/residuals",
                                    "/forces/load",      "/sensors"};
+// Where a body's values sit in a row of /state/q and /state/v: the layout record the writer
+// stores (version 3), or for version 2 files mbs::StateLayout's, which they were written with.
+struct StateColumns {
+  std::size_t q_stride{mbs::StateLayout::kQPerBody}, position{0}, quaternion{3};
+  std::size_t v_stride{mbs::StateLayout::kVPerBody}, velocity{0}, angular_velocity{3};
+};
 
 struct ResultsFile {
   H5File h5;
@@ -52,6 +59,7 @@ struct ResultsFile {
   std::vector<double> time;
   std::size_t n{0};
   ResultsStatus status;
+  StateColumns state;
 
   explicit ResultsFile(const std::string& path) : h5(path, H5File::Mode::kRead) {
     std::string format;
@@ -81,6 +89,30 @@ struct ResultsFile {
       EMB_THROW_IF(!std::isfinite(time[i]) || (i > 0 && !(time[i] > time[i - 1])),
                    "'" << path << "': /time[" << i << "] = " << time[i]
                        << ": expected finite, increasing sample times (damaged file?)");
+    const mbs::StateLayout layout(2);  // one moving body: its offsets within a block
+    state.quaternion = layout.quaternion(1) - layout.position(1);
+    state.angular_velocity = layout.angular_velocity(1) - layout.velocity(1);
+    // A crafted layout record must not index past a row: small, non-negative numbers only
+    // (the blocks' fit in the rows is checked where they are read).
+    auto column = [&](const char* dataset, const char* name, std::size_t* out) {
+      if (!h5.HasAttribute(dataset, name)) return;
+      const long long v = h5.ReadIntAttribute(dataset, name);
+      EMB_THROW_IF(v < 0 || v > 64, "'" << path << "': " << dataset << " attribute " << name
+                                        << " = " << v << ": expected 0 to 64 (damaged file?)");
+      *out = static_cast<std::size_t>(v);
+    };
+    column("/state/q", "values_per_body", &state.q_stride);
+    column("/state/q", "position_column", &state.position);
+    column("/state/q", "quaternion_column", &state.quaternion);
+    column("/state/v", "values_per_body", &state.v_stride);
+    column("/state/v", "velocity_column", &state.velocity);
+    column("/state/v", "angular_velocity_column", &state.angular_velocity);
+    EMB_THROW_IF(state.position + 3 > state.q_stride || state.quaternion + 4 > state.q_stride ||
+                     state.velocity + 3 > state.v_stride ||
+                     state.angular_velocity + 3 > state.v_stride,
+                 "'" << path << "': the state layout record (values_per_body, *_column) puts a "
+                     << "block outside a body's values; expected blocks within them (damaged "
+                        "file?)");
   }
   /// Column `col` of the [rows, width] dataset `path`, its first n rows.
   std::vector<double> Column(const std::string& path, std::size_t col) const {
@@ -99,13 +131,13 @@ struct ResultsFile {
   std::vector<Eigen::Matrix3d> Rotations(std::size_t body) const {
     const auto shape = h5.Shape("/state/q");
     const std::size_t width = shape.size() == 2 ? shape[1] : 0;
-    EMB_THROW_IF(width < 7 * body + 7 || shape[0] < n,
+    EMB_THROW_IF(width < state.q_stride * body + state.quaternion + 4 || shape[0] < n,
                  "'" << h5.path() << "': /state/q has no quaternion of body " << body
                      << " for every sample (damaged file?)");
     const std::vector<double> q = h5.ReadDoubles("/state/q");
     std::vector<Eigen::Matrix3d> out(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const double* e = &q[i * width + 7 * body + 3];
+      const double* e = &q[i * width + state.q_stride * body + state.quaternion];
       out[i] = Eigen::Quaterniond(e[0], e[1], e[2], e[3]).normalized().toRotationMatrix();
     }
     return out;
@@ -123,7 +155,7 @@ std::size_t FindName(const std::vector<std::string>& names, const std::string& n
                      const std::string& what, const std::string& channel) {
   const auto it = std::find(names.begin(), names.end(), name);
   EMB_THROW_IF(it == names.end(), "channel '" << channel << "': unknown " << what << " '" << name
-                                              << "'" << mbs::DidYouMean(name, names));
+                                              << "'" << DidYouMean(name, names));
   return static_cast<std::size_t>(it - names.begin());
 }
 
@@ -186,15 +218,16 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
                            << "', expected p, v, omega (bodies) or F, T (elements)");
   const std::size_t b = FindName(f.bodies, owner, "body", channel);
   if (quantity == "p") {
-    out.values = f.Column("/state/q", 7 * b + c);
+    out.values = f.Column("/state/q", f.state.q_stride * b + f.state.position + c);
   } else if (quantity == "v") {
-    out.values = f.Column("/state/v", 6 * b + c);
+    out.values = f.Column("/state/v", f.state.v_stride * b + f.state.velocity + c);
   } else {
     // omega_B in the file; the CSV convention is W.
     const auto R = f.Rotations(b);
     std::vector<Eigen::Vector3d> w(f.n);
     for (std::size_t k = 0; k < 3; ++k) {
-      const std::vector<double> col = f.Column("/state/v", 6 * b + 3 + k);
+      const std::vector<double> col =
+          f.Column("/state/v", f.state.v_stride * b + f.state.angular_velocity + k);
       for (std::size_t i = 0; i < f.n; ++i) w[i][static_cast<Eigen::Index>(k)] = col[i];
     }
     out.values.resize(f.n);

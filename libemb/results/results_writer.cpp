@@ -2,6 +2,7 @@
 
 #include <iomanip>
 
+#include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
 #include "libemb/mbs/core/rotation.h"
 
@@ -32,7 +33,7 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
                              const std::string& scene, const std::string& analysis)
     : system_(system), file_(path) {
   file_.SetAttribute("/", "format", std::string("emb-mbs-results"));
-  file_.SetAttribute("/", "version", 2LL);
+  file_.SetAttribute("/", "version", 3LL);
   file_.SetAttribute("/", "units", std::string("SI (m, kg, s, N, rad)"));
   file_.SetAttribute("/", "scene", scene);
   file_.SetAttribute("/", "analysis", analysis);
@@ -61,9 +62,22 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
   file_.WriteDoubles("/model/mass", mass, {static_cast<std::uint64_t>(nb)});
   file_.WriteDoubles("/model/inertia", inertia, {static_cast<std::uint64_t>(nb), 3, 3});
   time_ = file_.AddScalarSeries("/time");
-  q_ = file_.AddSeries("/state/q", 7 * nb);
-  v_ = file_.AddSeries("/state/v", 6 * nb);
-  vdot_ = file_.AddSeries("/state/vdot", 6 * nb);
+  // The rigid-body part of q and v (the modal coordinates follow it in the state and go to
+  // /state/eta): its layout is recorded so that a reader needs no hard-coded widths.
+  const mbs::StateLayout& L = system.layout();
+  const int rigid_nq = L.nq() - L.num_elastic_total(), rigid_nv = L.nv() - L.num_elastic_total();
+  q_ = file_.AddSeries("/state/q", rigid_nq);
+  v_ = file_.AddSeries("/state/v", rigid_nv);
+  vdot_ = file_.AddSeries("/state/vdot", rigid_nv);
+  const long long q_stride = mbs::StateLayout::kQPerBody, v_stride = mbs::StateLayout::kVPerBody;
+  file_.SetAttribute("/state/q", "values_per_body", q_stride);
+  file_.SetAttribute("/state/q", "position_column", 0LL);
+  file_.SetAttribute("/state/q", "quaternion_column",
+                     static_cast<long long>(nb > 0 ? L.quaternion(1) - L.position(1) : 3));
+  file_.SetAttribute("/state/v", "values_per_body", v_stride);
+  file_.SetAttribute("/state/v", "velocity_column", 0LL);
+  file_.SetAttribute("/state/v", "angular_velocity_column",
+                     static_cast<long long>(nb > 0 ? L.angular_velocity(1) - L.velocity(1) : 3));
   euler_ = file_.AddSeries("/state/euler313", 3 * nb);
   lambda_ = file_.AddSeries("/multipliers/lambda", m);
   // Stored as [N, 3 np] rows; the attribute says how to reshape to [N, np, 3].
@@ -82,7 +96,6 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
   residuals_ = file_.AddSeries("/residuals", 2);
   file_.SetAttribute("/residuals", "columns",
                      std::string("max |Phi| (m or rad), max |C v + Phi_t| (m/s or rad/s)"));
-  const mbs::StateLayout& L = system.layout();
   if (L.num_elastic_total() > 0) {
     std::vector<std::string> flexible;
     std::vector<double> counts;
@@ -132,7 +145,8 @@ void ResultsWriter::Write(const mbs::Sample& s) {
     file_.Append(sensors_, rows.data());
   }
   if (eta_ >= 0) {
-    const int rigid_q = 7 * system_.layout().num_moving(), rigid_v = 6 * system_.layout().num_moving();
+    const mbs::StateLayout& L = system_.layout();
+    const int rigid_q = L.nq() - L.num_elastic_total(), rigid_v = L.nv() - L.num_elastic_total();
     file_.Append(eta_, s.q.data() + rigid_q);
     file_.Append(eta_dot_, s.v.data() + rigid_v);
   }
@@ -242,7 +256,7 @@ void CheckChannels(const mbs::System& system, const std::vector<std::string>& ch
   for (const auto& c : channels) {
     const auto it = std::find(valid.begin(), valid.end(), c);
     EMB_THROW_IF(it == valid.end(), "output channel '" << c << "' is unknown"
-                                                       << mbs::DidYouMean(c, valid)
+                                                       << DidYouMean(c, valid)
                                                        << " (channels look like crank.p.x, "
                                                           "main.F.y, energy.total)");
   }

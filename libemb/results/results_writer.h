@@ -10,7 +10,7 @@
 /// "interrupted" (SIGINT/SIGTERM) or "failed" (an error), with `message` and `t_reached`
 /// (the last sample written). Readers warn on anything but "success" (results_reader.h).
 ///
-/// HDF5 layout (format "emb-mbs-results", version 2, SI units; N samples, nb moving bodies,
+/// HDF5 layout (format "emb-mbs-results", version 3, SI units; N samples, nb moving bodies,
 /// m equations, ne constraint elements, np >= ne reaction ports; row-major as h5py shows
 /// it):
 ///   /                   attrs format, version, units, scene, analysis, status, message,
@@ -25,8 +25,12 @@
 ///   /model/removed_equations  names of redundant equations removed (may be empty)
 ///   /model/mass [nb], /model/inertia [nb, 3, 3] (about the CM in B)
 ///   /time               [N] s
-///   /state/q            [N, 7 nb] per body p_WB (m) then e_WB (w, x, y, z)
-///   /state/v            [N, 6 nb] per body v_WB (m/s, in W) then omega_B (rad/s, in B)
+///   /state/q            [N, 7 nb] per body p_WB (m) then e_WB (w, x, y, z); attributes
+///                       values_per_body (7), position_column (0), quaternion_column (3)
+///                       (mbs::StateLayout; version 2 files lack them, same layout)
+///   /state/v            [N, 6 nb] per body v_WB (m/s, in W) then omega_B (rad/s, in B);
+///                       attributes values_per_body (6), velocity_column (0),
+///                       angular_velocity_column (3)
 ///   /state/vdot         [N, 6 nb] time derivative of v
 ///   /state/euler313     [N, 3 nb] per body (psi, theta, phi) rad, seed eq. (1.20)
 ///   /multipliers/lambda [N, m] N or N m

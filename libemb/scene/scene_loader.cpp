@@ -10,12 +10,13 @@
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
 #include "libemb/io/output_path.h"
+#include "libemb/mbs/core/rotation.h"
+#include "libemb/mbs/flexible/beam_part.h"
+#include "libemb/mbs/flexible/flexible_body.h"
 #include "libemb/mbs/forces/applied_load.h"
 #include "libemb/mbs/forces/bushing.h"
-#include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/forces/spring_damper.h"
-#include "libemb/scene/beam_part.h"
-#include "libemb/scene/body_file_part.h"
+#include "libemb/scene/beam_part_reader.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
 #include "libemb/scene/yaml_reader.h"
@@ -26,8 +27,12 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-// Parts read from body files, by part name (for the markers on their interfaces).
-using BodyFileParts = std::map<std::string, BodyFilePart>;
+// Parts of the scene that are not single rigid bodies, by part name (for the markers on
+// their interfaces).
+struct Parts {
+  std::map<std::string, mbs::FlexiblePart> from_body_files;
+  std::map<std::string, mbs::BeamPart> beams;
+};
 
 // A path in the scene relative to the scene file's directory.
 std::string ScenePath(const std::string& file, const std::string& p) {
@@ -35,245 +40,202 @@ std::string ScenePath(const std::string& file, const std::string& p) {
   return (std::filesystem::path(file).parent_path() / p).lexically_normal().string();
 }
 
-BodyFileOptions ReadBodyFileOptions(MapReader& rb, bool flexible) {
-  BodyFileOptions o;
+mbs::FlexibleBodyOptions ReadFlexibleBodyOptions(MapReader& rb, bool flexible) {
+  mbs::FlexibleBodyOptions o;
   o.flexible = flexible;
-  o.max_modes = rb.GetInt("modes", -1, 0, 100000);  // -1 (absent): all
-  o.fmax_hz = rb.GetDouble("fmax_hz", -1.0, NumberRange::Positive("Hz"));  // -1: no limit
+  o.modes.max_modes = rb.GetInt("modes", -1, 0, 100000);  // -1 (absent): all
+  o.modes.fmax_hz = rb.GetDouble("fmax_hz", -1.0, NumberRange::Positive("Hz"));  // -1: no limit
+  o.modes.dynamic_band_hz =
+      rb.GetDouble("dynamic_band_hz", -1.0, NumberRange::Positive("Hz"));  // -1: all dynamic
   if (rb.Has("geometric_stiffening"))
-    o.geometric_stiffening = rb.GetBool("geometric_stiffening", true) ? 1 : 0;
+    o.geometric_stiffening = rb.GetBool("geometric_stiffening", true)
+                                 ? mbs::GeometricStiffening::kOn
+                                 : mbs::GeometricStiffening::kOff;
   else
     rb.Optional("geometric_stiffening");
-  o.expect_mesh_hash = rb.GetString("expect_mesh_hash", "");
   return o;
 }
 
-void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOptions& options,
-                mbs::System* sys, BodyFileParts* parts, std::vector<std::string>* notes,
-                std::vector<std::string>* inputs) {
-  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'bodies': expected a list");
-  for (const auto& node : list) {
-    if (IsBeamPart(node)) {  // model: beam (beam_part.h)
-      try {
-        BeamPartSpec spec = ReadBeamPart(node, file);
-        spec.generation.trust_scripts = options.trust_geo_scripts;
-        inputs->push_back(spec.geometry);
-        AddBeamPart(spec, sys);
-      } catch (const InputError& e) {
-        EMB_THROW(InputError, Where(file, node) << ": " << e.what());
-      }
-      continue;
-    }
-    MapReader r(node, file, "body");
-    mbs::RigidBody b;
-    b.name = r.GetString("name");
-    const std::string what = "body '" + b.name + "'";
-    MapReader rb(node, file, what);
-    rb.GetString("name");
-    const std::string model = rb.GetString("model", "rigid");
-    EMB_THROW_IF(model != "rigid" && model != "cms",
-                 Where(file, node) << ": " << what << " model: expected 'rigid' or 'cms', got '"
-                                   << model << "'");
-    const bool from_file = rb.Has("body_file");
-    EMB_THROW_IF(model == "cms" && !from_file,
-                 Where(file, node) << ": " << what << ": model 'cms' needs a body_file (from "
-                                   << "emb reduce)");
-    const Vector3d position = rb.GetVector3("position", Vector3d::Zero());
-    Matrix3d R = Matrix3d::Identity();
-    if (const YAML::Node o = rb.Optional("orientation"))
-      R = ReadOrientation(o, file, what + " orientation");
-    const bool velocity_given = rb.Has("velocity");
-    b.v_WB = rb.GetVector3("velocity", Vector3d::Zero());
-    b.omega_W = rb.GetVector3("angular_velocity", Vector3d::Zero());
-    try {
-      if (from_file) {
-        for (const char* key : {"mass", "inertia"})
-          EMB_THROW_IF(rb.Has(key), what << ": '" << key << "' comes from the body file; "
-                                         << "remove it");
-        const std::string path = ScenePath(file, rb.GetString("body_file"));
-        inputs->push_back(path);
-        const BodyFileOptions options = ReadBodyFileOptions(rb, model == "cms");
-        // The keys of `model: beam` (beam_part.h) may stay in the entry: one-word switch.
-        for (const char* key : {"geometry", "parameters", "webs", "web_width", "element_length",
-                                "stiffness_damping", "material"})
-          rb.Optional(key);
-        std::vector<double> eta0;
-        if (rb.Has("modal_coordinates")) eta0 = rb.GetDoubles("modal_coordinates");
-        else rb.Optional("modal_coordinates");
-        rb.Finish();
-        b.p_WB = position;
-        BodyFilePart part = LoadBodyFilePart(path, options, position, R, &b);
-        // Without a velocity the part spins about its mesh origin (as beam parts do): the
-        // centre of mass, wherever the mesh puts it, moves with omega x (p_CM - position).
-        if (!velocity_given) b.v_WB = b.omega_W.cross(b.p_WB - position);
-        if (!eta0.empty()) {
-          EMB_THROW_IF(static_cast<int>(eta0.size()) != b.num_modes(),
-                       what << " modal_coordinates: expected " << b.num_modes()
-                            << " initial modal coordinates (the modes kept), got "
-                            << eta0.size());
-          b.eta0 = Eigen::Map<const Eigen::VectorXd>(eta0.data(), eta0.size());
-        }
-        notes->push_back(part.note);
-        (*parts)[b.name] = std::move(part);
-      } else {
-        b.mass = rb.GetDouble("mass");
-        const YAML::Node in = rb.Require("inertia");
-        b.inertia_B = ReadInertia(in, file, what + " inertia");
-        b.p_WB = position;
-        b.R_WB = R;
-        rb.Finish();
-      }
-      sys->AddBody(b);
-    } catch (const InputError& e) {
-      EMB_THROW(InputError, Where(file, node) << ": " << e.what());
-    }
+// A part from a body file (`model: rigid|cms` with `body_file`), built by
+// mbs/flexible/flexible_body.h.
+void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs::System* sys,
+                      Parts* parts, std::vector<std::string>* notes,
+                      std::vector<std::string>* inputs) {
+  const std::string& what = rb.what();
+  for (const char* key : {"mass", "inertia"})
+    EMB_THROW_IF(rb.Has(key), what << ": '" << key << "' comes from the body file; remove it");
+  const std::string name = rb.GetString("name");
+  const std::string path = ScenePath(file, rb.GetString("body_file"));
+  inputs->push_back(path);
+  const mbs::FlexibleBodyOptions options = ReadFlexibleBodyOptions(rb, flexible);
+  const std::string expect_mesh_hash = rb.GetString("expect_mesh_hash", "");
+  mbs::PartPlacement placement;
+  placement.p_WM = rb.GetVector3("position", Vector3d::Zero());
+  if (const YAML::Node o = rb.Optional("orientation"))
+    placement.R_WM = ReadOrientation(o, file, what + " orientation");
+  if (rb.Has("velocity"))
+    placement.v_WB = rb.GetVector3("velocity");
+  else
+    rb.Optional("velocity");
+  placement.omega_W = rb.GetVector3("angular_velocity", Vector3d::Zero());
+  // The keys of `model: beam` (beam_part_reader.h) may stay in the entry: one-word switch.
+  for (const char* key : {"geometry", "parameters", "webs", "web_width", "element_length",
+                          "stiffness_damping", "material"})
+    rb.Optional(key);
+  std::vector<double> eta0;
+  if (rb.Has("modal_coordinates"))
+    eta0 = rb.GetDoubles("modal_coordinates");
+  else
+    rb.Optional("modal_coordinates");
+  rb.Finish();
+  const ReducedBody reduced = mbs::ReadPartBodyFile(path, name, expect_mesh_hash);
+  mbs::FlexibleBodyModel m = mbs::MakeFlexibleBody(name, reduced, path, options, placement);
+  if (!eta0.empty()) {
+    EMB_THROW_IF(static_cast<int>(eta0.size()) != m.part.num_modes(),
+                 what << " modal_coordinates: expected " << m.part.num_modes()
+                      << " initial modal coordinates (the modes kept), got " << eta0.size());
+    m.body.eta0 = Eigen::Map<const Eigen::VectorXd>(eta0.data(), eta0.size());
   }
+  m.part.body = sys->AddBody(m.body);
+  notes->push_back(m.part.note);
+  parts->from_body_files[name] = std::move(m.part);
+}
+
+void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOptions& options,
+                mbs::System* sys, Parts* parts, std::vector<std::string>* notes,
+                std::vector<std::string>* inputs) {
+  ReadNamedList(
+      list, file, "bodies", "body",
+      [&](MapReader& rb, const std::string& name, const YAML::Node& node) {
+        if (IsBeamPart(node)) {  // model: beam (beam_part_reader.h)
+          BeamPartSpec spec = ReadBeamPart(node, file);
+          spec.generation.trust_scripts = options.trust_geo_scripts;
+          inputs->push_back(spec.geometry);
+          parts->beams[name] = mbs::AddBeamPart(
+              sys, name, MakeBeamModelFromGeometry(spec.geometry, spec.generation), spec.placement);
+          return;
+        }
+        const std::string model = rb.GetString("model", "rigid");
+        EMB_THROW_IF(model != "rigid" && model != "cms",
+                     Where(file, node)
+                         << ": " << rb.what() << " model: expected 'rigid' or 'cms', got '" << model
+                         << "'");
+        const bool from_file = rb.Has("body_file");
+        EMB_THROW_IF(model == "cms" && !from_file, Where(file, node)
+                                                       << ": " << rb.what()
+                                                       << ": model 'cms' needs a body_file (from "
+                                                       << "emb reduce)");
+        if (from_file) return ReadBodyFilePart(rb, file, model == "cms", sys, parts, notes, inputs);
+        mbs::RigidBody b;
+        b.name = name;
+        b.p_WB = rb.GetVector3("position", Vector3d::Zero());
+        if (const YAML::Node o = rb.Optional("orientation"))
+          b.R_WB = ReadOrientation(o, file, rb.what() + " orientation");
+        b.v_WB = rb.GetVector3("velocity", Vector3d::Zero());
+        b.omega_W = rb.GetVector3("angular_velocity", Vector3d::Zero());
+        b.mass = rb.GetDouble("mass");
+        b.inertia_B = ReadInertia(rb.Require("inertia"), file, rb.what() + " inertia");
+        rb.Finish();
+        sys->AddBody(b);
+      });
 }
 
 void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* sys,
-                 const BodyFileParts& parts) {
-  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'markers': expected a list");
-  for (const auto& node : list) {
-    MapReader r0(node, file, "marker");
-    const std::string name = r0.GetString("name");
-    MapReader r(node, file, "marker '" + name + "'");
-    r.GetString("name");
-    const std::string body = r.GetString("body");
-    const std::string frame = r.GetString("frame", "body");
-    EMB_THROW_IF(frame != "body" && frame != "world",
-                 Where(file, node) << ": marker '" << name
-                                   << "' frame: expected 'body' or 'world', got '" << frame << "'");
-    const std::string interface = r.GetString("interface", "");
-    EMB_THROW_IF(!interface.empty() && r.Has("position"),
-                 Where(file, node) << ": marker '" << name
-                                   << "': give either an interface or a position, not both");
-    const Vector3d p = r.GetVector3("position", Vector3d::Zero());
-    Matrix3d R = Matrix3d::Identity();
-    if (const YAML::Node o = r.Optional("orientation"))
-      R = ReadOrientation(o, file, "marker '" + name + "' orientation");
-    r.Finish();
-    try {
-      // A beam part (beam_part.h) is no single body: an interface marker goes on the node
-      // body of the part's "<part>.<interface>" marker, with the orientation in part axes.
-      const std::string beam_marker = body + "." + interface;
-      if (!interface.empty() && parts.find(body) == parts.end() &&
-          std::any_of(sys->markers().begin(), sys->markers().end(),
-                      [&](const mbs::Marker& m) { return m.name == beam_marker; })) {
-        const mbs::Marker& m = sys->marker(sys->FindMarker(beam_marker));
-        const mbs::Marker copy = m;
-        sys->AddMarker(name, sys->body(copy.body).name, copy.p_BM, copy.R_BM * R);
-        continue;
-      }
-      const int b = sys->FindBody(body);
-      const mbs::RigidBody& rb = sys->body(b);
-      const auto part = parts.find(body);
-      Vector3d p_BM = p;
-      Matrix3d R_BM = R;
-      if (frame == "world") {  // given at the initial configuration
-        p_BM = rb.R_WB.transpose() * (p - rb.p_WB);
-        R_BM = rb.R_WB.transpose() * R;
-      } else if (part != parts.end()) {  // mesh coordinates
-        p_BM = p - part->second.com_mesh;
-      }
-      if (interface.empty()) {
-        EMB_THROW_IF(rb.elastic != nullptr,
-                     "marker '" << name << "': body '" << body
-                                << "' is flexible; expected `interface: NAME` (a marker must "
-                                   "sit on an interface node to follow the deformation)");
+                 const Parts& parts) {
+  ReadNamedList(
+      list, file, "markers", "marker",
+      [&](MapReader& r, const std::string& name, const YAML::Node& node) {
+        const std::string body = r.GetString("body");
+        const std::string frame = r.GetString("frame", "body");
+        EMB_THROW_IF(frame != "body" && frame != "world",
+                     Where(file, node)
+                         << ": marker '" << name << "' frame: expected 'body' or 'world', got '"
+                         << frame << "'");
+        const std::string interface = r.GetString("interface", "");
+        EMB_THROW_IF(!interface.empty() && r.Has("position"),
+                     Where(file, node) << ": marker '" << name
+                                       << "': give either an interface or a position, not both");
+        const Vector3d p = r.GetVector3("position", Vector3d::Zero());
+        Matrix3d R = Matrix3d::Identity();
+        if (const YAML::Node o = r.Optional("orientation"))
+          R = ReadOrientation(o, file, "marker '" + name + "' orientation");
+        r.Finish();
+        // A beam part is no single body: an interface marker goes on the node body of the
+        // interface, with the orientation in part axes (mbs/flexible/beam_part.h).
+        if (const auto beam = parts.beams.find(body);
+            beam != parts.beams.end() && !interface.empty()) {
+          mbs::AddInterfaceMarker(sys, beam->second, name, interface, R);
+          return;
+        }
+        const int b = sys->FindBody(body);
+        const mbs::RigidBody& rb = sys->body(b);
+        const auto part = parts.from_body_files.find(body);
+        if (!interface.empty()) {
+          EMB_THROW_IF(
+              part == parts.from_body_files.end(),
+              "marker '" << name << "': body '" << body << "' has no body_file, so no interfaces");
+          mbs::AddInterfaceMarker(sys, part->second, name, interface, R);
+          return;
+        }
+        EMB_THROW_IF(
+            rb.elastic != nullptr,
+            "marker '" << name << "': body '" << body
+                       << "' is flexible; expected `interface: NAME` (a marker must sit on "
+                          "an interface node to follow the deformation)");
+        Vector3d p_BM = p;
+        Matrix3d R_BM = R;
+        if (frame == "world") {  // given at the initial configuration
+          p_BM = rb.R_WB.transpose() * (p - rb.p_WB);
+          R_BM = rb.R_WB.transpose() * R;
+        } else if (part != parts.from_body_files.end()) {  // mesh coordinates
+          p_BM = part->second.MeshToBody(p);
+        }
         sys->AddMarker(name, body, p_BM, R_BM);
-        continue;
-      }
-      EMB_THROW_IF(part == parts.end(), "marker '" << name << "': body '" << body
-                                                   << "' has no body_file, so no interfaces");
-      const BodyFilePart& bp = part->second;
-      const int k = bp.FindInterface(body, interface);
-      const Vector3d point = bp.interface_points[k] - bp.com_mesh;
-      if (rb.elastic == nullptr) {
-        sys->AddMarker(name, body, point, R_BM);
-      } else {
-        sys->AddFlexibleMarker(name, body, point, R_BM, bp.interface_shapes.middleRows(6 * k, 3),
-                               bp.interface_shapes.middleRows(6 * k + 3, 3));
-      }
-    } catch (const InputError& e) {
-      EMB_THROW(InputError, Where(file, node) << ": " << e.what());
-    }
-  }
+      });
 }
 
 void ReadJoints(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'joints': expected a list");
-  for (const auto& node : list) {
-    MapReader r0(node, file, "joint");
-    const std::string name = r0.GetString("name");
-    MapReader r(node, file, "joint '" + name + "'");
-    r.GetString("name");
-    const std::string type = r.GetString("type");
-    const std::string i = r.GetString("i"), j = r.GetString("j");
-    r.Finish();
-    try {
-      sys->AddJoint(name, mbs::ParseJointType(type), i, j);
-    } catch (const InputError& e) {
-      EMB_THROW(InputError, Where(file, node) << ": joint '" << name << "': " << e.what());
-    }
-  }
+  ReadNamedList(list, file, "joints", "joint",
+                [&](MapReader& r, const std::string& name, const YAML::Node&) {
+                  const std::string type = r.GetString("type");
+                  const std::string i = r.GetString("i"), j = r.GetString("j");
+                  r.Finish();
+                  sys->AddJoint(name, mbs::ParseJointType(type), i, j);
+                });
 }
 
 void ReadMotions(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'motions': expected a list");
-  for (const auto& node : list) {
-    MapReader r0(node, file, "motion");
-    const std::string name = r0.GetString("name");
-    MapReader r(node, file, "motion '" + name + "'");
-    r.GetString("name");
-    const std::string joint = r.GetString("joint");
-    const mbs::JointCoordinate c = ReadCoordinate(r, "coordinate");
-    const mbs::TimeFunction f =
-        ReadFunction(r.Require("function"), file, "motion '" + name + "' function");
-    r.Finish();
-    try {
-      sys->AddMotion(name, joint, c, f);
-    } catch (const InputError& e) {
-      EMB_THROW(InputError, Where(file, node) << ": motion '" << name << "': " << e.what());
-    }
-  }
+  ReadNamedList(list, file, "motions", "motion",
+                [&](MapReader& r, const std::string& name, const YAML::Node&) {
+                  const std::string joint = r.GetString("joint");
+                  const mbs::JointCoordinate c = ReadCoordinate(r, "coordinate");
+                  const mbs::TimeFunction f =
+                      ReadFunction(r.Require("function"), file, r.what() + " function");
+                  r.Finish();
+                  sys->AddMotion(name, joint, c, f);
+                });
 }
 
 void ReadCouplers(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'couplers': expected a list");
-  for (const auto& node : list) {
-    MapReader r0(node, file, "coupler");
-    const std::string name = r0.GetString("name");
-    MapReader r(node, file, "coupler '" + name + "'");
-    r.GetString("name");
-    const std::string j1 = r.GetString("joint1"), j2 = r.GetString("joint2");
-    const mbs::JointCoordinate c1 = ReadCoordinate(r, "coordinate1");
-    const mbs::JointCoordinate c2 = ReadCoordinate(r, "coordinate2");
-    const double ratio = r.GetDouble("ratio");
-    const double offset = r.GetDouble("offset", 0.0);
-    r.Finish();
-    try {
-      sys->AddCoupler(name, j1, c1, j2, c2, ratio, offset);
-    } catch (const InputError& e) {
-      EMB_THROW(InputError, Where(file, node) << ": coupler '" << name << "': " << e.what());
-    }
-  }
+  ReadNamedList(list, file, "couplers", "coupler",
+                [&](MapReader& r, const std::string& name, const YAML::Node&) {
+                  const std::string j1 = r.GetString("joint1"), j2 = r.GetString("joint2");
+                  const mbs::JointCoordinate c1 = ReadCoordinate(r, "coordinate1");
+                  const mbs::JointCoordinate c2 = ReadCoordinate(r, "coordinate2");
+                  const double ratio = r.GetDouble("ratio");
+                  const double offset = r.GetDouble("offset", 0.0);
+                  r.Finish();
+                  sys->AddCoupler(name, j1, c1, j2, c2, ratio, offset);
+                });
 }
 
 void ReadSensors(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'sensors': expected a list");
-  for (const auto& node : list) {
-    MapReader r0(node, file, "sensor");
-    const std::string name = r0.GetString("name");
-    MapReader r(node, file, "sensor '" + name + "'");
-    r.GetString("name");
-    const std::string i = r.GetString("i"), j = r.GetString("j");
-    r.Finish();
-    try {
-      sys->AddSensor(name, i, j);
-    } catch (const InputError& e) {
-      EMB_THROW(InputError, Where(file, node) << ": sensor '" << name << "': " << e.what());
-    }
-  }
+  ReadNamedList(list, file, "sensors", "sensor",
+                [&](MapReader& r, const std::string& name, const YAML::Node&) {
+                  const std::string i = r.GetString("i"), j = r.GetString("j");
+                  r.Finish();
+                  sys->AddSensor(name, i, j);
+                });
 }
 
 void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::AnalysisSettings* s) {
@@ -298,10 +260,15 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   s->ida.max_num_steps =
       r.GetInt("max_steps", static_cast<int>(s->ida.max_num_steps), 1, 1000000000);
   try {
-    s->ida.linear_solver = ParseIdaLinearSolver(r.GetString("linear_solver", "auto"));
+    s->ida.linear_solver = ParseLinearSolverKind(r.GetString("linear_solver", "auto"));
+    s->integrator = mbs::ParseDynamicIntegrator(r.GetString("integrator", Name(s->integrator)));
   } catch (const InputError& e) {
     EMB_THROW(InputError, Where(file, node) << ": analysis " << e.what());
   }
+  s->rho_inf = r.GetDouble("rho_inf", s->rho_inf);
+  EMB_THROW_IF(!(s->rho_inf >= 0.0 && s->rho_inf <= 1.0),
+               Where(file, node) << ": analysis rho_inf: expected a value in [0, 1], got "
+                                 << s->rho_inf);
   s->remove_redundant = r.GetBool("remove_redundant", s->remove_redundant);
   s->assembly.tolerance =
       r.GetDouble("assembly_tolerance", s->assembly.tolerance, R::Open(0.0, 1.0));
@@ -360,7 +327,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
     scene.system.SetGravity(r.GetVector3("gravity"));
   else
     r.Optional("gravity");
-  BodyFileParts parts;
+  Parts parts;
   scene.inputs.push_back(source);
   ReadBodies(r.Require("bodies"), source, options, &scene.system, &parts, &scene.notes,
              &scene.inputs);

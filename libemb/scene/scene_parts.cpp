@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
 #include "libemb/mbs/forces/applied_load.h"
 #include "libemb/mbs/forces/bushing.h"
@@ -48,6 +49,13 @@ Eigen::Matrix<double, 6, 6> Read6x6(const YAML::Node& n, const std::string& file
                                          << v.size());
   }
   return K;
+}
+
+// A map that must give exactly one of `keys` (a comma-separated list for the message).
+void CheckExactlyOne(int given, const YAML::Node& n, const std::string& file,
+                     const std::string& what, const char* keys) {
+  EMB_THROW_IF(given != 1, Where(file, n) << ": " << what << ": expected exactly one of " << keys
+                                          << "; got " << given);
 }
 
 }  // namespace
@@ -128,10 +136,7 @@ Matrix3d ReadOrientation(const YAML::Node& n, const std::string& file, const std
     r.Optional("x_axis");
   }
   r.Finish();
-  EMB_THROW_IF(given != 1, Where(file, n) << ": " << what
-                                          << ": expected exactly one of euler313, euler313_deg, "
-                                             "quaternion, z_axis; got "
-                                          << given);
+  CheckExactlyOne(given, n, file, what, "euler313, euler313_deg, quaternion, z_axis");
   return R;
 }
 
@@ -196,10 +201,8 @@ mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
     r.Optional("cylinder_pressure");
   }
   r.Finish();
-  EMB_THROW_IF(given != 1, Where(file, n) << ": " << what
-                                          << ": expected exactly one of constant, polynomial, "
-                                             "rpm, harmonic, table, cylinder_pressure; got "
-                                          << given);
+  CheckExactlyOne(given, n, file, what,
+                  "constant, polynomial, rpm, harmonic, table, cylinder_pressure");
   return f;
 }
 
@@ -213,108 +216,97 @@ mbs::JointCoordinate ReadCoordinate(MapReader& r, const std::string& key) {
 }
 
 void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  EMB_THROW_IF(!list.IsSequence(), Where(file, list) << ": 'forces': expected a list");
-  for (const auto& node : list) {
-    MapReader r0(node, file, "force");
-    const std::string name = r0.GetString("name");
-    const std::string what = "force '" + name + "'";
-    MapReader r(node, file, what);
-    r.GetString("name");
+  ReadNamedList(list, file, "forces", "force", [&](MapReader& r, const std::string& name,
+                                                   const YAML::Node&) {
+    const std::string& what = r.what();
     const std::string type = r.GetString("type");
-    try {
-      if (type == "spring-damper" || type == "rotational-spring-damper") {
-        const int i = sys->FindMarker(r.GetString("i")), j = sys->FindMarker(r.GetString("j"));
-        const bool linear = type == "spring-damper";
-        const double k = r.GetDouble("stiffness", 0.0,
-                                     NumberRange::NonNegative(linear ? "N/m" : "N m/rad"));
-        const double c = r.GetDouble("damping", 0.0,
-                                     NumberRange::NonNegative(linear ? "N s/m" : "N m s/rad"));
-        if (linear) {
-          const double l0 = r.GetDouble("free_length", 0.0, NumberRange::NonNegative("m"));
-          sys->AddForceElement(
-              std::make_shared<mbs::TranslationalSpringDamper>(name, i, j, k, c, l0));
-        } else {
-          const double a0 = r.GetDouble("free_angle", 0.0);
-          sys->AddForceElement(std::make_shared<mbs::RotationalSpringDamper>(name, i, j, k, c, a0));
-        }
-      } else if (type == "bushing") {
-        const int i = sys->FindMarker(r.GetString("i")), j = sys->FindMarker(r.GetString("j"));
-        const auto K = Read6x6(r.Require("stiffness"), file, what + " stiffness");
-        Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();
-        if (r.Has("damping"))
-          D = Read6x6(r.Require("damping"), file, what + " damping");
-        else
-          r.Optional("damping");
-        // The seed's choice: damping as a fraction of stiffness, D = beta K, beta in s.
-        if (r.Has("damping_factor"))
-          D += r.GetDouble("damping_factor", NumberRange::NonNegative("s")) * K;
-        else
-          r.Optional("damping_factor");
-        sys->AddForceElement(std::make_shared<mbs::Bushing>(name, i, j, K, D));
-      } else if (type == "journal-bearing") {
-        ReadJournalBearing(r, name, sys);
-      } else if (type == "force" || type == "torque") {
-        const int m = sys->FindMarker(r.GetString("marker"));
-        const std::string frame = r.GetString("frame", "world");
-        EMB_THROW_IF(frame != "world" && frame != "marker",
-                     what << " frame: expected 'world' or 'marker', got '" << frame << "'");
-        const YAML::Node dn = r.Require("direction");
-        const Vector3d dir = UnitAxis(dn, file, what + " direction");
-        const int reaction = r.Has("reaction_marker")
-                                 ? sys->FindMarker(r.GetString("reaction_marker"))
-                                 : (r.Optional("reaction_marker"), -1);
-        const mbs::TimeFunction f = ReadFunction(r.Require("function"), file, what + " function");
-        mbs::LoadArgument arg;
-        if (const YAML::Node an = r.Optional("argument")) {
-          // {joint: name, unit: rad|deg, offset: 0}: the function of a joint's rotation angle;
-          // {i: marker, j: marker, ...}: of the angle of x_I about z_J without a joint.
-          MapReader a(an, file, what + " argument");
-          const bool by_markers = !a.Has("joint") && a.Has("i");
-          const std::string joint = by_markers ? "" : a.GetString("joint");
-          if (by_markers) {
-            arg.marker_i = sys->FindMarker(a.GetString("i"));
-            arg.marker_j = sys->FindMarker(a.GetString("j"));
-          }
-          const std::string unit = a.GetString("unit", "rad");
-          arg.offset = a.GetDouble("offset", 0.0);
-          a.Finish();
-          EMB_THROW_IF(unit != "rad" && unit != "deg", Where(file, an)
-                                                           << ": " << what
-                                                           << " argument unit: expected 'rad' or "
-                                                              "'deg', got '"
-                                                           << unit << "'");
-          if (!by_markers) {
-            const mbs::ConstraintElement& je = sys->elements().at(sys->FindElement(joint));
-            mbs::CoordinateKernel(je.type, mbs::JointCoordinate::kRotation, joint);  // checks
-            arg.marker_i = je.marker_i;
-            arg.marker_j = je.marker_j;
-          }
-          arg.joint_angle = true;
-          arg.scale = unit == "deg" ? 180.0 / std::numbers::pi : 1.0;
-        }
-        sys->AddForceElement(std::make_shared<mbs::AppliedLoad>(
-            name,
-            type == "force" ? mbs::AppliedLoad::Kind::kForce : mbs::AppliedLoad::Kind::kTorque, m,
-            dir,
-            frame == "world" ? mbs::AppliedLoad::Frame::kWorld : mbs::AppliedLoad::Frame::kMarker,
-            f, reaction, arg));
+    if (type == "spring-damper" || type == "rotational-spring-damper") {
+      const int i = sys->FindMarker(r.GetString("i")), j = sys->FindMarker(r.GetString("j"));
+      const bool linear = type == "spring-damper";
+      const double k =
+          r.GetDouble("stiffness", 0.0, NumberRange::NonNegative(linear ? "N/m" : "N m/rad"));
+      const double c =
+          r.GetDouble("damping", 0.0, NumberRange::NonNegative(linear ? "N s/m" : "N m s/rad"));
+      if (linear) {
+        const double l0 = r.GetDouble("free_length", 0.0, NumberRange::NonNegative("m"));
+        sys->AddForceElement(
+            std::make_shared<mbs::TranslationalSpringDamper>(name, i, j, k, c, l0));
       } else {
-        EMB_THROW(InputError,
-                  what << ": unknown type '" << type
-                       << "': expected one of spring-damper, rotational-spring-damper, "
-                          "bushing, journal-bearing, force, torque"
-                       << mbs::DidYouMean(type, {"spring-damper", "rotational-spring-damper",
-                                                 "bushing", "journal-bearing", "force",
-                                                 "torque"}));
+        const double a0 = r.GetDouble("free_angle", 0.0);
+        sys->AddForceElement(std::make_shared<mbs::RotationalSpringDamper>(name, i, j, k, c, a0));
       }
-    } catch (const InputError& e) {
-      const std::string msg = e.what();
-      // Messages from the YAML readers already carry file:line.
-      if (msg.rfind(file, 0) == 0) throw;
-      EMB_THROW(InputError, Where(file, node) << ": " << msg);
+    } else if (type == "bushing") {
+      const int i = sys->FindMarker(r.GetString("i")), j = sys->FindMarker(r.GetString("j"));
+      const auto K = Read6x6(r.Require("stiffness"), file, what + " stiffness");
+      Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();
+      if (r.Has("damping"))
+        D = Read6x6(r.Require("damping"), file, what + " damping");
+      else
+        r.Optional("damping");
+      // The seed's choice: damping as a fraction of stiffness, D = beta K, beta in s.
+      if (r.Has("damping_factor"))
+        D += r.GetDouble("damping_factor", NumberRange::NonNegative("s")) * K;
+      else
+        r.Optional("damping_factor");
+      sys->AddForceElement(std::make_shared<mbs::Bushing>(name, i, j, K, D));
+    } else if (type == "journal-bearing") {
+      ReadJournalBearing(r, name, sys);
+    } else if (type == "force" || type == "torque") {
+      const int m = sys->FindMarker(r.GetString("marker"));
+      const std::string frame = r.GetString("frame", "world");
+      EMB_THROW_IF(frame != "world" && frame != "marker",
+                   what << " frame: expected 'world' or 'marker', got '" << frame << "'");
+      const YAML::Node dn = r.Require("direction");
+      const Vector3d dir = UnitAxis(dn, file, what + " direction");
+      const int reaction = r.Has("reaction_marker")
+                               ? sys->FindMarker(r.GetString("reaction_marker"))
+                               : (r.Optional("reaction_marker"), -1);
+      const mbs::TimeFunction f = ReadFunction(r.Require("function"), file, what + " function");
+      mbs::LoadArgument arg;
+      if (const YAML::Node an = r.Optional("argument")) {
+        // {joint: name, unit: rad|deg, offset: 0}: the function of a joint's rotation angle;
+        // {i: marker, j: marker, ...}: of the angle of x_I about z_J without a joint.
+        MapReader a(an, file, what + " argument");
+        const bool by_markers = !a.Has("joint") && a.Has("i");
+        const std::string joint = by_markers ? "" : a.GetString("joint");
+        if (by_markers) {
+          arg.marker_i = sys->FindMarker(a.GetString("i"));
+          arg.marker_j = sys->FindMarker(a.GetString("j"));
+        }
+        const std::string unit = a.GetString("unit", "rad");
+        arg.offset = a.GetDouble("offset", 0.0);
+        a.Finish();
+        EMB_THROW_IF(unit != "rad" && unit != "deg", Where(file, an)
+                                                         << ": " << what
+                                                         << " argument unit: expected 'rad' or "
+                                                            "'deg', got '"
+                                                         << unit << "'");
+        if (!by_markers) {
+          const mbs::ConstraintElement& je = sys->elements().at(sys->FindElement(joint));
+          mbs::CoordinateKernel(je.type, mbs::JointCoordinate::kRotation, joint);  // checks
+          arg.marker_i = je.marker_i;
+          arg.marker_j = je.marker_j;
+        }
+        arg.joint_angle = true;
+        arg.scale = unit == "deg" ? 180.0 / std::numbers::pi : 1.0;
+      }
+      sys->AddForceElement(std::make_shared<mbs::AppliedLoad>(
+          name,
+          type == "force" ? mbs::AppliedLoad::Kind::kForce : mbs::AppliedLoad::Kind::kTorque, m,
+          dir,
+          frame == "world" ? mbs::AppliedLoad::Frame::kWorld : mbs::AppliedLoad::Frame::kMarker,
+          f, reaction, arg));
+    } else {
+      EMB_THROW(InputError,
+                what << ": unknown type '" << type
+                     << "': expected one of spring-damper, rotational-spring-damper, "
+                        "bushing, journal-bearing, force, torque"
+                     << DidYouMean(type, {"spring-damper", "rotational-spring-damper",
+                                               "bushing", "journal-bearing", "force",
+                                               "torque"}));
     }
     r.Finish();
-  }
+  });
 }
 
 }  // namespace emb::scene

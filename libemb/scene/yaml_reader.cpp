@@ -3,8 +3,8 @@
 #include <cmath>
 #include <map>
 
+#include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
-#include "libemb/mbs/core/system.h"
 
 namespace emb::scene {
 
@@ -12,6 +12,19 @@ std::string Where(const std::string& file, const YAML::Node& node) {
   const YAML::Mark m = node.Mark();
   if (m.line < 0) return file;
   return file + ":" + std::to_string(m.line + 1);
+}
+
+void ThrowNotAList(const YAML::Node& list, const std::string& file, const std::string& section) {
+  EMB_THROW(InputError, Where(file, list) << ": '" << section << "': expected a list");
+}
+
+void RethrowWithPlace(const InputError& e, const std::string& file, const YAML::Node& node,
+                      const std::string& kind, const std::string& name) {
+  const std::string msg = e.what();
+  if (msg.rfind(file, 0) == 0) throw e;  // a YAML reader's message: file:line already
+  const bool named = msg.find("'" + name + "'") != std::string::npos;
+  EMB_THROW(InputError,
+            Where(file, node) << ": " << (named ? "" : kind + " '" + name + "': ") << msg);
 }
 
 MapReader::MapReader(const YAML::Node& node, std::string file, std::string what)
@@ -37,9 +50,9 @@ YAML::Node MapReader::Require(const std::string& key) {
     // A typo of the required key is more helpful to name than the missing key alone.
     for (const auto& kv : node_) {
       const std::string other = kv.first.Scalar();
-      if (!mbs::DidYouMean(other, {key}).empty())
+      if (!DidYouMean(other, {key}).empty())
         EMB_THROW(InputError, Where(file_, kv.first) << ": " << what_ << ": unknown key '" << other
-                                                     << "'" << mbs::DidYouMean(other, {key}));
+                                                     << "'" << DidYouMean(other, {key}));
     }
     EMB_THROW(InputError, Where(file_, node_)
                               << ": " << what_ << ": missing required key '" << key << "'");
@@ -167,7 +180,7 @@ void MapReader::Finish() const {
     if (!known_.count(key)) {
       const std::vector<std::string> cands(known_.begin(), known_.end());
       EMB_THROW(InputError, Where(file_, kv.first) << ": " << what_ << ": unknown key '" << key
-                                                   << "'" << mbs::DidYouMean(key, cands));
+                                                   << "'" << DidYouMean(key, cands));
     }
   }
 }

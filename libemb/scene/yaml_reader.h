@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "libemb/common/number_check.h"
+#include "libemb/common/error.h"
 
 namespace emb::scene {
 
@@ -65,6 +66,38 @@ class MapReader {
 /// anywhere under `root` that holds a key twice (yaml-cpp keeps both and reads the first,
 /// so a second value would be ignored without a word).
 void CheckUniqueKeys(const YAML::Node& root, const std::string& file);
+
+/// "file:line: '<section>': expected a list" as an InputError.
+[[noreturn]] void ThrowNotAList(const YAML::Node& list, const std::string& file,
+                                const std::string& section);
+/// ReadNamedList's re-throw of the error of entry `name` of kind `kind` (see there).
+[[noreturn]] void RethrowWithPlace(const InputError& e, const std::string& file,
+                                   const YAML::Node& node, const std::string& kind,
+                                   const std::string& name);
+
+/// Reads `list`, the scene section `section` ("joints", "sensors", ...): a list of maps, each
+/// with a `name`. For each entry `read(r, name, node)` gets a MapReader named
+/// "<kind> '<name>'" whose `name` key is read (the callback reads the rest and calls
+/// r.Finish()). An InputError from the callback that does not already start with the file
+/// (the YAML readers' messages say file:line) is re-thrown as "file:line: <message>", with
+/// "<kind> '<name>': " in front unless the message quotes the name already.
+/// @throws InputError "file:line: '<section>': expected a list" if `list` is not a list.
+template <class Read>
+void ReadNamedList(const YAML::Node& list, const std::string& file, const std::string& section,
+                   const std::string& kind, Read&& read) {
+  if (!list.IsSequence()) ThrowNotAList(list, file, section);
+  for (const auto& node : list) {
+    MapReader r0(node, file, kind);
+    const std::string name = r0.GetString("name");
+    MapReader r(node, file, kind + " '" + name + "'");
+    r.GetString("name");
+    try {
+      read(r, name, node);
+    } catch (const InputError& e) {
+      RethrowWithPlace(e, file, node, kind, name);
+    }
+  }
+}
 
 /// Scalar conversions with file:line in the message.
 double AsDouble(const YAML::Node& n, const std::string& file, const std::string& what);

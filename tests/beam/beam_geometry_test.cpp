@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "libemb/beam/beam_assembly.h"
 #include "libemb/beam/beam_modal.h"
@@ -21,6 +22,7 @@
 #include "tests/support/beam_models.h"
 #include "libemb/fe/mass_properties.h"
 #include "libemb/mesh/gmsh_reader.h"
+#include "tests/support/temp_dir.h"
 #include "tests/support/timoshenko_beam.h"
 
 namespace emb {
@@ -181,7 +183,8 @@ TEST(BeamGeometry, TubeIsAChainOfTubeBeams) {
 
 // Writes a small OpenCASCADE .geo next to the test binary.
 std::string WriteGeo(const std::string& name, const std::string& body) {
-  const std::string path = std::string(EMB_BINARY_DIR) + "/" + name;
+  static const testing::ScopedTempDir dir("emb_beam_geometry");
+  const std::string path = dir.File(name);
   std::ofstream(path) << "SetFactory(\"OpenCASCADE\");\n" << body;
   return path;
 }
@@ -282,6 +285,40 @@ TEST(BeamGeometry, ElasticWebsAreRadialArms) {
   BeamGenerationOptions bad = elastic_o;
   bad.web_width = -0.01;
   EXPECT_THROW(MakeBeamModelFromGeometry(kCrank, bad), InputError);
+}
+
+// The geometry's surface groups (the interfaces of the 3-D model) name beam nodes: each at the
+// node nearest to the group's area centroid, which for these parts is the node itself (the
+// centroid of a full cylindrical surface is on its axis at mid-length, that of an end face on
+// the axis at the end).
+TEST(BeamGeometry, SurfaceGroupsNameTheirInterfaceNodes) {
+  // OpenCASCADE's surface integrals are exact to ~1e-12 of the part's size.
+  constexpr double kCentroidTolerance = 1e-9;  // [m]
+  auto expect = [&](const GeneratedBeamModel& g, const std::map<std::string, std::string>& want) {
+    std::map<std::string, std::string> got;
+    for (const BeamInterface& i : g.interfaces) {
+      got[i.name] = g.model.nodes()[i.node].name;
+      EXPECT_LT(i.offset_W.norm(), kCentroidTolerance) << i.name;
+      EXPECT_LT((g.model.nodes()[i.node].p_W + i.offset_W - i.centroid_W).norm(), 1e-15) << i.name;
+    }
+    EXPECT_EQ(got, want);
+  };
+  std::map<std::string, std::string> crank{{"nose", "nose"}, {"flange", "flange:end"}};
+  for (int k = 1; k <= 5; ++k) crank["main_journal_" + std::to_string(k)] = "main_journal_" + std::to_string(k);
+  for (int i = 1; i <= 4; ++i) crank["crankpin_" + std::to_string(i)] = "crankpin_" + std::to_string(i);
+  expect(MakeBeamModelFromGeometry(kCrank), crank);
+  BeamGenerationOptions elastic;
+  elastic.webs = WebModel::kElastic;
+  expect(MakeBeamModelFromGeometry(kCrank, elastic), crank);
+  expect(MakeBeamModelFromGeometry(kTube), {{"end_a", "tube:start"},
+                                            {"end_b", "tube:end"},
+                                            {"outer", "tube"},
+                                            {"inner", "tube"}});
+  // A geometry without surface groups has no interfaces.
+  const std::string bare = WriteGeo("beam_bare.geo",
+                                    "Cylinder(1) = {0, 0, 0, 0.1, 0, 0, 0.02};\n"
+                                    "Physical Volume(\"beam_segment_a\") = {1};\n");
+  EXPECT_TRUE(MakeBeamModelFromGeometry(bare).interfaces.empty());
 }
 
 }  // namespace

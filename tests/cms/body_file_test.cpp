@@ -11,6 +11,7 @@
 #include "libemb/common/error.h"
 #include "libemb/fe/assembly.h"
 #include "libemb/mesh/box_mesh.h"
+#include "tests/support/temp_dir.h"
 
 namespace emb {
 namespace {
@@ -33,7 +34,7 @@ struct Fixture {
 };
 
 std::string TempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("emb_body_" + name)).string();
+  return testing::ProcessTempDir().File("body_" + name);
 }
 
 template <typename A, typename B>

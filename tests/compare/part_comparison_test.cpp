@@ -14,6 +14,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/compare/comparison_report.h"
+#include "tests/support/temp_dir.h"
 
 namespace emb {
 namespace {
@@ -89,10 +90,8 @@ TEST(PartComparison, CrankshaftFreeFreeAndReport) {
   // The rigid-web beam is far too stiff (the known finding): its first mode is well above.
   EXPECT_GT(Route(c, "beam lumped, rigid webs").Error(c.reference, 0), 0.5);
 
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "emb_part_comparison_test";
-  std::filesystem::create_directories(dir);
-  const std::string csv = (dir / "r.csv").string(), md = (dir / "r.md").string();
+  const testing::ScopedTempDir dir("emb_part_comparison");
+  const std::string csv = dir.File("r.csv"), md = dir.File("r.md");
   WriteComparisonCsv(c, csv);
   WriteComparisonMarkdown(c, md, {"r_error_vs_mode.png"});
   std::ifstream in(csv);
@@ -108,7 +107,6 @@ TEST(PartComparison, CrankshaftFreeFreeAndReport) {
   for (const char* section : {"## Routes", "## Frequency error per mode", "## 3-D modes a beam",
                               "![r_error_vs_mode.png]"})
     EXPECT_NE(text.str().find(section), std::string::npos) << section;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(PartComparison, CrankshaftInstalled) {

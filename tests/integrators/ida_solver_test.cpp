@@ -71,7 +71,7 @@ double ErrorAt(double rtol, bool analytic) {
   o.rtol = rtol;
   o.atol = rtol * 1e-2;
   IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
-  const IdaReport r = ida.AdvanceTo(1.0);
+  const IntegratorReport r = ida.AdvanceTo(1.0);
   EXPECT_TRUE(r.ok()) << r.message;
   EXPECT_DOUBLE_EQ(ida.t(), 1.0);
   return std::abs(ida.y()[0] - std::exp(-kRate));
@@ -98,7 +98,7 @@ TEST(IdaSolver, KluLinearSolverAgreesWithDense) {
   IdaOptions o;
   o.rtol = 1e-8;
   o.atol = 1e-10;
-  o.linear_solver = IdaLinearSolver::kKlu;
+  o.linear_solver = LinearSolverKind::kKlu;
   IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
   ASSERT_TRUE(ida.AdvanceTo(1.0).ok());
   EXPECT_LT(std::abs(ida.y()[0] - std::exp(-kRate)), 1e-7);
@@ -115,13 +115,13 @@ TEST(IdaSolver, KluOnTheProblemsSparseMatrix) {
   IdaOptions o;
   o.rtol = 1e-8;
   o.atol = 1e-10;
-  o.linear_solver = IdaLinearSolver::kKlu;
+  o.linear_solver = LinearSolverKind::kKlu;
   IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
   EXPECT_EQ(ida.jacobian_nonzeros(), 3);
   ASSERT_TRUE(ida.AdvanceTo(1.0).ok());
   EXPECT_LT(std::abs(ida.y()[0] - std::exp(-kRate)), 1e-7);
   EXPECT_GT(dae.sparse_calls, 1);
-  EXPECT_EQ(ida.linear_solver(), IdaLinearSolver::kKlu);
+  EXPECT_EQ(ida.linear_solver(), LinearSolverKind::kKlu);
 }
 
 TEST(IdaSolver, KluCountsFactorisationsAndMatchesDense) {
@@ -133,15 +133,15 @@ TEST(IdaSolver, KluCountsFactorisationsAndMatchesDense) {
   o.rtol = kRtol;
   o.atol = 1e-10;
   const Eigen::Vector2d y0(1.0, 1.0), yp0(-kRate, 0.0);
-  o.linear_solver = IdaLinearSolver::kDense;
+  o.linear_solver = LinearSolverKind::kDense;
   IdaSolver dense(dae, 0.0, y0, yp0, o);
-  o.linear_solver = IdaLinearSolver::kKlu;
+  o.linear_solver = LinearSolverKind::kKlu;
   IdaSolver klu(dae, 0.0, y0, yp0, o);
   ASSERT_TRUE(dense.AdvanceTo(1.0).ok());
   ASSERT_TRUE(klu.AdvanceTo(1.0).ok());
   // Both are within ~10 rtol of the closed form (first test), so of each other.
   EXPECT_LT((klu.y() - dense.y()).cwiseAbs().maxCoeff(), 20.0 * kRtol);
-  const IdaStats d = dense.stats(), k = klu.stats();
+  const IntegratorStats d = dense.stats(), k = klu.stats();
   EXPECT_EQ(d.full_factorizations, d.jacobian_evals);
   EXPECT_EQ(d.refactorizations, 0);
   EXPECT_EQ(k.full_factorizations + k.refactorizations, k.jacobian_evals);
@@ -158,17 +158,17 @@ TEST(IdaSolver, SingularIterationMatrixIsRecoverable) {
   constexpr double kSingularFrom = 0.5;
   DecayDae dae(true, false, /*sparse=*/true);
   dae.singular_from = kSingularFrom;
-  IdaReport reports[2];
-  for (IdaLinearSolver ls : {IdaLinearSolver::kDense, IdaLinearSolver::kKlu}) {
+  IntegratorReport reports[2];
+  for (LinearSolverKind ls : {LinearSolverKind::kDense, LinearSolverKind::kKlu}) {
     IdaOptions o;
     o.linear_solver = ls;
     IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
-    const IdaReport r = ida.AdvanceTo(1.0);
-    EXPECT_EQ(r.status, IdaStatus::kConvergenceFailure) << Name(ls) << ": " << r.message;
+    const IntegratorReport r = ida.AdvanceTo(1.0);
+    EXPECT_EQ(r.status, IntegratorStatus::kConvergenceFailure) << Name(ls) << ": " << r.message;
     EXPECT_GT(r.t, kSingularFrom) << Name(ls);
     EXPECT_LT(r.t, 1.0) << Name(ls);
     EXPECT_GT(ida.stats().nonlinear_convergence_failures, 0) << Name(ls);
-    reports[ls == IdaLinearSolver::kKlu] = r;
+    reports[ls == LinearSolverKind::kKlu] = r;
   }
   // The KLU report names the cause.
   EXPECT_NE(reports[1].message.find("singular"), std::string::npos) << reports[1].message;
@@ -178,12 +178,12 @@ TEST(IdaSolver, AutoPicksKluOnlyForLargeSparseProblems) {
   const DecayDae sparse(true, false, true), dense_only(true);
   IdaOptions o;  // kAuto
   const Eigen::Vector2d y0(1.0, 1.0), yp0(-kRate, 0.0);
-  EXPECT_EQ(IdaSolver(sparse, 0.0, y0, yp0, o).linear_solver(), IdaLinearSolver::kDense);
+  EXPECT_EQ(IdaSolver(sparse, 0.0, y0, yp0, o).linear_solver(), LinearSolverKind::kDense);
   o.sparse_min_size = 2;
-  EXPECT_EQ(IdaSolver(sparse, 0.0, y0, yp0, o).linear_solver(), IdaLinearSolver::kKlu);
-  EXPECT_EQ(IdaSolver(dense_only, 0.0, y0, yp0, o).linear_solver(), IdaLinearSolver::kDense);
-  EXPECT_EQ(ParseIdaLinearSolver("klu"), IdaLinearSolver::kKlu);
-  EXPECT_THROW(ParseIdaLinearSolver("umfpack"), InputError);
+  EXPECT_EQ(IdaSolver(sparse, 0.0, y0, yp0, o).linear_solver(), LinearSolverKind::kKlu);
+  EXPECT_EQ(IdaSolver(dense_only, 0.0, y0, yp0, o).linear_solver(), LinearSolverKind::kDense);
+  EXPECT_EQ(ParseLinearSolverKind("klu"), LinearSolverKind::kKlu);
+  EXPECT_THROW(ParseLinearSolverKind("umfpack"), InputError);
 }
 
 TEST(IdaSolver, PerComponentTolerances) {
@@ -205,7 +205,7 @@ TEST(IdaSolver, AlgebraicComponentFollows) {
   ASSERT_TRUE(ida.AdvanceTo(0.7).ok());
   // The algebraic equation holds to IDA's Newton tolerance, a fraction of rtol (1e-6).
   EXPECT_NEAR(ida.y()[1], ida.y()[0] * ida.y()[0], 1e-6 * 0.1);
-  const IdaStats s = ida.stats();
+  const IntegratorStats s = ida.stats();
   EXPECT_GT(s.steps, 0);
   EXPECT_GT(s.residual_evals, s.steps);
 }
@@ -217,8 +217,8 @@ TEST(IdaSolver, TooMuchWorkIsAStatusWithTimeAndComponent) {
   o.rtol = 1e-10;
   o.atol = 1e-12;
   IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
-  const IdaReport r = ida.AdvanceTo(10.0);
-  EXPECT_EQ(r.status, IdaStatus::kTooMuchWork);
+  const IntegratorReport r = ida.AdvanceTo(10.0);
+  EXPECT_EQ(r.status, IntegratorStatus::kTooMuchWork);
   EXPECT_GT(r.t, 0.0);
   EXPECT_LT(r.t, 10.0);
   EXPECT_GT(r.last_step, 0.0);

@@ -12,6 +12,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/io/atomic_file.h"
+#include "tests/support/temp_dir.h"
 
 namespace emb {
 namespace {
@@ -19,7 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path TempPath(const std::string& name) {
-  return fs::temp_directory_path() / ("emb_h5_" + std::to_string(::getpid()) + "_" + name);
+  return testing::ProcessTempDir().path() / ("h5_" + name);
 }
 
 TEST(H5File, RoundTripIsBitForBit) {

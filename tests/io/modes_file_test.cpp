@@ -15,6 +15,7 @@
 #include "libemb/io/hdf5_file.h"
 #include "libemb/io/mesh_io.h"
 #include "libemb/mesh/box_mesh.h"
+#include "tests/support/temp_dir.h"
 
 namespace emb {
 namespace {
@@ -29,9 +30,8 @@ TEST(ModesFile, WritesTheDocumentedSchema) {
   mo.num_modes = 10;
   const ModalResult modes = ComputeModes(sys, mo);
   ASSERT_TRUE(modes.eig.ok());
-  const fs::path dir = fs::temp_directory_path() / ("emb_modes_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string h5 = (dir / "box.h5").string(), xdmf = (dir / "box.xdmf").string();
+  const testing::ScopedTempDir dir("emb_modes");
+  const std::string h5 = dir.File("box.h5"), xdmf = dir.File("box.xdmf");
   WriteModesFile(h5, xdmf, mesh, steel, modes, {"emb modes box", "box", sys.mesh_hash, "x=1"});
 
   H5File f(h5, H5File::Mode::kRead);
@@ -61,7 +61,6 @@ TEST(ModesFile, WritesTheDocumentedSchema) {
   for (auto it = std::sregex_iterator(s.begin(), s.end(), ref); it != std::sregex_iterator(); ++it, ++refs)
     EXPECT_TRUE(f.Exists((*it)[1])) << (*it)[1];
   EXPECT_EQ(refs, 3 * 10);  // topology, geometry, field for each mode
-  fs::remove_all(dir);
 }
 
 }  // namespace

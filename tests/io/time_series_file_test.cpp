@@ -9,13 +9,14 @@
 
 #include "libemb/common/error.h"
 #include "libemb/io/hdf5_file.h"
+#include "tests/support/temp_dir.h"
 
 namespace emb {
 namespace {
 
 TEST(TimeSeriesFile, AppendsRowsScalarsAndEmptyRows) {
-  const std::string path =
-      (std::filesystem::temp_directory_path() / "emb_time_series_test.h5").string();
+  const testing::ScopedTempDir dir("emb_time_series");
+  const std::string path = dir.File("series.h5");
   {
     TimeSeriesFile f(path);
     const int t = f.AddScalarSeries("/time");

@@ -7,8 +7,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 
 #include "libemb/common/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace emb {
 namespace {
@@ -17,13 +19,12 @@ namespace fs = std::filesystem;
 
 class GmshReaderTest : public ::testing::Test {
  protected:
+  // A fresh, unique directory per test (mkdtemp), removed after it.
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("emb_gmsh_reader_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
+    tmp_ = std::make_unique<testing::ScopedTempDir>("emb_gmsh_reader");
+    dir_ = tmp_->path();
   }
-  void TearDown() override { fs::remove_all(dir_); }
+  void TearDown() override { tmp_.reset(); }
   std::string Write(const std::string& name, const std::string& text) {
     const fs::path p = dir_ / name;
     std::ofstream(p) << text;
@@ -39,6 +40,7 @@ class GmshReaderTest : public ::testing::Test {
       for (const auto& w : words) EXPECT_NE(std::string(e.what()).find(w), std::string::npos) << e.what();
     }
   }
+  std::unique_ptr<testing::ScopedTempDir> tmp_;
   fs::path dir_;
 };
 

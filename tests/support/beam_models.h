@@ -1,11 +1,10 @@
 #pragma once
 // Beam models and helpers used by several beam tests (test support).
 
-#include <functional>
 #include <string>
 
 #include "libemb/beam/beam_model.h"
-#include "libemb/common/error.h"
+#include "tests/support/input_error.h"
 
 namespace emb::test {
 
@@ -33,16 +32,6 @@ inline BeamModel MakeUniformShaft(double length, const BeamSection& section, int
   }
   if (clamped) model.AddSupport({"clamp", 0, {true, true, true, true, true, true}});
   return model;
-}
-
-// The message of the InputError `f` throws, or "(no InputError)".
-inline std::string InputErrorMessage(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
 }
 
 }  // namespace emb::test

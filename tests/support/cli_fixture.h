@@ -8,8 +8,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
+
+#include "tests/support/temp_dir.h"
 
 namespace emb::test {
 
@@ -20,14 +23,13 @@ struct CliResult {
 
 class CliTest : public ::testing::Test {
  protected:
+  // A fresh, unique directory per test (mkdtemp), removed after it.
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("emb_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_suite()->name()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
+    tmp_ = std::make_unique<testing::ScopedTempDir>(
+        "emb_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = tmp_->path();
   }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
+  void TearDown() override { tmp_.reset(); }
 
   // Runs `emb ARGS` (EMB_EXE) with the test's directory as working directory.
   CliResult Run(const std::string& args) const {
@@ -65,6 +67,7 @@ Physical Volume("bar") = {1};
 Mesh.MeshSizeMax = h;
 )";
   }
+  std::unique_ptr<testing::ScopedTempDir> tmp_;
   std::filesystem::path dir_;
 };
 

@@ -1,9 +1,9 @@
 #pragma once
-// A reduced flexible bar (Craig–Bampton body file) for the flexible-body tests: a steel box
-// beam along x, L x b x h, meshed with Hex20, interfaces on its end faces, written once per
-// process and parameter set to the temp directory.
+// A reduced flexible bar (Craig–Bampton) for the flexible-body tests: a steel box beam along
+// x, L x b x h, meshed with Hex20, interfaces on its end faces (test support). FlexibleBar()
+// reduces it once per process and parameter set; FlexibleBarFile() writes that body to a body
+// file in the process's temporary directory (for the scene tests).
 
-#include <filesystem>
 #include <map>
 #include <sstream>
 #include <string>
@@ -12,6 +12,7 @@
 #include "libemb/cms/body_file.h"
 #include "libemb/fe/assembly.h"
 #include "libemb/mesh/box_mesh.h"
+#include "tests/support/temp_dir.h"
 
 namespace emb::testing {
 
@@ -23,11 +24,12 @@ struct BarSpec {
   std::vector<std::string> stiffening_supports;  ///< held in the K_G load cases; empty: all
   double youngs_modulus{210e9};
   double damping_ratio{0.0};
+  bool keep_mesh_shapes{false};  ///< also Φ at every mesh node (ReducedBody::mesh_shapes)
 
   std::string Key() const {
     std::ostringstream k;
     k << length << "_" << width << "_" << height << "_" << nx << ny << nz << "_" << modes << "_"
-      << youngs_modulus << "_" << damping_ratio;
+      << youngs_modulus << "_" << damping_ratio << (keep_mesh_shapes ? "_shapes" : "");
     for (const auto& i : interfaces) k << "_" << i;
     for (const auto& i : stiffening_supports) k << "_held-" << i;
     std::string s = k.str();
@@ -35,34 +37,62 @@ struct BarSpec {
       if (c == ':' || c == '@' || c == ',') c = '-';
     return s;
   }
+  Mesh MakeMesh() const {
+    return MakeBoxMesh({length, width, height}, {nx, ny, nz}, CellType::kHex20);
+  }
+  IsotropicMaterial Material() const {
+    IsotropicMaterial material;
+    material.youngs_modulus = youngs_modulus;
+    return material;
+  }
 };
 
-/// Path of the body file for `spec` (created on first use in this process).
-inline std::string FlexibleBarFile(const BarSpec& spec) {
-  static std::map<std::string, std::string> made;
+/// Marker axes with z along `z` and x along `x` made perpendicular to it (both unit), as a
+/// scene's {z_axis, x_axis} gives them; without x, the world axis least aligned with z,
+/// projected (the scene's choice).
+inline Eigen::Matrix3d Axes(const Eigen::Vector3d& z, const Eigen::Vector3d& x = Eigen::Vector3d::Zero()) {
+  Eigen::Vector3d xa = x;
+  if (xa.isZero()) {
+    Eigen::Index k = 0;
+    z.cwiseAbs().minCoeff(&k);
+    xa = Eigen::Vector3d::Unit(k);
+  }
+  xa = (xa - xa.dot(z) * z).normalized();
+  Eigen::Matrix3d R;
+  R << xa, z.cross(xa), z;
+  return R;
+}
+
+/// The reduced bar for `spec` (reduced on first use in this process).
+inline const ReducedBody& FlexibleBar(const BarSpec& spec) {
+  static std::map<std::string, ReducedBody> made;
   const std::string key = spec.Key();
   if (auto it = made.find(key); it != made.end()) return it->second;
-  const Mesh mesh = MakeBoxMesh({spec.length, spec.width, spec.height},
-                                {spec.nx, spec.ny, spec.nz}, CellType::kHex20);
-  IsotropicMaterial material;
-  material.youngs_modulus = spec.youngs_modulus;
+  const Mesh mesh = spec.MakeMesh();
+  const IsotropicMaterial material = spec.Material();
   const SystemMatrices sys = AssembleSystem(mesh, material);
   ReductionJob job;
   for (const auto& i : spec.interfaces) job.interfaces.push_back(InterfaceSpec::Parse(i));
   job.reduction.selection.count = spec.modes;
   job.certificate.reference = false;
   job.damping.ratio = spec.damping_ratio;
-  job.keep_mesh_shapes = false;
+  job.keep_mesh_shapes = spec.keep_mesh_shapes;
   job.stiffening_supports = spec.stiffening_supports;
-  const ReducedBody body = ReduceBody(mesh, sys, material, job);
+  return made[key] = ReduceBody(mesh, sys, material, job);
+}
+
+/// Path of a body file of the bar for `spec` (written on first use in this process).
+inline std::string FlexibleBarFile(const BarSpec& spec) {
+  static std::map<std::string, std::string> written;
+  const std::string key = spec.Key();
+  if (auto it = written.find(key); it != written.end()) return it->second;
+  const Mesh mesh = spec.MakeMesh();
   BodyFileInfo info;
-  info.provenance = {"test", "box", sys.mesh_hash, "order=2"};
-  info.material = material;
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("emb_flexbar_" + key + ".h5")).string();
-  WriteBodyFile(path, "", body, info, nullptr);
-  made[key] = path;
-  return path;
+  info.provenance = {"test", "box", MeshHash(mesh), "order=2"};
+  info.material = spec.Material();
+  const std::string path = ProcessTempDir().File("flexbar_" + key + ".h5");
+  WriteBodyFile(path, "", FlexibleBar(spec), info, nullptr);
+  return written[key] = path;
 }
 
 }  // namespace emb::testing

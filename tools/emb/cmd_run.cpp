@@ -53,7 +53,7 @@ struct RunCommand {
     if (atol) st.ida.atol = CheckNumber("--atol", *atol, NumberRange::Positive());
     if (output_step) st.output_step = CheckNumber("--dt", *output_step, NumberRange::Positive("s"));
     if (remove_redundant) st.remove_redundant = true;
-    if (!linear_solver.empty()) st.ida.linear_solver = ParseIdaLinearSolver(linear_solver);
+    if (!linear_solver.empty()) st.ida.linear_solver = ParseLinearSolverKind(linear_solver);
   }
 
   // Refuses a run whose output would be unreasonably long or large, unless --force.

@@ -31,8 +31,17 @@ def names(f, path):
     return [s.decode() if isinstance(s, bytes) else s for s in f[path][:]]
 
 
+def column(f, dataset, b, offset_attr, default_offset):
+    """First column of body b's block in /state/q or /state/v, from the file's layout record
+    (version 3; version 2 files have the same layout without the record: 7 and 6 per body)."""
+    attrs = f[dataset].attrs
+    stride = int(attrs.get("values_per_body", 7 if dataset == "state/q" else 6))
+    return stride * b + int(attrs.get(offset_attr, default_offset))
+
+
 def rotations(f, b):
-    e = f["state/q"][:, 7 * b + 3:7 * b + 7]  # w, x, y, z
+    k = column(f, "state/q", b, "quaternion_column", 3)
+    e = f["state/q"][:, k:k + 4]  # w, x, y, z
     return Rotation.from_quat(np.c_[e[:, 1:], e[:, :1]])
 
 
@@ -49,11 +58,12 @@ def channel(f, name):
         return f[key][:].reshape(len(f["time"]), -1)[:, 3 * p + c]
     b = names(f, "model/bodies").index(owner)
     if quantity == "p":
-        return f["state/q"][:, 7 * b + c]
+        return f["state/q"][:, column(f, "state/q", b, "position_column", 0) + c]
     if quantity == "v":
-        return f["state/v"][:, 6 * b + c]
+        return f["state/v"][:, column(f, "state/v", b, "velocity_column", 0) + c]
     if quantity == "omega":  # omega_B in the file, W in the channel
-        return rotations(f, b).apply(f["state/v"][:, 6 * b + 3:6 * b + 6])[:, c]
+        k = column(f, "state/v", b, "angular_velocity_column", 3)
+        return rotations(f, b).apply(f["state/v"][:, k:k + 3])[:, c]
     raise SystemExit(f"engine_plots: unknown channel '{name}'")
 
 

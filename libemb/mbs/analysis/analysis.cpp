@@ -2,12 +2,14 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/analysis/analysis_internal.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
+#include "libemb/integrators/generalized_alpha.h"
 #include "libemb/mbs/analysis/ggl_dae.h"
 #include "libemb/mbs/constraints/reactions.h"
 #include "libemb/mbs/core/rotation.h"
@@ -40,6 +42,16 @@ AnalysisType ParseAnalysisType(const std::string& name) {
     valid += std::string(valid.empty() ? "" : ", ") + t.name;
   }
   EMB_THROW(InputError, "unknown analysis type '" << name << "': expected one of " << valid);
+}
+
+const char* Name(DynamicIntegrator integrator) {
+  return integrator == DynamicIntegrator::kIda ? "ida" : "generalized-alpha";
+}
+
+DynamicIntegrator ParseDynamicIntegrator(const std::string& name) {
+  for (DynamicIntegrator i : {DynamicIntegrator::kIda, DynamicIntegrator::kGeneralizedAlpha})
+    if (name == Name(i)) return i;
+  EMB_THROW(InputError, "integrator: expected 'ida' or 'generalized-alpha', got '" << name << "'");
 }
 
 const char* Name(RunStatus status) {
@@ -227,6 +239,62 @@ Eigen::VectorXd ComponentTolerances(const System& sys, const GglLayout& G,
   return atol;
 }
 
+// 1 for the unknowns in the local error test, 0 for the modal coordinates (and rates) that
+// their flexible body declares quasi-static (ElasticModel::MakeQuasiStatic: the coordinate
+// relaxes to its static response at every instant; the rate is algebraic) and for the
+// multipliers. Empty if every differential unknown is tested.
+Eigen::VectorXd ErrorTestMask(const System& sys, const GglLayout& G) {
+  const StateLayout& L = sys.layout();
+  Eigen::VectorXd mask = Eigen::VectorXd::Zero(G.size());
+  mask.head(G.nq() + G.nv()).setOnes();
+  bool any = false;
+  for (int b = 1; b < sys.num_bodies(); ++b) {
+    if (L.num_elastic(b) == 0) continue;
+    const std::vector<bool>& qs = sys.body(b).elastic->quasi_static;
+    for (int j = 0; j < static_cast<int>(qs.size()); ++j) {
+      if (!qs[j]) continue;
+      mask[G.q() + L.elastic_q(b) + j] = 0.0;
+      mask[G.v() + L.elastic_v(b) + j] = 0.0;
+      any = true;
+    }
+  }
+  return any ? mask : Eigen::VectorXd();
+}
+
+// The integrator of the settings on the GGL DAE from consistent (y, y').
+std::unique_ptr<DaeIntegrator> MakeIntegrator(const System& sys, const GglDae& dae,
+                                              const AnalysisSettings& settings,
+                                              const IdaOptions& options, const Eigen::VectorXd& y,
+                                              const Eigen::VectorXd& yp) {
+  const Eigen::VectorXd mask = ErrorTestMask(sys, dae.ggl_layout());
+  if (settings.integrator == DynamicIntegrator::kIda) {
+    IdaOptions o = options;
+    // IDA has no error-test mask: a huge atol takes a component out of it.
+    if (mask.size()) {
+      if (o.component_atol.size() == 0)
+        o.component_atol = (dae.DifferentialMask().array() != 0.0).select(
+            Eigen::VectorXd::Constant(mask.size(), o.atol),
+            Eigen::VectorXd::Constant(mask.size(), o.algebraic_atol > 0 ? o.algebraic_atol : o.atol));
+      for (Eigen::Index i = 0; i < mask.size(); ++i)
+        if (mask[i] == 0.0 && dae.DifferentialMask()[i] != 0.0) o.component_atol[i] = 1e30;
+    }
+    return std::make_unique<IdaSolver>(dae, settings.t_start, y, yp, o);
+  }
+  GeneralizedAlphaOptions g;
+  g.rho_inf = settings.rho_inf;
+  g.rtol = options.rtol;
+  g.atol = options.atol;
+  g.algebraic_atol = options.algebraic_atol;
+  g.component_atol = options.component_atol;
+  g.error_test_mask = mask;
+  g.initial_step = options.initial_step;
+  g.max_step = options.max_step;
+  g.max_num_steps = options.max_num_steps;
+  g.linear_solver = options.linear_solver;
+  g.sparse_min_size = options.sparse_min_size;
+  return std::make_unique<GeneralizedAlphaSolver>(dae, settings.t_start, y, yp, g);
+}
+
 RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
                      const SampleSink& sink, const ProgressFn& progress) {
   const System& sys = run.system;
@@ -272,7 +340,9 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
                            std::min(settings.output_step, settings.t_end - settings.t_start);
   r.atol = options.atol;
   r.multiplier_atol = options.algebraic_atol;
-  IdaSolver ida(dae, settings.t_start, y, yp, options);
+  const std::unique_ptr<DaeIntegrator> integrator =
+      MakeIntegrator(sys, dae, settings, options, y, yp);
+  DaeIntegrator& ida = *integrator;
   r.linear_solver = ida.linear_solver();
   r.jacobian_nonzeros = ida.jacobian_nonzeros();
   const std::vector<double> times = OutputTimes(settings);
@@ -280,7 +350,7 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
   r.num_samples = 1;
   r.t_reached = times[0];
   for (std::size_t k = 1; k < times.size(); ++k) {
-    const IdaReport rep = ida.AdvanceTo(times[k]);
+    const IntegratorReport rep = ida.AdvanceTo(times[k]);
     const Eigen::VectorXd& yk = ida.y();
     const Eigen::VectorXd& ypk = ida.yp();
     r.t_reached = ida.t();
@@ -288,7 +358,8 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     if (!rep.ok()) {
       r.status = RunStatus::kIntegratorFailure;
       std::ostringstream o;
-      o << "IDA " << Name(rep.status) << " at t = " << rep.t << " s with step size "
+      o << (settings.integrator == DynamicIntegrator::kIda ? "IDA " : "generalized-alpha ")
+        << Name(rep.status) << " at t = " << rep.t << " s with step size "
         << rep.last_step << " s; largest weighted local error " << rep.worst_weighted_error
         << " in " << rep.worst_component_name;
       if (!rep.message.empty()) o << " (" << rep.message << ")";
@@ -300,7 +371,7 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
       if (we.equation >= 0)
         o << "; largest constraint residual " << we.residual << " in "
           << sys.EquationName(we.equation);
-      if (rep.t <= settings.t_start && rep.status == IdaStatus::kConvergenceFailure)
+      if (rep.t <= settings.t_start && rep.status == IntegratorStatus::kConvergenceFailure)
         o << "; the corrector failed at the start for every step size, which means the "
              "tolerances are below the round-off floor of this model: raise atol (now "
           << options.atol << ", atol_floor_relative " << settings.atol_floor_relative

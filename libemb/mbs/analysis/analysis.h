@@ -33,15 +33,29 @@ const char* Name(AnalysisType type);
 /// @throws InputError listing the valid names.
 AnalysisType ParseAnalysisType(const std::string& name);
 
+/// The time integrator of a dynamic analysis (libemb/integrators).
+enum class DynamicIntegrator {
+  kIda,               ///< SUNDIALS IDA: variable-order BDF (1..5), error-controlled
+  kGeneralizedAlpha,  ///< second order, numerical damping rho_inf (generalized_alpha.h)
+};
+const char* Name(DynamicIntegrator integrator);
+/// "ida" or "generalized-alpha". @throws InputError listing the valid names.
+DynamicIntegrator ParseDynamicIntegrator(const std::string& name);
+
 struct AnalysisSettings {
   AnalysisType type{AnalysisType::kDynamic};
   double t_start{0.0};       ///< [s]
   double t_end{1.0};         ///< [s]
   double output_step{0.01};  ///< [s] between samples
-  /// IDA settings: rtol, and atol for the differential unknowns (positions m, quaternion
-  /// components -, velocities m/s and rad/s). ida.algebraic_atol is not read: the dynamic
-  /// analysis sets it from the multiplier rule below.
+  /// Integrator settings shared by both integrators: rtol, and atol for the differential
+  /// unknowns (positions m, quaternion components -, velocities m/s and rad/s), first and
+  /// largest step, step limit, linear solver (IDA alone reads max_order and
+  /// suppress_algebraic). ida.algebraic_atol is not read: the dynamic analysis sets it from
+  /// the multiplier rule below.
   IdaOptions ida;
+  DynamicIntegrator integrator{DynamicIntegrator::kIda};
+  /// Generalized-alpha: spectral radius at h omega -> infinity, [0, 1] (generalized_alpha.h).
+  double rho_inf{0.5};
   /// The smallest atol the dynamic analysis uses for the differential unknowns, relative
   /// to the model's size: floor = atol_floor_relative * max(1, L) [m, -, m/s, rad/s], L the
   /// largest distance of a body's CM from the origin or of a marker from its CM at t0 [m]
@@ -158,12 +172,12 @@ struct RunResult {
   std::string message;
   double t_reached{0.0};
   int num_samples{0};
-  IdaReport ida;             ///< dynamic analysis: where IDA stopped
-  IdaStats ida_stats;        ///< dynamic analysis: counters
+  IntegratorReport ida;             ///< dynamic analysis: where IDA stopped
+  IntegratorStats ida_stats;        ///< dynamic analysis: counters
   /// Dynamic analysis: the tolerances IDA ran with (after the floor and the multiplier
   /// rule) and the linear solver it used.
   double atol{0.0}, multiplier_atol{0.0};
-  IdaLinearSolver linear_solver{IdaLinearSolver::kDense};
+  LinearSolverKind linear_solver{LinearSolverKind::kDense};
   long jacobian_nonzeros{0};
   std::vector<std::string> warnings;  ///< e.g. atol raised to the floor
   int newton_iterations{0};  ///< kinematic/static: total

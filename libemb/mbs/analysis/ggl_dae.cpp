@@ -107,13 +107,10 @@ class GglForceSink final : public ForceJacobianSink {
   const BodyBlockEmitter& emit_;
 };
 
-// [I E] of one side of a kernel term (6 x body_nv), or I6.
-Eigen::MatrixXd TermMap(const Eigen::MatrixXd* E) {
-  const auto ne = E ? E->cols() : 0;
-  Eigen::MatrixXd X(6, 6 + ne);
-  X.leftCols<6>().setIdentity();
-  if (ne) X.rightCols(ne) = *E;
-  return X;
+// The map of one side of a kernel term to its body's coordinates (6 x body_nv): the marker
+// map on a flexible body (kinematics.h), I6 on a rigid one.
+Eigen::MatrixXd TermMap(const MarkerKinematics* M) {
+  return M ? M->map : Eigen::MatrixXd(Eigen::MatrixXd::Identity(6, 6));
 }
 
 }  // namespace
@@ -184,61 +181,18 @@ void GglDae::DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::V
                             const Eigen::Ref<const Eigen::VectorXd>& yp,
                             Eigen::Ref<Eigen::MatrixXd> J) const {
   assembler_.BeginDense(J);
-  AssembleJacobian(t, cj, y, &assembler_);
-  const std::vector<int> cols = FlexibleColumns();
-  if (cols.empty()) return;
-  Eigen::VectorXd r0(layout_.size());
-  if (!DoCalcResidual(t, y, yp, r0)) return;
-  for (int j : cols) J.col(j) = DifferenceColumn(t, cj, y, yp, r0, j);
+  AssembleJacobian(t, cj, y, yp, &assembler_);
 }
 
 void GglDae::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                                   const Eigen::Ref<const Eigen::VectorXd>& yp,
                                   SparseMatrixd* J) const {
   assembler_.BeginSparse(J, layout_.size(), layout_.size());
-  AssembleJacobian(t, cj, y, &assembler_);
-  // The flexible columns are full in the structure (AssembleJacobian): overwrite them.
-  const std::vector<int> cols = FlexibleColumns();
-  if (cols.empty()) return;
-  Eigen::VectorXd r0(layout_.size());
-  if (!DoCalcResidual(t, y, yp, r0)) return;
-  for (int j : cols) {
-    const Eigen::VectorXd col = DifferenceColumn(t, cj, y, yp, r0, j);
-    for (int k = J->outerIndexPtr()[j]; k < J->outerIndexPtr()[j + 1]; ++k)
-      J->valuePtr()[k] = col[J->innerIndexPtr()[k]];
-  }
-}
-
-std::vector<int> GglDae::FlexibleColumns() const {
-  std::vector<int> cols;
-  const StateLayout& L = system_.layout();
-  for (int b = 1; b < system_.num_bodies(); ++b) {
-    const int ne = L.num_elastic(b);
-    if (!ne) continue;
-    for (int i = 0; i < StateLayout::kQPerBody; ++i) cols.push_back(layout_.q() + L.position(b) + i);
-    for (int i = 0; i < ne; ++i) cols.push_back(layout_.q() + L.elastic_q(b) + i);
-  }
-  return cols;
-}
-
-Eigen::VectorXd GglDae::DifferenceColumn(double t, double cj,
-                                         const Eigen::Ref<const Eigen::VectorXd>& y,
-                                         const Eigen::Ref<const Eigen::VectorXd>& yp,
-                                         const Eigen::VectorXd& r0, int j) const {
-  // Forward difference of F(y + h e_j, y' + cj h e_j) from F(y, y') = r0: truncation
-  // O(h F'') and cancellation O(eps |F| / h), both ~1e-8 relative with h ~ sqrt(eps) scaled
-  // by the coordinate (quaternion entries and modal coordinates are O(1e-3 .. 1)): ample
-  // for a Newton iteration matrix, at one residual per column.
-  const double h = 1.5e-8 * std::max(1e-3, std::abs(y[j]));
-  const int n = layout_.size();
-  Eigen::VectorXd y1 = y, yp1 = yp, rp(n);
-  y1[j] = y[j] + h;
-  yp1[j] = yp[j] + cj * h;
-  if (!DoCalcResidual(t, y1, yp1, rp)) return Eigen::VectorXd::Zero(n);
-  return (rp - r0) / h;
+  AssembleJacobian(t, cj, y, yp, &assembler_);
 }
 
 void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                              const Eigen::Ref<const Eigen::VectorXd>& yp,
                               MatrixAssembler* A) const {
   const StateLayout& L = system_.layout();
   const GglLayout& G = layout_;
@@ -281,9 +235,13 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
       const int eq = G.q() + L.elastic_q(b), ev = G.v() + L.elastic_v(b);
       A->AddBlock(eq, eq, cj * Eigen::MatrixXd::Identity(ne, ne));
       A->AddBlock(eq, ev, -Eigen::MatrixXd::Identity(ne, ne));
-      const FlexibleTerms ft = CalcBodyFlexibleTerms(system_, bodies[b], b, nullptr, true);
-      emit.Block(b, false, b, false, cj * ft.mass - ft.damping);
-      emit.Block(b, false, b, true, -ft.stiffness);
+      Eigen::VectorXd accel(6 + ne);
+      accel << yp.segment<6>(G.v() + L.velocity(b)), yp.segment(G.v() + L.elastic_v(b), ne);
+      const Eigen::VectorXd vdot = yp.segment(G.v(), G.nv());
+      const FlexibleTerms ft = CalcBodyFlexibleTerms(system_, bodies[b], b, &vdot, true, &accel);
+      // Residual rows M(eta) a - f: d/da = M - df/da, d/dv = -df/dv, d/dx = d(M a)/dx - df/dx.
+      emit.Block(b, false, b, false, cj * (ft.mass - ft.force_accel) - ft.damping);
+      emit.Block(b, false, b, true, ft.inertia_stiffness - ft.stiffness);
       continue;
     }
     // d(omega x J omega)/d omega = [omega x] J - [(J omega) x]; f has its negative.
@@ -332,11 +290,20 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
   VisitKernelTerms(system_, bodies, [&](const KernelTerm& term) {
     const int k = term.equation;
     const int body[2] = {term.body_i, term.body_j};
-    const bool flexible = term.E[0] != nullptr || term.E[1] != nullptr;
-    const Eigen::MatrixXd T[2] = {TermMap(term.E[0]), TermMap(term.E[1])};
+    const bool flexible = term.marker[0] != nullptr || term.marker[1] != nullptr;
+    const Eigen::MatrixXd T[2] = {TermMap(term.marker[0]), TermMap(term.marker[1])};
     if (flexible) {
       flush();
       emit_hessians(body, lambda[k] * term.hessian, mu[k] * term.hessian, T);
+      // The curvature of the marker maps: d(map^T g)/dx at fixed g, in the dynamic rows
+      // (g = lambda_k gradient) and the kinematic rows (g = mu_k gradient).
+      for (int s = 0; s < 2; ++s) {
+        if (!term.marker[s]) continue;
+        const Eigen::MatrixXd K =
+            CalcMarkerCurvature(*term.marker[s], term.gradient.segment<6>(6 * s).transpose());
+        emit.Block(body[s], false, body[s], true, lambda[k] * K);
+        emit.Block(body[s], true, body[s], true, mu[k] * K);
+      }
     } else {
       if (body[0] != run_body[0] || body[1] != run_body[1]) {
         flush();
@@ -346,7 +313,7 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
       H_lambda += lambda[k] * term.hessian;
       H_mu += mu[k] * term.hessian;
     }
-    // Velocities of the two sides' virtual bodies: [I E] [v_b; eta'_b].
+    // Velocities of the two sides' virtual bodies: map [v_b; eta'_b].
     Eigen::Matrix<double, 12, 1> v_term = Eigen::Matrix<double, 12, 1>::Zero();
     Eigen::VectorXd vb[2];
     for (int s = 0; s < 2; ++s) {
@@ -361,7 +328,10 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
     for (int s = 0; s < 2; ++s) {
       if (L.is_ground(body[s])) continue;
       const Eigen::RowVectorXd g = term.gradient.segment<6>(6 * s) * T[s];
-      emit.Row(G.lambda() + k, body[s], true, v_H.segment<6>(6 * s) * T[s]);
+      Eigen::RowVectorXd dv_x = v_H.segment<6>(6 * s) * T[s];
+      // The velocity constraint g map V also moves with the map: g d(map V)/dx.
+      if (term.marker[s]) dv_x += term.gradient.segment<6>(6 * s) * term.marker[s]->map_rate;
+      emit.Row(G.lambda() + k, body[s], true, dv_x);
       emit.Row(G.lambda() + k, body[s], false, g);
       emit.Row(G.mu() + k, body[s], true, g);
       emit.Column(body[s], true, G.mu() + k, g.transpose());
@@ -378,16 +348,17 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
                            system_.force_angle_slot(static_cast<int>(k))};
     forces[k]->AddForceJacobian(ctx, &sink);
   }
-  // The q-columns of flexible bodies are replaced by differences of the residual by the
-  // callers: make them full columns of the structure.
-  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(G.size());
-  for (int j : FlexibleColumns()) A->AddBlock(0, j, zero);
   A->Finish();
 }
 
 Eigen::VectorXd GglDae::DoDifferentialMask() const {
   Eigen::VectorXd mask = Eigen::VectorXd::Zero(layout_.size());
   mask.head(layout_.nq() + layout_.nv()).setOnes();
+  // The rates of quasi-static modes have no inertia: their derivative appears nowhere.
+  const StateLayout& L = system_.layout();
+  for (int b = 1; b < system_.num_bodies(); ++b)
+    for (int j = 0; j < L.num_elastic(b); ++j)
+      if (system_.body(b).elastic->is_quasi_static(j)) mask[layout_.v() + L.elastic_v(b) + j] = 0.0;
   return mask;
 }
 

@@ -24,7 +24,10 @@
 /// term, per force element) through a MatrixAssembler, into a dense matrix for the dense
 /// solver or into a compressed-column matrix whose structure is fixed at the first call
 /// (KLU): O(number of blocks) per evaluation, no n x n work on the sparse path. Flexible
-/// bodies: see FlexibleColumns().
+/// bodies are exact too: their inertia's dependence on eta and R (d(M(eta) v')/dx), the
+/// frame acceleration in the translational geometric stiffness, and the curvature of the
+/// marker maps of their markers (kinematics.h, CalcMarkerCurvature) in the constraint and
+/// force terms.
 
 #include <Eigen/Dense>
 #include <string>
@@ -88,16 +91,9 @@ class GglDae final : public DaeProblem {
                             SparseMatrixd* jacobian) const override;
 
  private:
-  // The q-columns of flexible bodies (rigid part and modal coordinates): their analytic
-  // second-derivative terms through the interface markers are incomplete (the derivatives of
-  // the marker map E, kinematics.h), so the iteration matrix takes them from central
-  // differences of the residual instead, one residual per column.
-  std::vector<int> FlexibleColumns() const;
-  Eigen::VectorXd DifferenceColumn(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
-                                   const Eigen::Ref<const Eigen::VectorXd>& yp,
-                                   const Eigen::VectorXd& r0, int j) const;
   // The iteration matrix through `assembler` (begun by the caller; finished here).
   void AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                        const Eigen::Ref<const Eigen::VectorXd>& yp,
                         MatrixAssembler* assembler) const;
 
   const System& system_;

@@ -42,11 +42,8 @@ Eigen::MatrixXd CalcTangentStiffness(const System& sys, const Eigen::VectorXd& q
   VisitKernelTerms(sys, bodies, [&](const KernelTerm& term) {
     const int body[2] = {term.body_i, term.body_j};
     Eigen::MatrixXd T[2];
-    for (int s = 0; s < 2; ++s) {
-      const auto ne = term.E[s] ? term.E[s]->cols() : 0;
-      T[s].setIdentity(6, 6 + ne);
-      if (ne) T[s].rightCols(ne) = *term.E[s];
-    }
+    for (int s = 0; s < 2; ++s)
+      T[s] = term.marker[s] ? term.marker[s]->map : Eigen::MatrixXd(Eigen::MatrixXd::Identity(6, 6));
     for (int s = 0; s < 2; ++s)
       for (int u = 0; u < 2; ++u)
         if (!L.is_ground(body[s]) && !L.is_ground(body[u]))

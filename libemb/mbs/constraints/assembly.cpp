@@ -131,7 +131,17 @@ AccelerationSolution SolveAccelerations(const System& system, const Eigen::Vecto
                                         ConstraintWorkspace* workspace) {
   const auto bodies = CalcBodyKinematics(system, q, v);
   const ConstraintEval c = CalcConstraints(system, bodies, t, workspace);
-  const Eigen::MatrixXd M = CalcMassMatrix(system, bodies);
+  Eigen::MatrixXd M = CalcMassMatrix(system, bodies);
+  // Quasi-static modes have no inertia, so M is singular in their rows. Their rates are
+  // algebraic in the DAE (set by D eta' = loads - K eta), and what this solve gives the
+  // integrator for them is only a starting guess: solve with the unit modal mass they had
+  // before they were made quasi-static (mass-normalised modes), which keeps the system
+  // regular; the first step settles them.
+  const StateLayout& L = system.layout();
+  for (int b = 1; b < system.num_bodies(); ++b)
+    for (int j = 0; j < L.num_elastic(b); ++j)
+      if (system.body(b).elastic->is_quasi_static(j))
+        M(L.elastic_v(b) + j, L.elastic_v(b) + j) += 1.0;
   const auto n = M.rows(), m = c.jacobian.rows();
   Eigen::VectorXd rhs(n + m);
   rhs << CalcGeneralizedForces(system, bodies, t, workspace), c.gamma();

@@ -39,11 +39,14 @@ ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinem
   auto add_row = [&](int k, const MarkerKinematics& M, double a,
                      const Eigen::Matrix<double, 1, 6>& d) {
     if (L.is_ground(M.body)) return;
-    for (int i = 0; i < 6; ++i) triplets.emplace_back(k, L.velocity(M.body) + i, a * d[i]);
-    if (!M.flexible()) return;
-    const Eigen::RowVectorXd de = d * M.E;  // the modal columns (kinematics.h)
-    for (int i = 0; i < de.size(); ++i)
-      triplets.emplace_back(k, L.elastic_v(M.body) + i, a * de[i]);
+    if (!M.flexible()) {
+      for (int i = 0; i < 6; ++i) triplets.emplace_back(k, L.velocity(M.body) + i, a * d[i]);
+      return;
+    }
+    const Eigen::RowVectorXd dm = d * M.map;  // through the marker map (kinematics.h)
+    for (int i = 0; i < 6; ++i) triplets.emplace_back(k, L.velocity(M.body) + i, a * dm[i]);
+    for (int i = 6; i < dm.size(); ++i)
+      triplets.emplace_back(k, L.elastic_v(M.body) + i - 6, a * dm[i]);
   };
   for (int k = 0; k < m; ++k) {
     const ScalarEquation& eq = system.equations()[k];
@@ -92,8 +95,8 @@ void VisitKernelTerms(const System& system, const std::vector<BodyKinematics>& b
       term.body_j = J.body;
       term.gradient << a * g.d_i, a * g.d_j;
       term.hessian = a * EvalKernelHessian(eq.kernel[n], I, J);
-      term.E[0] = I.flexible() ? &I.E : nullptr;
-      term.E[1] = J.flexible() ? &J.E : nullptr;
+      term.marker[0] = I.flexible() ? &I : nullptr;
+      term.marker[1] = J.flexible() ? &J : nullptr;
       visit(term);
     }
   }

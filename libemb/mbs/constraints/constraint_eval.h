@@ -60,10 +60,12 @@ struct KernelTerm {
   int body_i{0}, body_j{0};                        ///< 0 = ground
   Eigen::Matrix<double, 1, 12> gradient;           ///< coeff [d_i, d_j]
   Eigen::Matrix<double, 12, 12> hessian;           ///< coeff EvalKernelHessian(...)
-  /// Markers on flexible bodies: their E (kinematics.h), valid during the visit; the modal
-  /// columns of the gradient are gradient_s E_s, and [I E]^T hessian [I E] stands for the
-  /// second derivatives (the derivatives of E itself are left out of iteration matrices).
-  const Eigen::MatrixXd* E[2]{nullptr, nullptr};
+  /// Markers on flexible bodies (kinematics.h), valid during the visit, null on rigid ones:
+  /// the gradient and hessian of such a side are with respect to its marker frame; on the
+  /// body's coordinates the gradient is gradient_s map_s and the second derivatives are
+  /// map_s^T hessian map_t plus, on the diagonal, CalcMarkerCurvature(marker_s, multiplier x
+  /// gradient_s) (the curvature of the marker map).
+  const MarkerKinematics* marker[2]{nullptr, nullptr};
 };
 
 /// Calls `visit` for every kernel term of every equation, in equation order (the iteration

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "libemb/common/skew.h"
+
 namespace emb::mbs {
 namespace {
 
@@ -98,11 +100,6 @@ using Mat12 = Eigen::Matrix<double, 12, 12>;
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-Matrix3d Hat(const Vector3d& a) {
-  Matrix3d S;
-  S << 0, -a[2], a[1], a[2], 0, -a[0], -a[1], a[0], 0;
-  return S;
-}
 
 // Block offsets in the 12-vector [dp_i, dpi_i, dp_j, dpi_j].
 constexpr int kPi = 0, kRi = 3, kPj = 6, kRj = 9;
@@ -111,10 +108,10 @@ Mat12 AxisDotHessian(const MarkerKinematics& I, int axis_i, const MarkerKinemati
   Mat12 K = Mat12::Zero();
   const Vector3d a = I.R_WM.col(axis_i), b = J.R_WM.col(axis_j);
   const Vector3d a_B = I.R_BM.col(axis_i), b_B = J.R_BM.col(axis_j);
-  K.block<3, 3>(kRi, kRi) = Hat(a_B) * Hat(I.R_WB.transpose() * b);
-  K.block<3, 3>(kRi, kRj) = -Hat(a_B) * I.R_WB.transpose() * J.R_WB * Hat(b_B);
-  K.block<3, 3>(kRj, kRj) = Hat(b_B) * Hat(J.R_WB.transpose() * a);
-  K.block<3, 3>(kRj, kRi) = -Hat(b_B) * J.R_WB.transpose() * I.R_WB * Hat(a_B);
+  K.block<3, 3>(kRi, kRi) = Skew(a_B) * Skew(I.R_WB.transpose() * b);
+  K.block<3, 3>(kRi, kRj) = -Skew(a_B) * I.R_WB.transpose() * J.R_WB * Skew(b_B);
+  K.block<3, 3>(kRj, kRj) = Skew(b_B) * Skew(J.R_WB.transpose() * a);
+  K.block<3, 3>(kRj, kRi) = -Skew(b_B) * J.R_WB.transpose() * I.R_WB * Skew(a_B);
   return K;
 }
 
@@ -132,8 +129,8 @@ Eigen::Matrix<double, 12, 12> EvalKernelHessian(const KernelSpec& spec, const Ma
   switch (spec.kind) {
     case KernelKind::kPointComponent: {
       const Vector3d ek = Vector3d::Unit(spec.axis_i);
-      K.block<3, 3>(kRi, kRi) = Hat(I.s_B) * Hat(I.R_WB.transpose() * ek);
-      K.block<3, 3>(kRj, kRj) = -Hat(J.s_B) * Hat(J.R_WB.transpose() * ek);
+      K.block<3, 3>(kRi, kRi) = Skew(I.s_B) * Skew(I.R_WB.transpose() * ek);
+      K.block<3, 3>(kRj, kRj) = -Skew(J.s_B) * Skew(J.R_WB.transpose() * ek);
       return K;
     }
     case KernelKind::kPointOnAxis: {
@@ -141,18 +138,18 @@ Eigen::Matrix<double, 12, 12> EvalKernelHessian(const KernelSpec& spec, const Ma
       const Vector3d a_B = J.R_BM.col(spec.axis_j);
       const Vector3d d = I.p_WM - J.p_WM;
       const Matrix3d Rj = J.R_WB, Ri = I.R_WB;
-      const Matrix3d da_dpij = -Rj * Hat(a_B);  // d a / d pi_j
+      const Matrix3d da_dpij = -Rj * Skew(a_B);  // d a / d pi_j
       // G_i = [a; s_i x R_i^T a]
       K.block<3, 3>(kPi, kRj) = da_dpij;
-      K.block<3, 3>(kRi, kRi) = Hat(I.s_B) * Hat(Ri.transpose() * a);
-      K.block<3, 3>(kRi, kRj) = Hat(I.s_B) * Ri.transpose() * da_dpij;
+      K.block<3, 3>(kRi, kRi) = Skew(I.s_B) * Skew(Ri.transpose() * a);
+      K.block<3, 3>(kRi, kRj) = Skew(I.s_B) * Ri.transpose() * da_dpij;
       // G_j = [-a; -(s_j x a_B) + a_B x (R_j^T d)]
       K.block<3, 3>(kPj, kRj) = -da_dpij;
-      const Matrix3d A = Hat(a_B);
+      const Matrix3d A = Skew(a_B);
       K.block<3, 3>(kRj, kPi) = A * Rj.transpose();
-      K.block<3, 3>(kRj, kRi) = -A * Rj.transpose() * Ri * Hat(I.s_B);
+      K.block<3, 3>(kRj, kRi) = -A * Rj.transpose() * Ri * Skew(I.s_B);
       K.block<3, 3>(kRj, kPj) = -A * Rj.transpose();
-      K.block<3, 3>(kRj, kRj) = A * (Hat(J.s_B) + Hat(Rj.transpose() * d));
+      K.block<3, 3>(kRj, kRj) = A * (Skew(J.s_B) + Skew(Rj.transpose() * d));
       return K;
     }
     case KernelKind::kAxisDot:

@@ -5,14 +5,15 @@
 namespace emb::mbs {
 
 FlexibleTerms CalcBodyFlexibleTerms(const System& system, const BodyKinematics& k, int b,
-                                    const Eigen::VectorXd* vdot, bool with_derivatives) {
+                                    const Eigen::VectorXd* vdot, bool with_derivatives,
+                                    const Eigen::VectorXd* accel) {
   const RigidBody& body = system.body(b);
   const StateLayout& L = system.layout();
   Eigen::Vector3d a_B = -k.R_WB.transpose() * system.gravity();
   if (vdot != nullptr && vdot->size())
     a_B += k.R_WB.transpose() * vdot->segment<3>(L.velocity(b));
   return CalcFlexibleTerms(*body.elastic, k.p_WB, k.R_WB, k.v_WB, k.omega_B, k.eta, k.eta_dot,
-                           system.gravity(), a_B, with_derivatives);
+                           system.gravity(), a_B, with_derivatives, accel);
 }
 
 namespace {

@@ -32,9 +32,13 @@ Eigen::VectorXd CalcGeneralizedForces(const System& system,
                                       ConstraintWorkspace* workspace = nullptr,
                                       const Eigen::VectorXd* vdot = nullptr);
 
-/// The flexible terms of body b (elastic_model.h) at the body kinematics. @pre b flexible.
+/// The flexible terms of body b (elastic_model.h) at the body kinematics. `vdot` (size nv,
+/// may be null) gives the frame acceleration of the translational geometric stiffness;
+/// `accel` (may be null) the body's [v'_WB, omega'_B, eta''] for the acceleration-dependent
+/// derivatives. @pre b flexible.
 FlexibleTerms CalcBodyFlexibleTerms(const System& system, const BodyKinematics& body, int b,
-                                    const Eigen::VectorXd* vdot, bool with_derivatives);
+                                    const Eigen::VectorXd* vdot, bool with_derivatives,
+                                    const Eigen::VectorXd* accel = nullptr);
 /// Only the force elements' part of f (no gravity, no gyroscopic term).
 Eigen::VectorXd CalcElementForces(const System& system, const std::vector<BodyKinematics>& bodies,
                                   double t, ConstraintWorkspace* workspace = nullptr);

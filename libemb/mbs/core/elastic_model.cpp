@@ -56,6 +56,8 @@ void ElasticModel::Validate(const std::string& name) const {
               St.cols() != ne || Ibar.rows() != 9 || Ibar.cols() != ne,
           "inconsistent sizes of the modal matrices and invariants");
   for (const auto& S : Sbar) fail_if(S.rows() != ne || S.cols() != ne, "inconsistent Sbar size");
+  fail_if(!quasi_static.empty() && static_cast<int>(quasi_static.size()) != ne,
+          "inconsistent size of the quasi-static mode flags");
   if (geometric_stiffening) {
     for (const auto& k : kg_centrifugal)
       fail_if(k.rows() != ne || k.cols() != ne, "inconsistent geometric stiffness size");
@@ -68,9 +70,46 @@ void ElasticModel::Validate(const std::string& name) const {
   constexpr double kSymmetryTolerance = 1e-8;
   fail_if((K - K.transpose()).cwiseAbs().maxCoeff() > kSymmetryTolerance * scale,
           "expected a symmetric modal stiffness");
+  // The modal mass of the dynamic modes must be positive definite; quasi-static modes have
+  // none (MakeQuasiStatic).
+  std::vector<int> dynamic;
+  for (int j = 0; j < ne; ++j)
+    if (!is_quasi_static(j)) dynamic.push_back(j);
+  if (dynamic.empty()) return;
   const Eigen::MatrixXd Mee = Sbar[0] + Sbar[4] + Sbar[8];
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(0.5 * (Mee + Mee.transpose()));
+  Eigen::MatrixXd Md(dynamic.size(), dynamic.size());
+  for (std::size_t i = 0; i < dynamic.size(); ++i)
+    for (std::size_t j = 0; j < dynamic.size(); ++j)
+      Md(i, j) = 0.5 * (Mee(dynamic[i], dynamic[j]) + Mee(dynamic[j], dynamic[i]));
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(Md);
   fail_if(!(em.eigenvalues().minCoeff() > 0.0), "expected a positive definite modal mass");
+}
+
+void ElasticModel::MakeQuasiStatic(const std::vector<bool>& flags, const std::string& name) {
+  const int ne = num_modes();
+  EMB_THROW_IF(static_cast<int>(flags.size()) != ne,
+               "flexible body '" << name << "': expected " << ne << " quasi-static flags, got "
+                                 << flags.size());
+  for (int j = 0; j < ne; ++j) {
+    if (!flags[j]) continue;
+    EMB_THROW_IF(!(D(j, j) > 0.0),
+                 "flexible body '" << name << "' (" << source << "): mode " << j + 1 << " ("
+                                   << (j < frequencies_hz.size() ? frequencies_hz[j] : 0.0)
+                                   << " Hz) cannot be quasi-static without damping: its rate "
+                                      "comes from D eta' = loads - K eta (give the body file a "
+                                      "modal damping > 0)");
+    for (auto& S : Sbar) {
+      S.row(j).setZero();
+      S.col(j).setZero();
+    }
+  }
+  quasi_static = flags;
+}
+
+int ElasticModel::num_quasi_static() const {
+  int n = 0;
+  for (bool f : quasi_static) n += f ? 1 : 0;
+  return n;
 }
 
 ElasticModel ElasticModel::Subset(const std::vector<int>& keep) const {
@@ -95,6 +134,10 @@ ElasticModel ElasticModel::Subset(const std::vector<int>& keep) const {
   s.D = square(D);
   s.frequencies_hz.resize(n);
   for (int j = 0; j < n; ++j) s.frequencies_hz[j] = frequencies_hz[keep[j]];
+  if (!quasi_static.empty()) {
+    s.quasi_static.resize(n);
+    for (int j = 0; j < n; ++j) s.quasi_static[j] = quasi_static[keep[j]];
+  }
   if (geometric_stiffening) {
     for (auto& k : s.kg_centrifugal) k = square(k);
     for (auto& k : s.kg_translational) k = square(k);
@@ -106,7 +149,8 @@ FlexibleTerms CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d
                                 const Eigen::Matrix3d& R, const Eigen::Vector3d& v_WB,
                                 const Eigen::Vector3d& w, const Eigen::VectorXd& eta,
                                 const Eigen::VectorXd& eta_dot, const Eigen::Vector3d& g_W,
-                                const Eigen::Vector3d& a_B, bool with_derivatives) {
+                                const Eigen::Vector3d& a_B, bool with_derivatives,
+                                const Eigen::VectorXd* accel) {
   using Eigen::Matrix3d;
   using Eigen::MatrixXd;
   using Eigen::Vector3d;
@@ -224,6 +268,44 @@ FlexibleTerms CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d
   MatrixXd Kee = -model.K - dcent.transpose();
   if (model.geometric_stiffening) Kee -= KG;
   t.stiffness.block(6, 6, ne, ne) = Kee;
+  // The translational geometric stiffness -sum_k a_B,k K_a,k eta turns with the frame:
+  // a_B = R^T (a - g), d a_B / d delta pi = [a_B x].
+  MatrixXd Kae;
+  if (model.geometric_stiffening) {
+    Kae.resize(ne, 3);
+    for (int k = 0; k < 3; ++k) Kae.col(k) = model.kg_translational[k] * eta;
+    t.stiffness.block(6, 3, ne, 3) -= Kae * Skew(a_B);
+  }
+  if (accel == nullptr) return t;
+
+  // d(M a)/dx at fixed a = [a_t, a_w, a_e] (see the header), and df/da.
+  EMB_CHECK(accel->size() == n);
+  const Vector3d a_t = accel->head<3>(), a_w = accel->segment<3>(3);
+  const VectorXd a_e = accel->tail(ne);
+  const Vector3d at_B = R.transpose() * a_t;
+  t.inertia_stiffness.setZero(n, n);
+  // Rows t: m a_t + R y, y = a_w x c + St a_e.
+  const Vector3d y = a_w.cross(c) + model.St * a_e;
+  t.inertia_stiffness.block<3, 3>(0, 3) = -R * Skew(y);
+  t.inertia_stiffness.block(0, 6, 3, ne) = R * Skew(a_w) * model.St;
+  // Rows w: [c x] R^T a_t + J a_w + Mre a_e.
+  t.inertia_stiffness.block<3, 3>(3, 3) = Skew(c) * Skew(at_B);
+  Eigen::Matrix<double, 9, Eigen::Dynamic> W(9, ne);  // W(r, l) = (S[r] a_e)_l
+  for (int r = 0; r < 9; ++r) W.row(r) = (S[r] * a_e).transpose();
+  Eigen::Matrix<double, 3, Eigen::Dynamic> dMre = AxialRows(W);
+  for (int k = 0; k < ne; ++k) {
+    const Matrix3d Bk = Block3(Bm, k);
+    const Matrix3d dJ = 2.0 * trB[k] * Matrix3d::Identity() - Bk - Bk.transpose();
+    dMre.col(k) += dJ * a_w;
+  }
+  t.inertia_stiffness.block(3, 6, 3, ne) = -Skew(at_B) * model.St + dMre;
+  // Rows e: St^T R^T a_t + Mre^T a_w + Mee a_e.
+  t.inertia_stiffness.block(6, 3, ne, 3) = model.St.transpose() * Skew(at_B);
+  const MatrixXd Ga = a_w.x() * (S[5] - S[7]) + a_w.y() * (S[6] - S[2]) + a_w.z() * (S[1] - S[3]);
+  t.inertia_stiffness.block(6, 6, ne, ne) = Ga.transpose();
+  // The translational geometric stiffness through a_B = R^T (a_t - g): d/d a_t = R^T.
+  t.force_accel.setZero(n, n);
+  if (model.geometric_stiffening) t.force_accel.block(6, 0, ne, 3) = -Kae * R.transpose();
   return t;
 }
 

@@ -32,6 +32,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <string>
+#include <vector>
 
 namespace emb::mbs {
 
@@ -44,6 +45,8 @@ struct ElasticModel {
   std::array<Eigen::MatrixXd, 9> Sbar; ///< [3k+l] = Sbar_kl (ne x ne)
   Eigen::MatrixXd K, D;                ///< modal stiffness and damping (ne x ne)
   Eigen::VectorXd frequencies_hz;      ///< of the kept modes (for reports)
+  /// Per mode: true if the mode is quasi-static (MakeQuasiStatic). Empty: all dynamic.
+  std::vector<bool> quasi_static;
   /// Geometric stiffening (present only if the body file has it and it is switched on).
   bool geometric_stiffening{false};
   std::array<Eigen::MatrixXd, 6> kg_centrifugal;   ///< per product c_p(w)
@@ -57,6 +60,19 @@ struct ElasticModel {
   void Validate(const std::string& name) const;
   /// The model restricted to modes `keep` (indices into the current modes).
   ElasticModel Subset(const std::vector<int>& keep) const;
+  /// Makes the flagged modes quasi-static (residual flexibility, "mode acceleration"): they
+  /// keep their stiffness, damping and every load on them (interface forces, the inertial
+  /// loads of the frame's motion through Ibar, gravity), so the static response of the full
+  /// basis at the interfaces is kept exactly, but they lose their own inertia: the rows and
+  /// columns of the flagged modes in every Sbar_kl are zeroed, which removes their modal
+  /// mass, their Coriolis and spin-softening terms and their share of J(eta). Their rate
+  /// then follows from D eta' = (loads) - K eta at every instant (an algebraic unknown of
+  /// the DAE; the relaxation time 2 zeta / omega is far below any step), so they carry no
+  /// vibration of their own for the integrator to resolve. Needs a positive modal damping
+  /// on each flagged mode. @throws InputError naming `name` otherwise or for a size mismatch.
+  void MakeQuasiStatic(const std::vector<bool>& flags, const std::string& name);
+  int num_quasi_static() const;
+  bool is_quasi_static(int j) const { return !quasi_static.empty() && quasi_static[j]; }
 };
 
 /// Inertia terms of one flexible body at one state: the mass matrix and every velocity-,
@@ -70,6 +86,12 @@ struct FlexibleTerms {
   /// the elastic, centrifugal and geometric stiffness, gravity through R; the derivatives
   /// of M(eta) v' are left out).
   Eigen::MatrixXd damping, stiffness;
+  /// With a body acceleration a = [v'_WB, omega'_B, eta''] given (else empty):
+  /// inertia_stiffness = d(M(eta) a)/d[delta p, delta pi, eta] at fixed a, and
+  /// force_accel = d f / d a (the frame acceleration in the translational geometric
+  /// stiffness), so that the residual M a - f has d/dx = inertia_stiffness - stiffness and
+  /// d/da = mass - force_accel.
+  Eigen::MatrixXd inertia_stiffness, force_accel;
   double kinetic_energy{0.0};
   double elastic_energy{0.0};  ///< eta^T K eta / 2
   double gravity_energy{0.0};  ///< -m g.p_WB - g.R c(eta)
@@ -77,11 +99,14 @@ struct FlexibleTerms {
 };
 
 /// Evaluates FlexibleTerms. `a_B` is the frame origin's acceleration less gravity in B for
-/// the translational geometric stiffness (zero if unknown). Cost O(ne^2).
+/// the translational geometric stiffness (zero if unknown). `accel` (with_derivatives only;
+/// may be null) is the body acceleration [v'_WB, omega'_B, eta''] for inertia_stiffness and
+/// force_accel. Cost O(ne^2).
 FlexibleTerms CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
                                 const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& v_WB,
                                 const Eigen::Vector3d& omega_B, const Eigen::VectorXd& eta,
                                 const Eigen::VectorXd& eta_dot, const Eigen::Vector3d& g_W,
-                                const Eigen::Vector3d& a_B, bool with_derivatives);
+                                const Eigen::Vector3d& a_B, bool with_derivatives,
+                                const Eigen::VectorXd* accel = nullptr);
 
 }  // namespace emb::mbs

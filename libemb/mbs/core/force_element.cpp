@@ -28,9 +28,15 @@ void AddWrench(const StateLayout& layout, const MarkerKinematics& M, const Eigen
 void AddMarkerForce(const StateLayout& layout, const MarkerKinematics& M,
                     const Eigen::Matrix<double, 6, 1>& f6, Eigen::Ref<Eigen::VectorXd> f) {
   if (layout.is_ground(M.body)) return;
-  f.segment<6>(layout.velocity(M.body)) += f6;
-  if (M.flexible())
-    f.segment(layout.elastic_v(M.body), M.E.cols()) += M.E.transpose() * f6;
+  if (!M.flexible()) {
+    f.segment<6>(layout.velocity(M.body)) += f6;
+    return;
+  }
+  // Through the marker map (kinematics.h): f6 acts on the marker frame.
+  const Eigen::VectorXd g = M.map.transpose() * f6;
+  const auto ne = g.size() - 6;
+  f.segment<6>(layout.velocity(M.body)) += g.head<6>();
+  f.segment(layout.elastic_v(M.body), ne) += g.tail(ne);
 }
 
 }  // namespace emb::mbs

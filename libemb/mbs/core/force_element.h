@@ -72,15 +72,15 @@ class ForceElement {
 };
 
 /// Adds a generalised force f6 = [force in W; moment about the origin in B] acting on the
-/// virtual rigid body of marker M (kinematics.h) to f: f6 on M's body and, on a flexible
-/// body, E^T f6 on its modal rows. Nothing for the ground.
+/// virtual rigid body of marker M (kinematics.h) to f: f6 on M's body or, on a flexible
+/// body, map^T f6 on its rigid and modal rows. Nothing for the ground.
 void AddMarkerForce(const StateLayout& layout, const MarkerKinematics& M,
                     const Eigen::Matrix<double, 6, 1>& f6, Eigen::Ref<Eigen::VectorXd> f);
 
 /// Adds a force F_W [N] acting at world point p_WQ and a couple T_W [N m], transmitted
 /// through marker M, to M's body (nothing for the ground): with f6 = [F_W; R_BW (T_W +
-/// (p_WQ - p_WB) x F_W)], f_b += f6 and, on a flexible body, its modal rows += E^T f6
-/// (kinematics.h: the point moves with the marker frame).
+/// (p_WQ - p_WB) x F_W)] on M's virtual body (AddMarkerForce; on a flexible body the point
+/// moves with the marker frame, kinematics.h).
 void AddWrench(const StateLayout& layout, const MarkerKinematics& M, const Eigen::Vector3d& p_WQ,
                const Eigen::Vector3d& F_W, const Eigen::Vector3d& T_W,
                Eigen::Ref<Eigen::VectorXd> f);

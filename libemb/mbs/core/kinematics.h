@@ -22,32 +22,59 @@ struct BodyKinematics {
 
 /// Pose and velocity of one marker M on body B, plus what its Jacobian rows need.
 ///
-/// On a flexible body the marker frame moves with the deformation (system.h Marker):
-///   s_B = p_BM + Phi_M eta,  R_BM = Exp(psi) R_BM0,  psi = Psi_M eta.
-/// Everything downstream (constraint kernels, force elements) then treats the marker as
-/// fixed on a *virtual rigid body* with the body's origin and orientation and the marker
-/// frame's angular velocity omega_W (= the body's plus R J_l(psi) Psi_M eta'). A virtual
-/// displacement or velocity [dp, dpi] of that virtual body is [dp_WB, dpi_B] + E d(eta) with
-///   E = [R Phi_M + [s_W x] R J_l Psi_M;  J_l Psi_M]   (6 x ne),
-/// so a Jacobian row d of a kernel has the eta columns d E, and a wrench's generalised force
-/// f6 = [F; n_B] on the virtual body adds E^T f6 to the modal rows. `extra` completes the
-/// velocity-product (Cdot v) terms: a kernel's g'' = d (vdot_B + E eta'') + d extra +
-/// its rigid quadratic term evaluated with these kinematics (the J_l-rate term is dropped; it
-/// is O(|psi| |psi'|^2)).
+/// Everything downstream (constraint kernels, force elements) sees a marker as fixed on a
+/// *virtual rigid body* (origin p_WB = p_WM - s_W, axes R_WB) and differentiates with respect
+/// to that body's virtual displacement [dp, dpi] (notation.h). On a rigid body the virtual
+/// body is the body itself. On a flexible body the marker frame moves with the deformation
+/// (system.h Marker):
+///   s = p_BM + Phi eta,  R_BM(eta) = Exp(psi) R_BM0,  psi = Psi eta   (in the body frame B),
+/// and the virtual body is the marker frame itself (s_B = 0, R_BM = I, s_W = 0, R_WB = R_WM,
+/// omega_W the marker frame's angular velocity). Its virtual displacement and velocity
+/// [dp_WM (W), dpi_M (M)] follow from the body's coordinates x_b = [dp_WB, dpi_B, d eta] by
+/// the marker map
+///   map = [ I   -R [s x]   R Phi
+///           0    R_BM^T    R_BM^T J_l(psi) Psi ]      (6 x (6 + ne), R = R_WB of the body),
+/// so a kernel's Jacobian row d (w.r.t. the marker frame) is d map on the body's columns, and a
+/// generalised force g = [F (W); moment about the marker in M] becomes map^T g. The map
+/// depends on the state; its derivatives close the chain rule exactly:
+///   map_rate = d(map V)/dx_b at fixed V (6 x (6+ne), V = [v_WB, omega_B, eta'] of the body)
+///     = [0  -R [u x]  R [omega_B x] Phi;  0  0  R_BM^T ([a x] J_l Psi + dJ_l(psi)[Psi eta'] Psi)],
+///       u = omega_B x s + Phi eta',  a = omega_B + J_l Psi eta';
+///   Curvature(g) = d(map^T g)/dx_b at fixed g ((6+ne)^2, CalcMarkerCurvature);
+/// and extra = map_rate V is the velocity-product term of the marker frame's acceleration:
+/// a kernel's g'' = d (map Vdot + extra) + its quadratic term in the marker frame.
+struct Marker;
 struct MarkerKinematics {
   int body{0};           ///< body index (0 = ground)
-  Eigen::Vector3d s_B;   ///< p_BM in B [m]
-  Eigen::Matrix3d R_BM;  ///< marker axes in B
+  Eigen::Vector3d s_B;   ///< marker origin from the virtual body origin, in its axes [m]
+  Eigen::Matrix3d R_BM;  ///< marker axes in the virtual body's axes
   Eigen::Vector3d s_W;   ///< R_WB s_B [m]
   Eigen::Vector3d p_WM;  ///< [m]
   Eigen::Matrix3d R_WM;  ///< marker axes in W
-  Eigen::Matrix3d R_WB;
+  Eigen::Matrix3d R_WB;  ///< axes of the virtual body (the body if rigid, the marker if not)
   Eigen::Vector3d v_WM;     ///< [m/s]
   Eigen::Vector3d omega_W;  ///< of the marker frame (of the body if rigid) [rad/s]
-  Eigen::MatrixXd E;        ///< 6 x ne on a flexible body, empty otherwise
+  /// Flexible bodies only (empty otherwise): the marker map and its rate (see above).
+  Eigen::MatrixXd map, map_rate;
   Eigen::Matrix<double, 6, 1> extra{Eigen::Matrix<double, 6, 1>::Zero()};
-  bool flexible() const { return E.size() > 0; }
+  /// Flexible bodies: what Curvature needs.
+  const Marker* marker{nullptr};
+  Eigen::Matrix3d R_body{Eigen::Matrix3d::Identity()};  ///< R_WB of the flexible body
+  Eigen::Vector3d s_body{Eigen::Vector3d::Zero()};      ///< s = p_BM + Phi eta, in its B
+  Eigen::Matrix3d R_body_marker{Eigen::Matrix3d::Identity()};  ///< R_BM(eta)
+  Eigen::Vector3d psi{Eigen::Vector3d::Zero()};
+  Eigen::Matrix3d Jl{Eigen::Matrix3d::Identity()};  ///< J_l(psi)
+  bool flexible() const { return map.size() > 0; }
 };
+
+/// d(map^T g)/dx_b at fixed g = [F (W); m (M axes)] for a marker on a flexible body
+/// ((6 + ne)^2, rows and columns [dp_WB, dpi_B, d eta]): with f_B = R^T F, n = R_BM m,
+///   rows dpi:  [s x][f_B x] (cols dpi),  -[f_B x] Phi - [n x] J_l Psi (cols eta)
+///   rows eta:  Phi^T [f_B x] (cols dpi),  Psi^T (dJ_l^T(psi)[n] - J_l^T [n x] J_l) Psi (cols eta).
+/// The second-derivative term of the chain rule through the marker map (the first is
+/// map^T (dg/dx_M) map). @pre M.flexible(). Cost O(ne^2).
+Eigen::MatrixXd CalcMarkerCurvature(const MarkerKinematics& M,
+                                    const Eigen::Matrix<double, 6, 1>& g);
 
 /// The velocity [v', omega'_B] of the virtual rigid body that carries marker M (the body's
 /// [v_WB, omega_B] on a rigid body): the kernel Jacobian rows apply to it.

@@ -72,12 +72,6 @@ Vector3d Euler313FromRotation(const Matrix3d& R) {
   return {psi, theta, phi};
 }
 
-Matrix3d Skew(const Vector3d& a) {
-  Matrix3d S;
-  S << 0, -a[2], a[1], a[2], 0, -a[0], -a[1], a[0], 0;
-  return S;
-}
-
 Vector3d RotationVectorFromRotation(const Matrix3d& R) {
   return RotationVectorFromQuaternion(QuaternionFromRotation(R));
 }
@@ -135,6 +129,37 @@ Eigen::Vector3d RodriguesCoefficients(double t) {
   return {std::sin(t) / t, (1.0 - std::cos(t)) / t2, (t - std::sin(t)) / (t2 * t)};
 }
 }  // namespace
+
+namespace {
+// a'(t)/t and b'(t)/t of a = (1 - cos t)/t^2 and b = (t - sin t)/t^3: the closed forms
+// cancel ~1/t^2 of their terms, so below kRodriguesSeriesAngle the series (to t^6; the next
+// term is ~1e-13 relative at t = 0.1) are used.
+Eigen::Vector2d RodriguesDerivativesOverT(double t) {
+  const double t2 = t * t;
+  if (t < kRodriguesSeriesAngle)
+    return {-1.0 / 12.0 + t2 * (1.0 / 180.0 + t2 * (-1.0 / 6720.0 + t2 / 453600.0)),
+            -1.0 / 60.0 + t2 * (1.0 / 1260.0 + t2 * (-1.0 / 60480.0 + t2 / 4989600.0))};
+  const double t4 = t2 * t2;
+  return {(t * std::sin(t) - 2.0 + 2.0 * std::cos(t)) / t4,
+          (1.0 - std::cos(t)) / t4 - 3.0 * (t - std::sin(t)) / (t4 * t)};
+}
+}  // namespace
+
+Matrix3d LeftJacobianSO3ProductDerivative(const Vector3d& theta_in, const Vector3d& x,
+                                          bool transpose) {
+  // J_l(theta)^T = J_l(-theta): the transposed case is the plain one at -theta, times -1
+  // for the chain rule.
+  const Vector3d theta = transpose ? Vector3d(-theta_in) : theta_in;
+  const double t = theta.norm();
+  const Eigen::Vector3d c = RodriguesCoefficients(t);
+  const Eigen::Vector2d d = RodriguesDerivativesOverT(t);
+  const Vector3d tx = theta.cross(x);
+  const Matrix3d dtt = theta.dot(x) * Matrix3d::Identity() + theta * x.transpose() -
+                       2.0 * x * theta.transpose();
+  const Matrix3d D = -c[1] * Skew(x) + d[0] * tx * theta.transpose() + c[2] * dtt +
+                     d[1] * theta.cross(tx) * theta.transpose();
+  return transpose ? Matrix3d(-D) : D;
+}
 
 Matrix3d RotationFromRotationVector(const Vector3d& theta) {
   const Eigen::Vector3d c = RodriguesCoefficients(theta.norm());

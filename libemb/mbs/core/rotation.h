@@ -6,6 +6,8 @@
 
 #include <Eigen/Dense>
 
+#include "libemb/common/skew.h"  // Skew, used with these throughout mbs
+
 namespace emb::mbs {
 
 using Eigen::Matrix3d;
@@ -39,9 +41,6 @@ Matrix3d RotationFromEuler313(double psi, double theta, double phi);
 /// these angles).
 Vector3d Euler313FromRotation(const Matrix3d& R);
 
-/// [a x], the skew matrix with [a x] b = a x b.
-Matrix3d Skew(const Vector3d& a);
-
 /// Rotation vector (axis * angle, angle in [0, pi]) of R, through its quaternion
 /// (RotationVectorFromQuaternion).
 Vector3d RotationVectorFromRotation(const Matrix3d& R);
@@ -71,6 +70,15 @@ Matrix3d InverseLeftJacobianSO3(const Vector3d& theta);
 ///   series below t = 0.25 (the closed form cancels there).
 Matrix3d InverseLeftJacobianSO3ProductDerivative(const Vector3d& theta, const Vector3d& w,
                                                  bool transpose);
+
+/// d(J_l(theta) x)/dtheta for a fixed x, or with `transpose` d(J_l(theta)^T x)/dtheta.
+/// With J_l x = x + a(t) theta x x + b(t) theta x (theta x x), a = (1 - cos t)/t^2,
+/// b = (t - sin t)/t^3, t = |theta|:
+///   d(J_l x)/dtheta = -a [x x] + (a'/t) (theta x x) theta^T
+///                     + b ((theta.x) I + theta x^T - 2 x theta^T) + (b'/t) (theta x (theta x x)) theta^T,
+/// and J_l(theta)^T = J_l(-theta) gives the transposed case. a'/t and b'/t by their series
+/// below t = 0.1. Used for the curvature of the marker map of a flexible body (kinematics.h).
+Matrix3d LeftJacobianSO3ProductDerivative(const Vector3d& theta, const Vector3d& x, bool transpose);
 
 /// Wraps an angle to (-pi, pi].
 double WrapAngle(double a);

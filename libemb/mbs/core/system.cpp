@@ -3,23 +3,12 @@
 #include <algorithm>
 #include <set>
 
+#include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
 #include "libemb/mbs/core/rotation.h"
 
 namespace emb::mbs {
 namespace {
-
-int EditDistance(const std::string& a, const std::string& b) {
-  std::vector<int> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = static_cast<int>(j);
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = static_cast<int>(i);
-    for (std::size_t j = 1; j <= b.size(); ++j)
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
 
 template <typename T>
 std::vector<std::string> Names(const std::vector<T>& v) {
@@ -36,18 +25,6 @@ int FindByName(const std::vector<T>& v, const std::string& name, const char* wha
 }
 
 }  // namespace
-
-std::string DidYouMean(const std::string& name, const std::vector<std::string>& candidates) {
-  std::string best;
-  int best_d = 1 << 30;
-  for (const auto& c : candidates) {
-    const int d = EditDistance(name, c);
-    if (d < best_d) best_d = d, best = c;
-  }
-  // Suggest only near misses: at most a third of the name wrong (and at least 2 edits).
-  if (best.empty() || best_d > std::max<int>(2, static_cast<int>(name.size()) / 3)) return "";
-  return "; did you mean '" + best + "'?";
-}
 
 System::System() {
   RigidBody ground;

@@ -163,7 +163,4 @@ class System {
   bool finalized_{false};
 };
 
-/// "did you mean 'crank'?" for the nearest of `candidates` to `name` (edit distance), or "".
-std::string DidYouMean(const std::string& name, const std::vector<std::string>& candidates);
-
 }  // namespace emb::mbs

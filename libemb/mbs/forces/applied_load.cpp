@@ -106,7 +106,10 @@ void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
   const Vector3d F = force ? load : zero, T = force ? zero : load;
   const MatrixXd& dF = force ? dload : zero_d;
   const MatrixXd& dT = force ? zero_d : dload;
+  for (int slot = 0; slot < jac.num_slots(); ++slot)
+    jac.SetSlotForce(slot, Eigen::Matrix<double, 6, 1>::Zero());  // argument slots: none
   jac.stiffness.middleRows<6>(0) += WrenchStiffness(M.R_WB, 0, F, T, M.s_W, dF, dT, dM.arm_x);
+  jac.SetSlotForce(0, WrenchForce(M.R_WB, F, T, M.s_W));
   if (reaction_slot >= 0) {
     // The opposite load at the same point p_WM, on the reaction body.
     const Vector3d r = M.p_WM - (R.p_WM - R.s_W);
@@ -114,6 +117,7 @@ void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
     dr.block<3, 3>(0, 6 * reaction_slot) -= Eigen::Matrix3d::Identity();
     jac.stiffness.middleRows<6>(6 * reaction_slot) +=
         WrenchStiffness(R.R_WB, reaction_slot, -F, -T, r, -dF, -dT, dr);
+    jac.SetSlotForce(reaction_slot, WrenchForce(R.R_WB, -F, -T, r));
   }
   jac.ScatterTo(sink);
 }

@@ -2,6 +2,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/forces/force_jacobian.h"
+#include "libemb/mbs/forces/relative_motion.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/core/system.h"
 
@@ -35,59 +36,46 @@ Bushing::Bushing(std::string name, int marker_i, int marker_j, const Matrix6d& s
 
 Bushing::State Bushing::Calc(const MarkerKinematics& I, const MarkerKinematics& J) const {
   State s;
-  const Eigen::Vector3d d = I.p_WM - J.p_WM;
-  const Eigen::Matrix3d R_JW = J.R_WM.transpose();
-  const Eigen::Vector3d theta = RotationVectorFromRotation(R_JW * I.R_WM);
+  s.rel = CalcRelativeMotion(I, J);
+  const Eigen::Vector3d theta = RotationVectorFromRotation(s.rel.R_JW * I.R_WM);
   s.inv_jacobian = InverseLeftJacobianSO3(theta);
-  s.xi << R_JW * d - x0_, theta;
-  s.xi_dot << R_JW * (I.v_WM - J.v_WM - J.omega_W.cross(d)),
-      s.inv_jacobian * (R_JW * (I.omega_W - J.omega_W));
+  s.xi << s.rel.x - x0_, theta;
+  s.xi_dot << s.rel.x_dot, s.inv_jacobian * s.rel.w;
   return s;
 }
 
 void Bushing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
-  const System& sys = *ctx.system;
-  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
+  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
   const State s = Calc(I, J);
   const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
   const Eigen::Vector3d F_W = J.R_WM * m.head<3>();
   const Eigen::Vector3d T_W = J.R_WM * (s.inv_jacobian.transpose() * m.tail<3>());
-  AddWrench(sys.layout(), I, I.p_WM, F_W, T_W, f);
-  AddWrench(sys.layout(), J, I.p_WM, -F_W, -T_W, f);
+  AddWrenchPair(ctx.system->layout(), I, J, F_W, T_W, f);
 }
 
 void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
   using Eigen::Matrix3d;
   using Eigen::MatrixXd;
   using Eigen::Vector3d;
-  const System& sys = *ctx.system;
-  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
+  const MarkerPair markers = CalcMarkerPair(ctx, i_, j_);
+  const auto& [I, J] = markers;
   const State s = Calc(I, J);
-  const MarkerDerivatives dI = DifferentiateMarker(I, 0, 2), dJ = DifferentiateMarker(J, 1, 2);
-  const Matrix3d R_WJ = J.R_WM, R_JW = R_WJ.transpose();
-  const Vector3d d = I.p_WM - J.p_WM;
+  const auto [dI, dJ] = DifferentiateMarkerPair(markers);
+  const RelativeMotionDerivatives dr = DifferentiateRelativeMotion(s.rel, I, J, dI, dJ);
+  const Matrix3d R_WJ = J.R_WM, R_JW = s.rel.R_JW;
   const Vector3d theta = s.xi.tail<3>();
   const Matrix3d& Jinv = s.inv_jacobian;
 
-  // xi = [R_JW d - x0; theta]: d(R_JW y) = R_JW (dy + [y x] dphi_j) for a world vector y.
-  const MatrixXd dd_x = dI.point_x - dJ.point_x;
+  // xi = [x - x0; theta], xi' = [x'; J_l^{-1}(theta) w] (relative_motion.h for x, x', w).
   MatrixXd dxi_x(6, 12), dxi_dot_x(6, 12), dxi_dot_v(6, 12);
-  dxi_x.topRows<3>() = R_JW * (dd_x + Skew(d) * dJ.rotation_x);
+  dxi_x.topRows<3>() = dr.x_x;
   dxi_x.bottomRows<3>() = Jinv * R_JW * (dI.rotation_x - dJ.rotation_x);
-  // x' = R_JW y, y = d' - omega_J x d.
-  const Vector3d y = I.v_WM - J.v_WM - J.omega_W.cross(d);
-  const MatrixXd dy_x =
-      dI.velocity_x - dJ.velocity_x + Skew(d) * dJ.omega_x - Skew(J.omega_W) * dd_x;
-  dxi_dot_x.topRows<3>() = R_JW * (dy_x + Skew(y) * dJ.rotation_x);
-  dxi_dot_v.topRows<3>() = R_JW * (dI.velocity_v - dJ.velocity_v + Skew(d) * dJ.omega_v);
-  // theta' = J_l^{-1}(theta) R_JW (omega_I - omega_J).
-  const Vector3d w_rel = I.omega_W - J.omega_W;
+  dxi_dot_x.topRows<3>() = dr.x_dot_x;
+  dxi_dot_v.topRows<3>() = dr.x_dot_v;
   dxi_dot_x.bottomRows<3>() =
-      InverseLeftJacobianSO3ProductDerivative(theta, R_JW * w_rel, false) * dxi_x.bottomRows<3>() +
-      Jinv * R_JW * (dI.omega_x - dJ.omega_x + Skew(w_rel) * dJ.rotation_x);
-  dxi_dot_v.bottomRows<3>() = Jinv * R_JW * (dI.omega_v - dJ.omega_v);
+      InverseLeftJacobianSO3ProductDerivative(theta, s.rel.w, false) * dxi_x.bottomRows<3>() +
+      Jinv * dr.w_x;
+  dxi_dot_v.bottomRows<3>() = Jinv * dr.w_v;
 
   // m = -(K xi + D xi'); F = R_WJ m_x, T = R_WJ J_l^{-T} m_r.
   const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
@@ -103,36 +91,26 @@ void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sin
       Jinv.transpose() * dm_x.bottomRows<3>();
   const MatrixXd dT_x = R_WJ * dtau_x - Skew(T) * dJ.rotation_x;
   const MatrixXd dT_v = R_WJ * Jinv.transpose() * dm_v.bottomRows<3>();
-
-  // Both loads act at p_WI: arm s_WI on I's body, p_WI - p_WJbody on J's.
-  const Vector3d r_j = I.p_WM - (J.p_WM - J.s_W);
-  MatrixXd dr_j = dI.point_x;
-  dr_j.block<3, 3>(0, 6) -= Matrix3d::Identity();
-  LocalForceJacobian jac({&I, &J});
-  jac.stiffness.topRows<6>() = WrenchStiffness(I.R_WB, 0, F, T, I.s_W, dF_x, dT_x, dI.arm_x);
-  jac.stiffness.bottomRows<6>() = WrenchStiffness(J.R_WB, 1, -F, -T, r_j, -dF_x, -dT_x, dr_j);
-  jac.damping.topRows<6>() = WrenchDamping(I.R_WB, I.s_W, dF_v, dT_v);
-  jac.damping.bottomRows<6>() = WrenchDamping(J.R_WB, r_j, -dF_v, -dT_v);
-  jac.ScatterTo(sink);
+  ScatterWrenchPairJacobian(I, J, dI, dJ, F, T, dF_x, dT_x, dF_v, dT_v, sink);
 }
 
 bool Bushing::DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const {
-  const State s = Calc(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
-                       CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
+  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const State s = Calc(I, J);
   const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
   *load << m.head<3>(), s.inv_jacobian.transpose() * m.tail<3>();
   return true;
 }
 
 double Bushing::DoCalcPotentialEnergy(const ForceContext& ctx) const {
-  const State s = Calc(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
-                       CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
+  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const State s = Calc(I, J);
   return 0.5 * s.xi.dot(k_ * s.xi);
 }
 
 double Bushing::DoCalcDissipatedPower(const ForceContext& ctx) const {
-  const State s = Calc(CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_),
-                       CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_));
+  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const State s = Calc(I, J);
   return s.xi_dot.dot(d_ * s.xi_dot);
 }
 

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "libemb/mbs/core/force_element.h"
+#include "libemb/mbs/forces/relative_motion.h"
 
 namespace emb::mbs {
 
@@ -48,6 +49,7 @@ class Bushing : public ForceElement {
 
  private:
   struct State {
+    RelativeMotion rel;  ///< x, x', w of I in J
     Vector6d xi, xi_dot;
     Eigen::Matrix3d inv_jacobian;  ///< J_l^{-1}(theta)
   };

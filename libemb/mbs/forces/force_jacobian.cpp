@@ -20,15 +20,6 @@ void AddBodyBlock(const StateLayout& L, int a, int b, const Eigen::MatrixXd& K,
   });
 }
 
-// [I E] of a slot's marker (6 x body_nv).
-Eigen::MatrixXd SlotMap(const MarkerKinematics& M) {
-  const auto ne = M.E.cols();
-  Eigen::MatrixXd X(6, 6 + ne);
-  X.leftCols<6>().setIdentity();
-  if (ne) X.rightCols(ne) = M.E;
-  return X;
-}
-
 }  // namespace
 
 void DenseForceJacobian::AddStiffness(int a, int b, const Eigen::MatrixXd& K) {
@@ -42,27 +33,47 @@ void DenseForceJacobian::AddDamping(int a, int b, const Eigen::MatrixXd& D) {
 LocalForceJacobian::LocalForceJacobian(std::vector<const MarkerKinematics*> slot_markers)
     : stiffness(Eigen::MatrixXd::Zero(6 * slot_markers.size(), 6 * slot_markers.size())),
       damping(Eigen::MatrixXd::Zero(6 * slot_markers.size(), 6 * slot_markers.size())),
-      markers_(std::move(slot_markers)) {
+      markers_(std::move(slot_markers)),
+      slot_force_(Eigen::VectorXd::Zero(6 * markers_.size())),
+      slot_force_set_(markers_.size(), false) {
   for (const auto* m : markers_) EMB_CHECK(m != nullptr);
+}
+
+void LocalForceJacobian::SetSlotForce(int slot, const Eigen::Matrix<double, 6, 1>& f6) {
+  EMB_CHECK(slot >= 0 && slot < num_slots());
+  slot_force_.segment<6>(6 * slot) = f6;
+  slot_force_set_[slot] = true;
 }
 
 void LocalForceJacobian::ScatterTo(ForceJacobianSink* sink) const {
   EMB_CHECK(sink != nullptr);
-  std::vector<Eigen::MatrixXd> X(markers_.size());
-  for (int a = 0; a < num_slots(); ++a)
-    if (markers_[a]->flexible()) X[a] = SlotMap(*markers_[a]);
   for (int a = 0; a < num_slots(); ++a) {
-    if (markers_[a]->body == 0) continue;
+    const MarkerKinematics& Ma = *markers_[a];
+    if (Ma.body == 0) continue;
+    EMB_CHECK(!Ma.flexible() || slot_force_set_[a]);
     for (int b = 0; b < num_slots(); ++b) {
-      if (markers_[b]->body == 0) continue;
+      const MarkerKinematics& Mb = *markers_[b];
+      if (Mb.body == 0) continue;
       Eigen::MatrixXd K = stiffness.block<6, 6>(6 * a, 6 * b);
       Eigen::MatrixXd D = damping.block<6, 6>(6 * a, 6 * b);
-      if (X[a].size()) K = X[a].transpose() * K, D = X[a].transpose() * D;
-      if (X[b].size()) K = K * X[b], D = D * X[b];
-      sink->AddStiffness(markers_[a]->body, markers_[b]->body, K);
-      sink->AddDamping(markers_[a]->body, markers_[b]->body, D);
+      if (Ma.flexible()) K = Ma.map.transpose() * K, D = Ma.map.transpose() * D;
+      if (Mb.flexible()) {
+        K = K * Mb.map + D * Mb.map_rate;
+        D = D * Mb.map;
+      }
+      if (a == b && Ma.flexible())
+        K += CalcMarkerCurvature(Ma, slot_force_.segment<6>(6 * a));
+      sink->AddStiffness(Ma.body, Mb.body, K);
+      sink->AddDamping(Ma.body, Mb.body, D);
     }
   }
+}
+
+Eigen::Matrix<double, 6, 1> WrenchForce(const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& F,
+                                        const Eigen::Vector3d& T, const Eigen::Vector3d& r) {
+  Eigen::Matrix<double, 6, 1> f6;
+  f6 << F, R_WB.transpose() * (T + r.cross(F));
+  return f6;
 }
 
 MarkerDerivatives DifferentiateMarker(const MarkerKinematics& M, int slot, int num_slots) {

@@ -57,9 +57,13 @@ class DenseForceJacobian final : public ForceJacobianSink {
 };
 
 /// An element's derivatives in its local slots (see the file comment). A slot is the
-/// (virtual rigid) body of one marker (kinematics.h): on a flexible body, its 6 columns
-/// stand for [I E] of the body's coordinates, and ScatterTo expands a block K_ab into
-/// [I E_a]^T K_ab [I E_b] (the derivatives of E are left out: iteration matrices only).
+/// (virtual rigid) body of one marker (kinematics.h): on a flexible body, the marker frame,
+/// whose displacement and velocity are map [dx_b] and map V of the body's coordinates.
+/// ScatterTo takes a block to the bodies' coordinates by the exact chain rule:
+///   K_ab -> map_a^T (K_ab map_b + D_ab map_rate_b) + [a == b] Curvature_a(f_a),
+///   D_ab -> map_a^T D_ab map_b,
+/// where f_a is the generalised force the element puts on slot a (SetSlotForce; required for
+/// every slot on a flexible body) and a rigid slot's map is the identity.
 class LocalForceJacobian {
  public:
   /// `slot_markers[s]` is the marker of slot s (its body may be the ground).
@@ -68,13 +72,24 @@ class LocalForceJacobian {
   int num_columns() const { return 6 * num_slots(); }
   /// Rows of f_a (slot a), columns X or V: 6 s x 6 s.
   Eigen::MatrixXd stiffness, damping;
+  /// The generalised force [F (W); moment about the slot's origin in its axes] the element
+  /// applies to slot `slot` (WrenchForce), for the curvature of a flexible slot's map.
+  void SetSlotForce(int slot, const Eigen::Matrix<double, 6, 1>& f6);
   /// Adds every (slot a, slot b) block with both bodies off the ground to `sink`: always
   /// the same blocks for the same slots, whatever the values (a fixed sparse structure).
+  /// @throws InternalError if a flexible slot has no slot force.
   void ScatterTo(ForceJacobianSink* sink) const;
 
  private:
   std::vector<const MarkerKinematics*> markers_;
+  Eigen::VectorXd slot_force_;
+  std::vector<bool> slot_force_set_;
 };
+
+/// [F; R_WB^T (T + r x F)]: the generalised force on a (virtual) body of axes R_WB of a force
+/// F [N] at arm r [m] from its origin and a couple T [N m] (F, T, r in W).
+Eigen::Matrix<double, 6, 1> WrenchForce(const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& F,
+                                        const Eigen::Vector3d& T, const Eigen::Vector3d& r);
 
 /// World-frame derivatives of marker M on the body of slot `slot` (3 x 6 num_slots each).
 struct MarkerDerivatives {

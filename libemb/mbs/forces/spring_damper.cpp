@@ -56,6 +56,8 @@ void TranslationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
   const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
   LocalForceJacobian jac({&I, &J});
   const State s = Calc(ctx);
+  jac.SetSlotForce(0, Eigen::Matrix<double, 6, 1>::Zero());
+  jac.SetSlotForce(1, Eigen::Matrix<double, 6, 1>::Zero());
   if (s.length > 0.0) {
     const MarkerDerivatives dI = DifferentiateMarker(I, 0, 2), dJ = DifferentiateMarker(J, 1, 2);
     const Eigen::Vector3d d_dot = I.v_WM - J.v_WM;
@@ -76,6 +78,8 @@ void TranslationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
         WrenchStiffness(J.R_WB, 1, -F, zero, J.s_W, -dF_x, zero_d, dJ.arm_x);
     jac.damping.topRows<6>() = WrenchDamping(I.R_WB, I.s_W, dF_v, zero_d);
     jac.damping.bottomRows<6>() = WrenchDamping(J.R_WB, J.s_W, -dF_v, zero_d);
+    jac.SetSlotForce(0, WrenchForce(I.R_WB, F, zero, I.s_W));
+    jac.SetSlotForce(1, WrenchForce(J.R_WB, -F, zero, J.s_W));
   }
   jac.ScatterTo(sink);
 }
@@ -154,6 +158,8 @@ void RotationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
   jac.stiffness = -s.gradient.transpose() * (k_ * s.gradient + c_ * s.velocity.transpose() * H) -
                   tau * H;
   jac.damping = -c_ * s.gradient.transpose() * s.gradient;
+  jac.SetSlotForce(0, -tau * s.gradient.head<6>().transpose());
+  jac.SetSlotForce(1, -tau * s.gradient.tail<6>().transpose());
   jac.ScatterTo(sink);
 }
 

@@ -162,14 +162,14 @@ TEST(GglDae, KluAndDenseRunsAgree) {
   ASSERT_TRUE(r.ok()) << r.message;
   s.ida.rtol = 1e-9;
   s.ida.atol = 1e-11;
-  s.ida.linear_solver = IdaLinearSolver::kDense;
+  s.ida.linear_solver = LinearSolverKind::kDense;
   r = RunAnalysis(PrepareRun(sys, s), s, [&](const Sample& smp) { q_dense = smp.q; });
   ASSERT_TRUE(r.ok()) << r.message;
-  EXPECT_EQ(r.linear_solver, IdaLinearSolver::kDense);
-  s.ida.linear_solver = IdaLinearSolver::kKlu;
+  EXPECT_EQ(r.linear_solver, LinearSolverKind::kDense);
+  s.ida.linear_solver = LinearSolverKind::kKlu;
   r = RunAnalysis(PrepareRun(sys, s), s, [&](const Sample& smp) { q_klu = smp.q; });
   ASSERT_TRUE(r.ok()) << r.message;
-  EXPECT_EQ(r.linear_solver, IdaLinearSolver::kKlu);
+  EXPECT_EQ(r.linear_solver, LinearSolverKind::kKlu);
   EXPECT_LT(r.jacobian_nonzeros, 48L * 48L);
   // emb's KLU solver: one pivoted factorisation, then (almost) only refactorisations.
   EXPECT_EQ(r.ida_stats.full_factorizations + r.ida_stats.refactorizations,

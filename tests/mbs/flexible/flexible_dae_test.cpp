@@ -4,39 +4,44 @@
 
 #include <gtest/gtest.h>
 
-#include <sstream>
+#include <memory>
 
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/analysis/ggl_dae.h"
-#include "libemb/scene/scene.h"
-#include "tests/support/flexible_bar.h"
+#include "libemb/mbs/flexible/flexible_body.h"
+#include "libemb/mbs/forces/bushing.h"
 #include "tests/support/dae_differences.h"
+#include "tests/support/flexible_bar.h"
 
 namespace emb {
 namespace {
 
 // A flexible bar pinned at x0, held at x1 by a bushing, spinning about the pin, with
 // gravity: every flexible term (inertia coupling, constraints and force elements through
-// interface markers) is active.
-scene::Scene Model() {
+// interface markers) is active. Built in C++ (mbs/flexible/flexible_body.h).
+mbs::System Model() {
   testing::BarSpec bar;
   bar.interfaces = {"x0:rbe2", "x1:rbe3"};
   bar.modes = 4;
   bar.damping_ratio = 0.02;
-  std::ostringstream yaml;
-  yaml << "gravity: [0, 0, -9.81]\n"
-       << "bodies:\n  - {name: bar, model: cms, body_file: " << testing::FlexibleBarFile(bar)
-       << ", angular_velocity: [0, 30, 0]}\n"
-       << "markers:\n"
-       << "  - {name: root, body: bar, interface: x0, orientation: {z_axis: [0, 1, 0]}}\n"
-       << "  - {name: tip, body: bar, interface: x1}\n"
-       << "  - {name: pivot, body: ground, frame: world, position: [0, 0.02, 0.015], "
-          "orientation: {z_axis: [0, 1, 0]}}\n"
-       << "  - {name: spring_end, body: ground, frame: world, position: [0.62, 0.02, 0.015]}\n"
-       << "joints:\n  - {name: pin, type: revolute, i: root, j: pivot}\n"
-       << "forces:\n  - {name: tip_mount, type: bushing, i: tip, j: spring_end, "
-          "stiffness: [1.0e5, 2.0e5, 3.0e5, 10, 20, 30], damping_factor: 1.0e-3}\n";
-  return scene::ParseScene(yaml.str(), "flexible_dae.yaml");
+  mbs::System sys;
+  sys.SetGravity(Eigen::Vector3d(0, 0, -9.81));
+  mbs::PartPlacement placement;
+  placement.omega_W = Eigen::Vector3d(0, 30, 0);
+  const mbs::FlexiblePart part =
+      mbs::AddFlexibleBody(&sys, "bar", testing::FlexibleBar(bar), "bar", {}, placement);
+  const Eigen::Matrix3d pin_axes = testing::Axes(Eigen::Vector3d::UnitY());
+  mbs::AddInterfaceMarker(&sys, part, "root", "x0", pin_axes);
+  const int tip = mbs::AddInterfaceMarker(&sys, part, "tip", "x1");
+  sys.AddMarker("pivot", "ground", Eigen::Vector3d(0, 0.02, 0.015), pin_axes);
+  const int spring_end = sys.AddMarker("spring_end", "ground", Eigen::Vector3d(0.62, 0.02, 0.015),
+                                       Eigen::Matrix3d::Identity());
+  sys.AddJoint("pin", mbs::JointType::kRevolute, "root", "pivot");
+  Eigen::Matrix<double, 6, 6> K = Eigen::Matrix<double, 6, 6>::Zero();
+  K.diagonal() << 1.0e5, 2.0e5, 3.0e5, 10, 20, 30;
+  sys.AddForceElement(std::make_shared<mbs::Bushing>("tip_mount", tip, spring_end, K, 1.0e-3 * K));
+  sys.Finalize();
+  return sys;
 }
 
 struct Consistent {
@@ -55,9 +60,9 @@ Consistent MakeConsistent(const mbs::System& sys, const mbs::GglDae& dae) {
 }
 
 TEST(FlexibleDae, ConsistentInitialValuesHaveZeroResidual) {
-  const scene::Scene sc = Model();
-  const mbs::GglDae dae(sc.system);
-  const Consistent c = MakeConsistent(sc.system, dae);
+  const mbs::System sys = Model();
+  const mbs::GglDae dae(sys);
+  const Consistent c = MakeConsistent(sys, dae);
   Eigen::VectorXd r(dae.size());
   ASSERT_TRUE(dae.CalcResidual(0.0, c.y, c.yp, r));
   // Forces ~1e2 N (bushing, centrifugal 5 kg x 30^2 x 0.3 m ~ 1e3 N): round-off level.
@@ -66,9 +71,9 @@ TEST(FlexibleDae, ConsistentInitialValuesHaveZeroResidual) {
 }
 
 TEST(FlexibleDae, IterationMatrixMatchesCentralDifferences) {
-  const scene::Scene sc = Model();
-  const mbs::GglDae dae(sc.system);
-  Consistent c = MakeConsistent(sc.system, dae);
+  const mbs::System sys = Model();
+  const mbs::GglDae dae(sys);
+  Consistent c = MakeConsistent(sys, dae);
   // Off the solution, with a deformation of realistic size (eta ~ 1e-4 kg^0.5 m).
   for (int i = 0; i < c.y.size(); ++i) c.y[i] += 1e-4 * std::sin(1.0 + i);
   const double cj = 1234.5, t = 0.01;

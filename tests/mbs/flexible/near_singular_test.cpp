@@ -14,26 +14,25 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "libemb/mbs/analysis/analysis.h"
-#include "libemb/scene/scene.h"
+#include "libemb/mbs/flexible/flexible_body.h"
 #include "tests/support/flexible_bar.h"
 
 namespace emb {
 namespace {
 
-constexpr double kRodLength = 0.6;                       // the bar of BarSpec [m]
-constexpr double kOmega = 2.0 * std::numbers::pi;        // crank speed, 60 rpm [rad/s]
-constexpr double kRevolutions = 2.0;                     // four near-singular passages
+constexpr double kRodLength = 0.6;                 // the bar of BarSpec [m]
+constexpr double kOmega = 2.0 * std::numbers::pi;  // crank speed, 60 rpm [rad/s]
+constexpr double kRevolutions = 2.0;               // four near-singular passages
 
 struct Case {
-  double eps{1e-3};             // l = r (1 + eps)
+  double eps{1e-3};  // l = r (1 + eps)
   double youngs_modulus{210e9};
   double damping_ratio{0.02};
-  bool rigid_rod{false};        // the same file's mass properties as one rigid body
+  bool rigid_rod{false};  // the same file's mass properties as one rigid body
   double rtol{1e-6};
   double revolutions{kRevolutions};
   bool modal_atol_by_frequency{true};
@@ -43,7 +42,11 @@ struct Case {
   }
 };
 
-scene::Scene Model(const Case& c) {
+// The slider-crank of the file comment, built in C++ (mbs/flexible/flexible_body.h) with the
+// bar of BarSpec as the rod (`rigid_rod`: the same reduced body's mass properties).
+mbs::System Model(const Case& c) {
+  using Eigen::Matrix3d;
+  using Eigen::Vector3d;
   testing::BarSpec bar;
   bar.interfaces = {"x0:rbe2", "x1:rbe2"};
   bar.modes = 4;
@@ -51,58 +54,78 @@ scene::Scene Model(const Case& c) {
   bar.damping_ratio = c.damping_ratio;
   const double r = c.crank_radius(), l = kRodLength;
   const double w = bar.width, h = bar.height;
-  std::ostringstream y;
-  y.precision(17);
-  y << "gravity: [0, -9.81, 0]\n"
-    << "bodies:\n"
-    << "  - {name: crank, mass: 2.0, inertia: [1.0e-4, 0.06, 0.06], position: [" << r / 2
-    << ", 0, 0]}\n"
-    // The bar's mesh spans [0, l] x [0, w] x [0, h]: its x0 face centre goes on the pin.
-    << "  - {name: rod, model: " << (c.rigid_rod ? "rigid" : "cms")
-    << ", body_file: " << testing::FlexibleBarFile(bar) << ", position: [" << r << ", " << -w / 2
-    << ", " << -h / 2 << "]}\n"
-    << "  - {name: slider, mass: 0.5, inertia: [1.0e-4, 1.0e-4, 1.0e-4], position: [" << r + l
-    << ", 0, 0]}\n"
-    << "markers:\n"
-    << "  - {name: o, body: ground, frame: world, position: [0, 0, 0]}\n"
-    << "  - {name: crank_o, body: crank, frame: world, position: [0, 0, 0]}\n"
-    << "  - {name: crank_pin, body: crank, frame: world, position: [" << r << ", 0, 0]}\n"
-    << "  - {name: rod_big, body: rod, interface: x0}\n"
-    // Universal cross axis on the rod: in the plane, normal to the rod.
-    << "  - {name: rod_small, body: rod, interface: x1, orientation: {z_axis: [0, 1, 0], "
-       "x_axis: [0, 0, 1]}}\n"
-    << "  - {name: slider_pin, body: slider, frame: world, position: [" << r + l << ", 0, 0]}\n"
-    << "  - {name: slider_slide, body: slider, frame: world, position: [" << r + l
-    << ", 0, 0], orientation: {z_axis: [1, 0, 0], x_axis: [0, 0, -1]}}\n"
-    << "  - {name: bore, body: ground, frame: world, position: [0, 0, 0], "
-       "orientation: {z_axis: [1, 0, 0], x_axis: [0, 0, -1]}}\n"
-    << "joints:\n"
-    << "  - {name: main, type: revolute, i: crank_o, j: o}\n"
-    << "  - {name: big_end, type: spherical, i: rod_big, j: crank_pin}\n"
-    << "  - {name: small_end, type: universal, i: rod_small, j: slider_pin}\n"
-    << "  - {name: slide, type: translational, i: slider_slide, j: bore}\n"
-    << "motions:\n"
-    << "  - {name: drive, joint: main, coordinate: rotation, function: {polynomial: [0, "
-    << kOmega << "]}}\n"
-    << "analysis: {type: dynamic, t_end: " << c.revolutions * 2 * std::numbers::pi / kOmega
-    << ", output_step: 0.002, rtol: " << c.rtol << ", atol: " << c.rtol * 1e-3 << "}\n";
-  return scene::ParseScene(y.str(), "near_singular.yaml");
+  mbs::System sys;
+  sys.SetGravity(Vector3d(0, -9.81, 0));
+  auto rigid = [&](const std::string& name, double mass, const Vector3d& inertia,
+                   const Vector3d& p_WB) {
+    mbs::RigidBody b;
+    b.name = name;
+    b.mass = mass;
+    b.inertia_B = inertia.asDiagonal();
+    b.p_WB = p_WB;
+    sys.AddBody(b);
+  };
+  // A marker given in world coordinates at the initial configuration (bodies start unrotated).
+  auto world_marker = [&](const std::string& name, const std::string& body, const Vector3d& p_W,
+                          const Matrix3d& R = Matrix3d::Identity()) {
+    const Vector3d p_WB =
+        body == "ground" ? Vector3d::Zero() : Vector3d(sys.body(sys.FindBody(body)).p_WB);
+    sys.AddMarker(name, body, p_W - p_WB, R);
+  };
+  rigid("crank", 2.0, Vector3d(1.0e-4, 0.06, 0.06), Vector3d(r / 2, 0, 0));
+  // The bar's mesh spans [0, l] x [0, w] x [0, h]: its x0 face centre goes on the pin.
+  mbs::FlexibleBodyOptions options;
+  options.flexible = !c.rigid_rod;
+  mbs::PartPlacement placement;
+  placement.p_WM = Vector3d(r, -w / 2, -h / 2);
+  const mbs::FlexiblePart rod =
+      mbs::AddFlexibleBody(&sys, "rod", testing::FlexibleBar(bar), "rod", options, placement);
+  rigid("slider", 0.5, Vector3d::Constant(1.0e-4), Vector3d(r + l, 0, 0));
+  const Matrix3d slide_axes = testing::Axes(Vector3d::UnitX(), -Vector3d::UnitZ());
+  world_marker("o", "ground", Vector3d::Zero());
+  world_marker("crank_o", "crank", Vector3d::Zero());
+  world_marker("crank_pin", "crank", Vector3d(r, 0, 0));
+  mbs::AddInterfaceMarker(&sys, rod, "rod_big", "x0");
+  // Universal cross axis on the rod: in the plane, normal to the rod.
+  mbs::AddInterfaceMarker(&sys, rod, "rod_small", "x1",
+                          testing::Axes(Vector3d::UnitY(), Vector3d::UnitZ()));
+  world_marker("slider_pin", "slider", Vector3d(r + l, 0, 0));
+  world_marker("slider_slide", "slider", Vector3d(r + l, 0, 0), slide_axes);
+  world_marker("bore", "ground", Vector3d::Zero(), slide_axes);
+  sys.AddJoint("main", mbs::JointType::kRevolute, "crank_o", "o");
+  sys.AddJoint("big_end", mbs::JointType::kSpherical, "rod_big", "crank_pin");
+  sys.AddJoint("small_end", mbs::JointType::kUniversal, "rod_small", "slider_pin");
+  sys.AddJoint("slide", mbs::JointType::kTranslational, "slider_slide", "bore");
+  sys.AddMotion("drive", "main", mbs::JointCoordinate::kRotation,
+                mbs::TimeFunction::Polynomial({0.0, kOmega}));
+  sys.Finalize();
+  return sys;
+}
+
+mbs::AnalysisSettings Settings(const Case& c) {
+  mbs::AnalysisSettings s;
+  s.t_end = c.revolutions * 2 * std::numbers::pi / kOmega;
+  s.output_step = 0.002;
+  s.ida.rtol = c.rtol;
+  s.ida.atol = c.rtol * 1e-3;
+  s.modal_velocity_atol_by_frequency = c.modal_atol_by_frequency;
+  return s;
 }
 
 struct Trajectory {
   mbs::RunResult result;
-  std::vector<double> t, x;       // slider position along the slide
-  double max_residual{0.0};       // max |Phi| over the samples
+  std::vector<double> t, x;  // slider position along the slide
+  double max_residual{0.0};  // max |Phi| over the samples
 };
 
 Trajectory Simulate(const Case& c) {
-  scene::Scene sc = Model(c);
-  sc.analysis.modal_velocity_atol_by_frequency = c.modal_atol_by_frequency;
-  const int slider = sc.system.FindBody("slider");
-  const int at = sc.system.layout().position(slider);
-  const mbs::PreparedRun prepared = mbs::PrepareRun(sc.system, sc.analysis);
+  const mbs::System sys = Model(c);
+  const mbs::AnalysisSettings settings = Settings(c);
+  const int slider = sys.FindBody("slider");
+  const int at = sys.layout().position(slider);
+  const mbs::PreparedRun prepared = mbs::PrepareRun(sys, settings);
   Trajectory run;
-  run.result = mbs::RunAnalysis(prepared, sc.analysis, [&](const mbs::Sample& s) {
+  run.result = mbs::RunAnalysis(prepared, settings, [&](const mbs::Sample& s) {
     run.t.push_back(s.t);
     run.x.push_back(s.q[at]);
     run.max_residual = std::max(run.max_residual, s.position_residual);

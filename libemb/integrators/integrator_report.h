@@ -1,0 +1,55 @@
+#pragma once
+/// @file
+/// What an integrator reports: the status of AdvanceTo (a numerical outcome, never an
+/// exception), where it stopped and why, and its work counters. Shared by IDA and
+/// generalized-alpha so that the analyses handle both alike.
+
+#include <string>
+
+namespace emb {
+
+/// Outcome of an integrator's AdvanceTo (IdaSolver, GeneralizedAlphaSolver).
+enum class IntegratorStatus {
+  kSuccess,
+  kTooMuchWork,          ///< max_num_steps reached before t_out
+  kTooMuchAccuracy,      ///< tolerances too tight for double precision
+  kErrorTestFailure,     ///< repeated local error test failures (step size underflow)
+  kConvergenceFailure,   ///< repeated Newton convergence failures
+  kLinearSolverFailure,  ///< singular iteration matrix or setup failure
+  kResidualFailure,      ///< the residual function failed unrecoverably
+  kOtherFailure,
+};
+
+/// Short name of a status ("success", "error-test-failure", ...).
+const char* Name(IntegratorStatus status);
+
+/// Where and why an integrator stopped.
+struct IntegratorReport {
+  IntegratorStatus status{IntegratorStatus::kSuccess};
+  double t{0.0};          ///< time reached [s]
+  double last_step{0.0};  ///< last step size attempted/taken [s]
+  /// Index of the largest weighted local error among the error-tested components.
+  int worst_component{-1};
+  std::string worst_component_name;
+  double worst_weighted_error{0.0};  ///< |e_i| * w_i (1 = at the tolerance)
+  std::string message;               ///< the integrator's own message
+  bool ok() const { return status == IntegratorStatus::kSuccess; }
+};
+
+/// Counters (cumulative since construction).
+struct IntegratorStats {
+  long steps{0};
+  long residual_evals{0};
+  long jacobian_evals{0};
+  /// LU factorisations with pivoting: one per Jacobian evaluation with kDense; with kKlu the
+  /// first one and those after a refactorisation was rejected (klu_factorization.h).
+  long full_factorizations{0};
+  /// kKlu only: accepted refactorisations with the pivot order of the last full one.
+  long refactorizations{0};
+  long error_test_failures{0};
+  long nonlinear_convergence_failures{0};
+  int last_order{0};  ///< BDF order of the last step (IDA); 2 for generalized-alpha
+  double last_step{0.0};
+};
+
+}  // namespace emb
