@@ -113,6 +113,15 @@ struct ResultsFile {
                  "'" << path << "': the state layout record (values_per_body, *_column) puts a "
                      << "block outside a body's values; expected blocks within them (damaged "
                         "file?)");
+    for (auto [dataset, stride] : {std::pair{"/state/q", state.q_stride},
+                                   std::pair{"/state/v", state.v_stride}})
+      if (h5.Exists(dataset)) {
+        const auto shape = h5.Shape(dataset);  // two dimensions (checked above)
+        EMB_THROW_IF(shape[1] != stride * bodies.size(),
+                     "'" << path << "': " << dataset << " has " << shape[1] << " columns; "
+                         << "expected values_per_body x bodies = " << stride << " x "
+                         << bodies.size() << " (damaged file?)");
+      }
   }
   /// Column `col` of the [rows, width] dataset `path`, its first n rows.
   std::vector<double> Column(const std::string& path, std::size_t col) const {

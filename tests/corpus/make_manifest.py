@@ -742,6 +742,10 @@ RESULTS_MUTATIONS = {
     "q_nan": (["fill", "/state/q", "nan"], 1, []),
     "huge_q": (["huge", "/state/q"], 1, ["/state/q"]),
     "bodies_ints": (["replace", "/model/bodies", [1], "i4"], 1, ["/model/bodies"]),
+    "layout_stride_huge": (["set_attr", "/state/q", "values_per_body", "1000000", "int"], 1, ["values_per_body"]),
+    "layout_stride_negative": (["set_attr", "/state/q", "values_per_body", "-7", "int"], 1, ["values_per_body"]),
+    "layout_quaternion_outside": (["set_attr", "/state/q", "quaternion_column", "5", "int"], 1, ["layout"]),
+    "layout_stride_too_wide": (["set_attr", "/state/q", "values_per_body", "60", "int"], 1, ["/state/q"]),
     "status_running": (["set_attr", "/", "status", "running", "str"], 0, ["unfinished", "running"]),
     "status_interrupted": (["set_attr", "/", "status", "interrupted", "str"], 0, ["unfinished", "interrupted"]),
     "status_missing": (["del_attr", "/", "status"], 0, ["unfinished"]),
@@ -758,6 +762,38 @@ case("results_missing", "results", ["spectrum", "nowhere.h5", "-q", "--channel",
                                     "--rpm", "60"], 1, ["nowhere.h5"])
 case("results_csv_is_input", "results", [*SPEC[:-2], "--angle", "disc", "--csv", "r.h5"], 1,
      ["is the input"], [("copy", "{fix}/disc.h5", "r.h5")], unchanged=["r.h5"])
+
+# --- numerical failures inside a run: a status, a message, exit 3, a file marked so -------
+
+BEARING = """name: bearing
+bodies:
+  - {name: rod, mass: 1.0, inertia: [1.0e-4, 0.083, 0.083], position: [0.5, Y0, 0]}
+markers:
+  - {name: pivot, body: ground, position: [0, 0, 0]}
+  - {name: rod_top, body: rod, position: [-0.5, 0, 0]}
+joints:
+  - {name: guide, type: planar, i: rod_top, j: pivot}
+forces:
+  - {name: brg, type: journal-bearing, i: rod_top, j: pivot, radius: 0.02, length: 0.02,
+     clearance: 1.0e-5, viscosity: 1.0e-4}
+  - {name: push, type: force, marker: rod_top, direction: [0, -1, 0], function: {constant: LOAD}}
+analysis: {type: dynamic, t_end: 0.01, output_step: 0.001INTEGRATOR}
+"""
+for key, y0, load, integrator, status in (
+        ("start", "-2.0e-5", "0", "", "failed"),  # eccentricity 2 at t = 0
+        ("ida", "0", "1.0e12", "", "integrator-failure"),  # pushed through the film
+        ("generalized_alpha", "0", "1.0e12", ", integrator: generalized-alpha",
+         "integrator-failure")):
+    case(f"numerical_bearing_touches_{key}", "numerical", ["run", "s.yaml", "-q", "-o", "r.h5"],
+         3, ["journal bearing 'brg'", "eccentricity ratio"],
+         [("write", "s.yaml", BEARING.replace("Y0", y0).replace("LOAD", load)
+           .replace("INTEGRATOR", integrator))],
+         h5_attr=[("r.h5", "status", status)], timeout=30)
+case("numerical_too_much_work", "numerical", ["run", "s.yaml", "-q", "-o", "r.h5"], 3,
+     ["too-much-work", "max_steps"], [("write", "s.yaml", replaced("output_step: 0.01}",
+                                                                  "output_step: 0.01, "
+                                                                  "max_steps: 2}"))],
+     h5_attr=[("r.h5", "status", "integrator-failure")], timeout=30)
 
 # --- I/O faults ---------------------------------------------------------------------------
 
