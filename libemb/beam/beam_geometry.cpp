@@ -68,7 +68,8 @@ std::vector<BeamInterface> SurfaceGroupCentroids(const std::string& path) {
   std::vector<BeamInterface> out;
   gmsh::vectorpair groups;
   GmshCall("read surface groups of", path, [&] { gmsh::model::getPhysicalGroups(groups, 2); });
-  for (const auto& [dim, tag] : groups) {
+  for (const auto& group : groups) {
+    const int dim = group.first, tag = group.second;  // captured below (clang 14: no bindings)
     BeamInterface itf;
     std::vector<int> surfaces;
     GmshCall("read surface group " + std::to_string(tag) + " of", path, [&] {
@@ -227,7 +228,8 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
     gmsh::vectorpair groups;
     GmshCall("read physical groups of", path, [&] { gmsh::model::getPhysicalGroups(groups, 3); });
     std::string found;
-    for (const auto& [dim, tag] : groups) {
+    for (const auto& group : groups) {
+      const int dim = group.first, tag = group.second;  // captured below (clang 14: no bindings)
       std::string name;
       gmsh::model::getPhysicalName(dim, tag, name);
       found += (found.empty() ? "'" : ", '") + name + "'";

@@ -215,6 +215,11 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
   if ((quantity == "F" || quantity == "T") && is_force_element) {  // /forces/load
     const std::size_t k = std::find(f.forces.begin(), f.forces.end(), owner) - f.forces.begin();
     out.values = f.Column("/forces/load", 6 * k + c + (quantity == "T" ? 3 : 0));
+    EMB_THROW_IF(std::any_of(out.values.begin(), out.values.end(),
+                             [](double v) { return std::isnan(v); }),
+                 "channel '" << channel << "': force element '" << owner
+                             << "' reports no load (F/T channels exist for bushings and journal "
+                                "bearings)");
     return out;
   }
   if (quantity == "F" || quantity == "T") {

@@ -240,8 +240,9 @@ std::vector<std::string> ValidChannelNames(const mbs::System& system) {
       for (const char* q : {"F2", "T2"})
         for (const char* c : xyz) n.push_back(e.name + "." + q + "." + c);
   for (const auto& f : system.force_elements())
-    for (const char* q : {"F", "T"})
-      for (const char* c : xyz) n.push_back(f->name() + "." + q + "." + c);
+    if (f->reports_load())
+      for (const char* q : {"F", "T"})
+        for (const char* c : xyz) n.push_back(f->name() + "." + q + "." + c);
   for (const auto& s : system.sensors())
     for (const char* c : {"dx", "dy", "dz", "rx", "ry", "rz"}) n.push_back(s.name + "." + c);
   for (const char* c : {"kinetic", "gravity", "elastic", "total"})
@@ -255,6 +256,12 @@ void CheckChannels(const mbs::System& system, const std::vector<std::string>& ch
   const std::vector<std::string> valid = ValidChannelNames(system);
   for (const auto& c : channels) {
     const auto it = std::find(valid.begin(), valid.end(), c);
+    const int k = ForceElementIndex(system, c.substr(0, c.find('.')));
+    EMB_THROW_IF(it == valid.end() && k >= 0 && !system.force_elements()[k]->reports_load(),
+                 "output channel '" << c << "': force element '"
+                                    << system.force_elements()[k]->name()
+                                    << "' reports no load (F/T channels exist for bushings and "
+                                       "journal bearings)");
     EMB_THROW_IF(it == valid.end(), "output channel '" << c << "' is unknown"
                                                        << DidYouMean(c, valid)
                                                        << " (channels look like crank.p.x, "

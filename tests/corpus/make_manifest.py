@@ -2,6 +2,7 @@
 """Writes tests/corpus/manifest.json: emb's corpus of bad inputs and faults (issue 14).
 
     /usr/bin/python3 tests/corpus/make_manifest.py      # then commit manifest.json
+    /usr/bin/python3 tests/corpus/make_manifest.py --check   # fails if manifest.json is stale
 
 The cases are built from reading the code — every option of every subcommand, every scene
 key, every dataset and attribute a reader uses — not only from the classes of the issue.
@@ -15,6 +16,7 @@ disc.yaml, disc.h5), {work} the case's directory (also the working directory).
 import base64
 import json
 import os
+import sys
 
 CASES = []
 NAMES = set()
@@ -90,6 +92,17 @@ for key, commands in REFUSED_GEO.items():
         setup.append(("fifo", "pipe.geo"))
     case(f"geo_refuse_{key}", "geo", ["mesh", "part.geo", "-q"], 1,
          ["refusing"], setup, absent=["pwned*"], timeout=20)
+
+# Every command that opens geometry audits it.
+for cmd_key, cmd in {"modes": ["modes", "part.geo", "-q", "-o", "m.h5"],
+                     "reduce": ["reduce", "part.geo", "-q", "-o", "b.h5"],
+                     "compare": ["compare", "part.geo", "-q"]}.items():
+    case(f"geo_refuse_systemcall_{cmd_key}", "geo", cmd, 1, ["refusing", "SystemCall"],
+         [("write", "part.geo", REFUSED_GEO["systemcall"] + BOX)],
+         absent=["pwned*", "m.h5", "b.h5"], timeout=20)
+    case(f"geo_refuse_onelabrun_{cmd_key}", "geo", cmd, 1, ["refusing", "OnelabRun"],
+         [("write", "part.geo", REFUSED_GEO["onelabrun_call"] + BOX)],
+         absent=["pwned*", "m.h5", "b.h5"], timeout=20)
 
 # Hidden behind other files gmsh reads.
 case("geo_include_nested", "geo", ["mesh", "top.geo", "-q"], 1, ["refusing", "c.geo:2"],
@@ -582,6 +595,7 @@ case("scene_output_csv_outside", "scene", ["run", "sub/s.yaml", "-q"], 1, ["outs
      [("write", "sub/s.yaml", PENDULUM + "output: {csv: /etc/emb_corpus.csv, channels: [rod.p.x]}\n")])
 scene("output_unknown_channel", PENDULUM + "output: {file: x.h5, csv: x.csv, channels: [rod.p.w]}\n",
       1, ["rod.p.w"], absent=("x.h5", "x.csv", "out.h5"))
+scene("output_force_without_load", replaced("analysis:", "forces:\n  - {name: spring, type: spring-damper, i: rod_top, j: pivot, stiffness: 10}\nanalysis:") + "output: {csv: x.csv, channels: [spring.F.x]}\n", 1, ["spring", "reports no load"], absent=("out.h5", "x.csv"))
 scene("output_channels_not_list", PENDULUM + "output: {csv: x.csv, channels: rod.p.x}\n", 1,
       ["channels"], absent=("x.csv",))
 case("scene_output_is_directory", "scene", ["run", "s.yaml", "-q"], 1, ["directory"],
@@ -620,6 +634,8 @@ cms("cms_modes_huge", extra="modes: 1.0e9", frags=["modes"])
 cms("cms_modes_too_many", extra="modes: 50", frags=["modes"])
 cms("cms_fmax_zero", extra="fmax_hz: 0", frags=["fmax_hz"])
 cms("cms_fmax_nan", extra="fmax_hz: .nan", frags=["fmax_hz"])
+cms("cms_dynamic_band_zero", extra="dynamic_band_hz: 0", frags=["dynamic_band_hz"])
+cms("cms_dynamic_band_nan", extra="dynamic_band_hz: .nan", frags=["dynamic_band_hz"])
 cms("cms_fmax_below_all", extra="fmax_hz: 1.0e-3", frags=["at or below"])
 cms("cms_modal_coordinates_count", extra="modes: 2, modal_coordinates: [1, 2, 3]", frags=["modal_coordinates"])
 cms("cms_modal_coordinates_nan", extra="modes: 2, modal_coordinates: [.nan, 0]", frags=["modal_coordinates"])
@@ -845,6 +861,18 @@ case("io_save_mesh_is_output", "io", ["modes", "{fix}/bar.geo", "-q", "-o", "x.h
                                       "--save-mesh", "x.h5"], 1, ["same file"], absent=["x.h5"])
 case("io_xdmf_is_input", "io", ["modes", "x.xdmf", "-q", "-o", "x.h5"], 1, [],
      [("copy", "{fix}/bar.msh", "x.xdmf")], unchanged=["x.xdmf"])
+# A run validates all its outputs before it replaces the previous result.
+case("io_previous_result_kept_bad_csv_dir", "io",
+     ["run", "{fix}/pendulum.yaml", "-q", "-o", "out.h5", "--csv", "nowhere/x.csv"], 1,
+     ["nowhere"], [("write", "out.h5", "previous result\n")], unchanged=["out.h5"])
+case("io_previous_result_kept_unknown_channel", "io", ["run", "s.yaml", "-q", "-o", "out.h5"], 1,
+     ["rod.p.w"], [("write", "out.h5", "previous result\n"),
+                   ("write", "s.yaml", PENDULUM + "output: {csv: x.csv, channels: [rod.p.w]}\n")],
+     unchanged=["out.h5"], absent=["x.csv"])
+case("io_previous_result_kept_csv_readonly", "io",
+     ["run", "{fix}/pendulum.yaml", "-q", "-o", "out.h5", "--csv", "ro/x.csv"], 1,
+     ["cannot create files"], [("write", "out.h5", "previous result\n"), ("readonly_dir", "ro")],
+     unchanged=["out.h5"])
 # Concurrent writers: another emb holds the output's lock.
 for key, cmd, lock in (("run", ["run", "{fix}/pendulum.yaml", "-q", "-o", "out.h5"], ".out.h5.lock"),
                        ("modes", ["modes", "{fix}/bar.geo", "-q", "-o", "out.h5"], ".out.h5.lock"),
@@ -890,10 +918,17 @@ def main():
     counts = {}
     for c in CASES:
         counts[c["category"]] = counts.get(c["category"], 0) + 1
-    with open(os.path.join(here, "manifest.json"), "w") as f:
-        json.dump({"generated_by": "tests/corpus/make_manifest.py", "counts": counts,
-                   "fixtures": FIXTURES, "cases": CASES}, f, indent=1)
-        f.write("\n")
+    text = json.dumps({"generated_by": "tests/corpus/make_manifest.py", "counts": counts,
+                       "fixtures": FIXTURES, "cases": CASES}, indent=1) + "\n"
+    path = os.path.join(here, "manifest.json")
+    if "--check" in sys.argv[1:]:  # the committed manifest is the generated one
+        with open(path) as f:
+            if f.read() != text:
+                sys.exit(f"{path} is stale: run /usr/bin/python3 {os.path.abspath(__file__)}")
+        print(f"{path}: up to date, {len(CASES)} cases")
+        return
+    with open(path, "w") as f:
+        f.write(text)
     print(f"{len(CASES)} cases: " + ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
 
 

@@ -38,7 +38,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 FORBIDDEN = ["std::", "stod", "stoi", "_M_range_check", "basic_string", "bad_alloc",
-             "vector::", "terminate called", "what():", "Segmentation", "AddressSanitizer",
+             "vector::", "terminate called", "what():", "Segmentation", "Sanitizer",
              "runtime error:", "core dumped", "Aborted", "HDF5-DIAG"]
 TEMPORARIES = [".*.tmp.*", ".emb-probe-*", ".*.lock"]
 SIGNALS = {"INT": signal.SIGINT, "TERM": signal.SIGTERM, "KILL": signal.SIGKILL}

@@ -87,14 +87,14 @@ struct ModesCommand {
                 {"mode", "frequency [Hz]", "kind", "backward error"});
     const int m = static_cast<int>(modes.frequencies_hz.size());
     for (int k = 0; k < m; ++k) {
-      const bool rigid = std::abs(modes.eig.eigenvalues[k]) < modes.rigid_threshold;
+      const bool rigid = k < modes.num_rigid_modes;
       table.AddRow({static_cast<long long>(k + 1), modes.frequencies_hz[k],
                     std::string(rigid ? "rigid" : "elastic"), modes.eig.backward_errors[k]});
     }
     Summary s("Modal analysis of " + mesh.source);
     s.Add("mesh", "mesh", mesh.Summary());
     s.Add("dofs", "degrees of freedom", sys.num_dofs());
-    s.Add("fixed_dofs", "fixed unknowns", static_cast<long long>(mo.fixed_dofs.size()));
+    s.Add("fixed_dofs", "fixed unknowns", static_cast<long long>(modes.num_fixed_dofs));
     s.Add("mass_kg", "mass [kg]", sys.mass);
     s.Add("status", "status", std::string(Name(modes.eig.status)));
     if (!modes.eig.message.empty()) s.Add("message", "message", modes.eig.message);
