@@ -3,10 +3,12 @@
 # engine cycle of tools/scenes/inline4.yaml, then the share per library and the heaviest
 # functions (self time). Needs perf (Debian linux-perf) and out/crankshaft_i4.h5.
 #   benchmarks/inline4_profile.sh [T_END]      (default 0.04 s = one cycle at 3000 rpm)
-# Results: out/bench_profile/{perf.data,run.json,by_library.txt,by_function.txt}.
+# Raw outputs out/bench_profile/{perf.data,run.json,by_library.txt,by_function.txt}; the
+# numbers go to benchmarks/results/inline4_profile.json.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 emb=${EMB:-$root/build/tools/emb/emb}
+command="bash benchmarks/inline4_profile.sh $*"
 t_end=${1:-0.04}
 dir=$root/out/bench_profile
 command -v perf >/dev/null || { echo "perf is not installed (apt-get install linux-perf)" >&2; exit 1; }
@@ -18,6 +20,5 @@ perf report -i "$dir/perf.data" --no-children --sort dso --stdio -g none 2>/dev/
   grep '%' > "$dir/by_library.txt"
 perf report -i "$dir/perf.data" --no-children --sort symbol --stdio -g none 2>/dev/null |
   grep "%" | sed -n 1,30p | cut -c1-150 > "$dir/by_function.txt"
-/usr/bin/python3 -c "import json; d=json.load(open('$dir/run.json'))['summary']; print('run:', d['status'], d['steps'], 'steps,', d['jacobian_evals'], 'Jacobians,', d['residual_evals'], 'residuals,', round(d['seconds_run'], 2), 's')"
-echo "by library:"; sed -n 1,8p "$dir/by_library.txt"
-echo "by function (self):"; sed -n 1,25p "$dir/by_function.txt"
+/usr/bin/python3 "$root/benchmarks/record.py" profile inline4_profile "$dir" --command "${command% }"
+/usr/bin/python3 "$root/benchmarks/render_tables.py" --print inline4_profile

@@ -2,16 +2,20 @@
 // wall time over a tolerance sweep, for the slider-crank (reference: closed form of the
 // piston position) and the seed's single-cylinder engine, variant (c) (reference: the same
 // run at rtol 1e-10).
-//   build/benchmarks/mbs_work_precision [repeats]
+//   build/benchmarks/mbs_work_precision [repeats] [--json]
 // Prints one line per (model, rtol): IDA steps, residual and Jacobian evaluations, the
 // linear solver the automatic choice took, wall time per run (best of `repeats`), and the
-// max error over the output times; then dense vs KLU on chains of N rods.
+// max error over the output times; then dense vs KLU on chains of N rods. With --json the
+// same numbers as one JSON document on stdout (benchmarks/record.py stores it with the
+// commit and machine in benchmarks/results/mbs_work_precision.json).
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iostream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -52,7 +56,29 @@ Outcome Run(const emb::scene::Scene& sc, AnalysisSettings s, double rtol, int re
   return best;
 }
 
-void PrintRow(const char* model, double rtol, const Outcome& o, double error) {
+// The counters of one run, as a JSON object.
+nlohmann::json Counters(const Outcome& o) {
+  return {{"status", emb::mbs::Name(o.result.status)},
+          {"message", o.result.message},
+          {"steps", o.result.ida_stats.steps},
+          {"residual_evals", o.result.ida_stats.residual_evals},
+          {"jacobian_evals", o.result.ida_stats.jacobian_evals},
+          {"full_factorizations", o.result.ida_stats.full_factorizations},
+          {"jacobian_nonzeros", o.result.jacobian_nonzeros},
+          {"linear_solver", emb::Name(o.result.linear_solver)},
+          {"seconds", o.seconds}};
+}
+
+void PrintRow(const char* model, double rtol, const Outcome& o, double error, bool json,
+              nlohmann::json* rows) {
+  if (json) {
+    nlohmann::json row = Counters(o);
+    row["model"] = model;
+    row["rtol"] = rtol;
+    row["max_error_m"] = error;
+    rows->push_back(row);
+    return;
+  }
   std::printf("%-14s %8.0e %8ld %9ld %7ld %6s %10.4f %12.3e %s\n", model, rtol,
               o.result.ida_stats.steps, o.result.ida_stats.residual_evals,
               o.result.ida_stats.jacobian_evals, emb::Name(o.result.linear_solver), o.seconds,
@@ -62,10 +88,19 @@ void PrintRow(const char* model, double rtol, const Outcome& o, double error) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int repeats = argc > 1 ? std::atoi(argv[1]) : 3;
+  int repeats = 3;
+  bool json = false;
+  for (int k = 1; k < argc; ++k) {
+    if (std::string(argv[k]) == "--json")
+      json = true;
+    else
+      repeats = std::atoi(argv[k]);
+  }
+  nlohmann::json work_precision = nlohmann::json::array(), chains = nlohmann::json::array();
   const std::string dir = std::string(EMB_SOURCE_DIR) + "/tools/scenes/";
-  std::printf("%-14s %8s %8s %9s %7s %6s %10s %12s\n", "model", "rtol", "steps", "residuals",
-              "jacobians", "solver", "wall [s]", "max error");
+  if (!json)
+    std::printf("%-14s %8s %8s %9s %7s %6s %10s %12s\n", "model", "rtol", "steps", "residuals",
+                "jacobians", "solver", "wall [s]", "max error");
 
   // Slider-crank, one crank revolution at 600 rpm, piston position vs the closed form.
   {
@@ -80,7 +115,7 @@ int main(int argc, char** argv) {
         const double x = r * std::cos(a) + std::sqrt(l * l - r * r * std::sin(a) * std::sin(a));
         err = std::max(err, std::abs(o.q[k][sc.system.layout().position(piston)] - x));
       }
-      PrintRow("slider-crank", rtol, o, err);
+      PrintRow("slider-crank", rtol, o, err, json, &work_precision);
     }
   }
   // Single-cylinder engine (c): 2 DOF, bushing big end, gas force; one 4-stroke cycle.
@@ -97,13 +132,14 @@ int main(int argc, char** argv) {
                                ref.q[k].segment<3>(sc.system.layout().position(b)))
                                   .cwiseAbs()
                                   .maxCoeff());
-      PrintRow("engine (c)", rtol, o, err);
+      PrintRow("engine (c)", rtol, o, err, json, &work_precision);
     }
   }
   // Linear solver: a chain of N rods (planar, revolute joints), 1 s, rtol 1e-6, dense vs KLU
   // (dense skipped at 64 links: ~0.5 s per factorisation of the 1536-unknown matrix).
-  std::printf("\n%-14s %8s %8s %9s %7s %7s %9s %10s\n", "chain", "solver", "steps", "residuals",
-              "jacobians", "full LU", "nnz", "wall [s]");
+  if (!json)
+    std::printf("\n%-14s %8s %8s %9s %7s %7s %9s %10s\n", "chain", "solver", "steps", "residuals",
+                "jacobians", "full LU", "nnz", "wall [s]");
   for (int n : {1, 2, 4, 16, 32, 64}) {
     emb::mbs::System chain;
     const double l = 0.3;
@@ -131,7 +167,16 @@ int main(int argc, char** argv) {
     for (auto ls : {emb::LinearSolverKind::kDense, emb::LinearSolverKind::kKlu}) {
       if (n > 32 && ls == emb::LinearSolverKind::kDense) continue;
       sc.analysis.ida.linear_solver = ls;
-      const Outcome o = Run(sc, sc.analysis, 1e-6, n > 16 ? 1 : 3);
+      const int chain_repeats = n > 16 ? 1 : 3;
+      const Outcome o = Run(sc, sc.analysis, 1e-6, chain_repeats);
+      if (json) {
+        nlohmann::json row = Counters(o);
+        row["bodies"] = n;
+        row["unknowns"] = 24 * n;
+        row["repeats"] = chain_repeats;
+        chains.push_back(row);
+        continue;
+      }
       std::printf("%-14d %8s %8ld %9ld %7ld %7ld %9ld %10.4f %s\n", n, emb::Name(ls),
                   o.result.ida_stats.steps, o.result.ida_stats.residual_evals,
                   o.result.ida_stats.jacobian_evals, o.result.ida_stats.full_factorizations,
@@ -139,5 +184,11 @@ int main(int argc, char** argv) {
                   o.result.ok() ? "" : o.result.message.c_str());
     }
   }
+  if (json)
+    std::cout << nlohmann::json{{"repeats", repeats},
+                                {"work_precision", work_precision},
+                                {"chains", chains}}
+                     .dump(1)
+              << std::endl;
   return 0;
 }

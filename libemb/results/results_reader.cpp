@@ -277,4 +277,18 @@ ResultsChannel ReadBodyRotationAngle(const std::string& path, const std::string&
   return out;
 }
 
+ResultsSteadyState ReadResultsSteadyState(const std::string& path) {
+  const ResultsFile f(path);
+  ResultsSteadyState s;
+  s.present = f.h5.HasAttribute("/", "steady_state_converged");
+  if (!s.present) return s;
+  s.converged = f.h5.ReadIntAttribute("/", "steady_state_converged") != 0;
+  s.cycles = static_cast<int>(f.h5.ReadIntAttribute("/", "steady_state_cycles"));
+  s.change = f.h5.ReadDoubleAttribute("/", "steady_state_change");
+  s.tolerance = f.h5.ReadDoubleAttribute("/", "steady_state_tolerance");
+  s.cycle_start = f.h5.ReadDoubleAttribute("/", "steady_state_cycle_start");
+  s.cycle_end = f.h5.ReadDoubleAttribute("/", "steady_state_cycle_end");
+  return s;
+}
+
 }  // namespace emb::scene

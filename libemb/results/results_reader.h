@@ -42,4 +42,15 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
 ResultsChannel ReadBodyRotationAngle(const std::string& path, const std::string& body,
                                      const std::string& axis, double start_deg);
 
+/// The steady-state search of a run (ResultsWriter::RecordSteadyState), if it had one.
+struct ResultsSteadyState {
+  bool present{false};    ///< the run searched for a periodic steady state
+  bool converged{false};  ///< and found it
+  int cycles{0};
+  double change{0.0}, tolerance{0.0};
+  double cycle_start{0.0}, cycle_end{0.0};  ///< the last (steady) cycle [s]
+};
+/// @throws InputError for a file that is not emb-mbs-results.
+ResultsSteadyState ReadResultsSteadyState(const std::string& path);
+
 }  // namespace emb::scene

@@ -2,7 +2,6 @@
 
 #include <iomanip>
 
-#include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
 #include "libemb/mbs/core/rotation.h"
 
@@ -203,118 +202,21 @@ void ResultsWriter::Finish(const mbs::RunResult& r) {
   file_.Flush();
 }
 
-namespace {
-
-int ElementIndex(const mbs::System& system, const std::string& name) {
-  for (std::size_t k = 0; k < system.elements().size(); ++k)
-    if (system.elements()[k].name == name) return static_cast<int>(k);
-  return -1;
-}
-int ForceElementIndex(const mbs::System& system, const std::string& name) {
-  for (std::size_t k = 0; k < system.force_elements().size(); ++k)
-    if (system.force_elements()[k]->name() == name) return static_cast<int>(k);
-  return -1;
-}
-int SensorIndex(const mbs::System& system, const std::string& name) {
-  for (std::size_t k = 0; k < system.sensors().size(); ++k)
-    if (system.sensors()[k].name == name) return static_cast<int>(k);
-  return -1;
-}
-
-}  // namespace
-
-std::vector<std::string> ValidChannelNames(const mbs::System& system) {
-  std::vector<std::string> n;
-  const char* xyz[] = {"x", "y", "z"};
-  for (int b = 1; b < system.num_bodies(); ++b) {
-    const std::string& name = system.body(b).name;
-    for (const char* q : {"p", "v", "a", "omega"})
-      for (const char* c : xyz) n.push_back(name + "." + q + "." + c);
-    for (const char* c : {"psi", "theta", "phi"}) n.push_back(name + ".euler." + c);
-  }
-  for (const auto& e : system.elements())
-    for (const char* q : {"F", "T"})
-      for (const char* c : xyz) n.push_back(e.name + "." + q + "." + c);
-  for (const auto& e : system.elements())
-    if (e.kind == mbs::ElementKind::kCoupler)
-      for (const char* q : {"F2", "T2"})
-        for (const char* c : xyz) n.push_back(e.name + "." + q + "." + c);
-  for (const auto& f : system.force_elements())
-    if (f->reports_load())
-      for (const char* q : {"F", "T"})
-        for (const char* c : xyz) n.push_back(f->name() + "." + q + "." + c);
-  for (const auto& s : system.sensors())
-    for (const char* c : {"dx", "dy", "dz", "rx", "ry", "rz"}) n.push_back(s.name + "." + c);
-  for (const char* c : {"kinetic", "gravity", "elastic", "total"})
-    n.push_back(std::string("energy.") + c);
-  n.push_back("residual.position");
-  n.push_back("residual.velocity");
-  return n;
-}
-
-void CheckChannels(const mbs::System& system, const std::vector<std::string>& channels) {
-  const std::vector<std::string> valid = ValidChannelNames(system);
-  for (const auto& c : channels) {
-    const auto it = std::find(valid.begin(), valid.end(), c);
-    const int k = ForceElementIndex(system, c.substr(0, c.find('.')));
-    EMB_THROW_IF(it == valid.end() && k >= 0 && !system.force_elements()[k]->reports_load(),
-                 "output channel '" << c << "': force element '"
-                                    << system.force_elements()[k]->name()
-                                    << "' reports no load (F/T channels exist for bushings and "
-                                       "journal bearings)");
-    EMB_THROW_IF(it == valid.end(), "output channel '" << c << "' is unknown"
-                                                       << DidYouMean(c, valid)
-                                                       << " (channels look like crank.p.x, "
-                                                          "main.F.y, energy.total)");
-  }
+void ResultsWriter::RecordSteadyState(const SteadyStateReport& report,
+                                      const SteadyStateSettings& settings) {
+  file_.SetAttribute("/", "steady_state_converged", static_cast<long long>(report.converged));
+  file_.SetAttribute("/", "steady_state_cycles", static_cast<long long>(report.cycles));
+  file_.SetAttribute("/", "steady_state_change", report.change);
+  file_.SetAttribute("/", "steady_state_tolerance", settings.tolerance);
+  file_.SetAttribute("/", "steady_state_worst_channel", report.worst_channel);
+  file_.SetAttribute("/", "steady_state_cycle_start", report.cycle_start);
+  file_.SetAttribute("/", "steady_state_cycle_end", report.cycle_end);
+  file_.Flush();
 }
 
 CsvWriter::CsvWriter(const std::string& path, const mbs::System& system,
                      const std::vector<std::string>& channels)
-    : system_(system), path_(path) {
-  CheckChannels(system, channels);
-  for (const auto& c : channels) {
-    const auto dot1 = c.find('.');
-    const auto dot2 = c.rfind('.');
-    const std::string owner = c.substr(0, dot1);
-    const std::string quantity = c.substr(dot1 + 1, dot2 - dot1 - 1);
-    const std::string comp = c.substr(dot2 + 1);
-    Channel ch{Channel::Kind::kPosition, 0, 0};
-    const std::vector<std::string> comps = {"x", "y", "z"};
-    auto comp_index = [&](const std::vector<std::string>& names) {
-      return static_cast<int>(std::find(names.begin(), names.end(), comp) - names.begin());
-    };
-    if (owner == "energy") {
-      ch = {Channel::Kind::kEnergy, 0, comp_index({"kinetic", "gravity", "elastic", "total"})};
-    } else if (owner == "residual") {
-      ch = {Channel::Kind::kResidual, 0, comp_index({"position", "velocity"})};
-    } else if (SensorIndex(system, owner) >= 0) {
-      ch = {Channel::Kind::kSensor, SensorIndex(system, owner),
-            comp_index({"dx", "dy", "dz", "rx", "ry", "rz"})};
-    } else if ((quantity == "F" || quantity == "T") && ElementIndex(system, owner) < 0) {
-      ch = {Channel::Kind::kForceElement, ForceElementIndex(system, owner),
-            comp_index(comps) + (quantity == "T" ? 3 : 0)};
-    } else if (quantity == "F" || quantity == "T") {
-      ch = {quantity == "F" ? Channel::Kind::kForce : Channel::Kind::kTorque,
-            system.FindElement(owner), comp_index(comps)};
-    } else if (quantity == "F2" || quantity == "T2") {
-      ch = {quantity == "F2" ? Channel::Kind::kForce : Channel::Kind::kTorque,
-            system.second_reaction_port(system.FindElement(owner)), comp_index(comps)};
-    } else {
-      const int b = system.FindBody(owner);
-      if (quantity == "euler")
-        ch = {Channel::Kind::kEuler, b, comp_index({"psi", "theta", "phi"})};
-      else if (quantity == "p")
-        ch = {Channel::Kind::kPosition, b, comp_index(comps)};
-      else if (quantity == "v")
-        ch = {Channel::Kind::kVelocity, b, comp_index(comps)};
-      else if (quantity == "a")
-        ch = {Channel::Kind::kAcceleration, b, comp_index(comps)};
-      else
-        ch = {Channel::Kind::kOmega, b, comp_index(comps)};
-    }
-    channels_.push_back(ch);
-  }
+    : path_(path), channels_(system, channels) {
   out_.open(path);
   EMB_THROW_IF(!out_, "CSV file '" << path << "' cannot be created");
   out_ << "t";
@@ -331,54 +233,8 @@ void CsvWriter::Close() {
 }
 
 void CsvWriter::Write(const mbs::Sample& s) {
-  const auto& L = system_.layout();
   out_ << s.t;
-  for (const Channel& c : channels_) {
-    double v = 0.0;
-    switch (c.kind) {
-      case Channel::Kind::kPosition:
-        v = s.q[L.position(c.index) + c.component];
-        break;
-      case Channel::Kind::kVelocity:
-        v = s.v[L.velocity(c.index) + c.component];
-        break;
-      case Channel::Kind::kAcceleration:
-        v = s.vdot[L.velocity(c.index) + c.component];
-        break;
-      case Channel::Kind::kOmega: {
-        const Eigen::Matrix3d R =
-            mbs::RotationFromQuaternion(s.q.segment<4>(L.quaternion(c.index)));
-        v = (R * s.v.segment<3>(L.angular_velocity(c.index)))[c.component];
-        break;
-      }
-      case Channel::Kind::kEuler:
-        v = mbs::Euler313FromRotation(
-            mbs::RotationFromQuaternion(s.q.segment<4>(L.quaternion(c.index))))[c.component];
-        break;
-      case Channel::Kind::kForceElement:
-        v = s.force_loads(c.index, c.component);
-        break;
-      case Channel::Kind::kSensor:
-        v = s.sensors(c.index, c.component);
-        break;
-      case Channel::Kind::kForce:
-        v = s.reactions(c.index, c.component);
-        break;
-      case Channel::Kind::kTorque:
-        v = s.reactions(c.index, 3 + c.component);
-        break;
-      case Channel::Kind::kEnergy: {
-        const double e[4] = {s.energies.kinetic, s.energies.gravity, s.energies.elastic,
-                             s.energies.total()};
-        v = e[c.component];
-        break;
-      }
-      case Channel::Kind::kResidual:
-        v = c.component == 0 ? s.position_residual : s.velocity_residual;
-        break;
-    }
-    out_ << "," << v;
-  }
+  for (int k = 0; k < channels_.size(); ++k) out_ << "," << channels_.Value(s, k);
   out_ << "\n";
   out_.flush();
   EMB_THROW_IF(!out_, "CSV file '" << path_ << "': write failed (disk full?)");

@@ -57,6 +57,8 @@
 
 #include "libemb/io/time_series_file.h"
 #include "libemb/mbs/analysis/analysis.h"
+#include "libemb/results/channels.h"
+#include "libemb/results/steady_state.h"
 
 namespace emb::scene {
 
@@ -83,6 +85,10 @@ class ResultsWriter {
   void Close();
   /// Bytes one sample adds to the file of `system` (for output-size estimates).
   static std::uint64_t BytesPerSample(const mbs::System& system);
+  /// Records the steady-state search as root attributes steady_state_{converged (1/0),
+  /// cycles, change, tolerance, worst_channel, cycle_start, cycle_end} [s] and flushes;
+  /// readers (emb spectrum, the plots) analyse [cycle_start, cycle_end] by default.
+  void RecordSteadyState(const SteadyStateReport& report, const SteadyStateSettings& settings);
 
  private:
   const mbs::System& system_;
@@ -91,15 +97,8 @@ class ResultsWriter {
   int eta_{-1}, eta_dot_{-1}, loads_{-1}, sensors_{-1};
 };
 
-/// A CSV file with a header line "t,<channel>,..." and one line per sample.
-/// Channels: <body>.p.{x,y,z} (CM position, m), <body>.v.{x,y,z} (m/s), <body>.a.{x,y,z}
-/// (m/s^2), <body>.omega.{x,y,z} (rad/s, in W), <body>.euler.{psi,theta,phi} (rad),
-/// <element>.F.{x,y,z} and <element>.T.{x,y,z} (reactions, joint axes; for a coupler at its
-/// first joint), <coupler>.F2.{x,y,z} and <coupler>.T2.{x,y,z} (a coupler's reaction at its
-/// second joint),
-/// <force element>.F.{x,y,z} and .T.{x,y,z} (its load, ForceElement::CalcLoad),
-/// <sensor>.{dx,dy,dz,rx,ry,rz}, energy.{kinetic,gravity,elastic,total},
-/// residual.{position,velocity}.
+/// A CSV file with a header line "t,<channel>,..." and one line per sample; the channels
+/// are those of channels.h.
 class CsvWriter {
  public:
   /// @throws InputError for an unknown channel (with a did-you-mean) or an unwritable file.
@@ -111,34 +110,9 @@ class CsvWriter {
   void Close();
 
  private:
-  struct Channel {
-    enum class Kind {
-      kPosition,
-      kVelocity,
-      kAcceleration,
-      kOmega,
-      kEuler,
-      kForce,
-      kTorque,
-      kEnergy,
-      kResidual,
-      kForceElement,
-      kSensor
-    } kind;
-    int index;      // body or reaction port
-    int component;  // 0..3
-  };
-  const mbs::System& system_;
   std::string path_;
   std::ofstream out_;
-  std::vector<Channel> channels_;
+  ChannelSet channels_;
 };
-
-/// @throws InputError naming the first of `channels` that `system` does not have (with a
-/// did-you-mean), before any file is created.
-void CheckChannels(const mbs::System& system, const std::vector<std::string>& channels);
-
-/// Value of a channel name check without writing (used by tests and the CLI).
-std::vector<std::string> ValidChannelNames(const mbs::System& system);
 
 }  // namespace emb::scene

@@ -9,6 +9,7 @@
 
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/core/system.h"
+#include "libemb/results/steady_state.h"
 
 namespace emb::scene {
 
@@ -27,6 +28,9 @@ struct Scene {
   std::string source;  ///< the file it came from
   mbs::System system;  ///< finalized
   mbs::AnalysisSettings analysis;
+  /// Run cycles until these channels repeat (dynamic analysis; off unless the scene has
+  /// analysis.steady_state, which then sets analysis.t_end to max_cycles periods).
+  SteadyStateSettings steady_state;
   OutputSpec output;
   std::vector<std::string> notes;  ///< what the loader decided, e.g. the modes a part kept
   std::vector<std::string> inputs;  ///< files it reads: the scene, body files, geometries

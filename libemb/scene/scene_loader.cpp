@@ -16,6 +16,7 @@
 #include "libemb/mbs/forces/applied_load.h"
 #include "libemb/mbs/forces/bushing.h"
 #include "libemb/mbs/forces/spring_damper.h"
+#include "libemb/results/channels.h"
 #include "libemb/scene/beam_part_reader.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
@@ -238,7 +239,20 @@ void ReadSensors(const YAML::Node& list, const std::string& file, mbs::System* s
                 });
 }
 
-void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::AnalysisSettings* s) {
+void ReadSteadyState(const YAML::Node& node, const std::string& file, SteadyStateSettings* s) {
+  MapReader r(node, file, "analysis steady_state");
+  s->period = r.GetDouble("period", NumberRange::Positive("s"));
+  const YAML::Node ch = r.Require("channels");
+  EMB_THROW_IF(!ch.IsSequence(), Where(file, ch) << ": steady_state channels: expected a list");
+  for (const auto& c : ch) s->channels.push_back(c.Scalar());
+  s->tolerance = r.GetDouble("tolerance", s->tolerance, NumberRange::Positive());
+  s->min_cycles = r.GetInt("min_cycles", s->min_cycles, 1, 100000);
+  s->max_cycles = r.GetInt("max_cycles", s->max_cycles, 1, 100000);
+  r.Finish();
+}
+
+void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::AnalysisSettings* s,
+                  SteadyStateSettings* steady) {
   MapReader r(node, file, "analysis");
   s->type = mbs::ParseAnalysisType(r.GetString("type", "dynamic"));
   using R = NumberRange;
@@ -262,6 +276,7 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   try {
     s->ida.linear_solver = ParseLinearSolverKind(r.GetString("linear_solver", "auto"));
     s->integrator = mbs::ParseDynamicIntegrator(r.GetString("integrator", Name(s->integrator)));
+    s->elastic_start = mbs::ParseElasticStart(r.GetString("elastic_start", Name(s->elastic_start)));
   } catch (const InputError& e) {
     EMB_THROW(InputError, Where(file, node) << ": analysis " << e.what());
   }
@@ -277,6 +292,17 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   s->static_force_tolerance =
       r.GetDouble("static_tolerance", s->static_force_tolerance, R::Open(0.0, 1.0));
   s->static_max_iterations = r.GetInt("static_iterations", s->static_max_iterations, 1, 100000);
+  const bool t_end_given = r.Has("t_end");
+  if (const YAML::Node n = r.Optional("steady_state")) {
+    ReadSteadyState(n, file, steady);
+    EMB_THROW_IF(t_end_given, Where(file, node)
+                                  << ": analysis: give either t_end or steady_state (which "
+                                     "ends the run at steady state or after max_cycles)");
+    EMB_THROW_IF(s->type != mbs::AnalysisType::kDynamic,
+                 Where(file, node) << ": analysis steady_state: only for a dynamic analysis");
+    CheckSteadyStateSettings(*steady, s->output_step, Where(file, n));
+    s->t_end = s->t_start + steady->max_cycles * steady->period;
+  }
   r.Finish();
   EMB_THROW_IF(!(s->output_step > 0), Where(file, node) << ": analysis output_step: expected > 0");
   EMB_THROW_IF(!(s->t_end >= s->t_start), Where(file, node)
@@ -337,10 +363,18 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   if (const YAML::Node n = r.Optional("couplers")) ReadCouplers(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("forces")) ReadForces(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("sensors")) ReadSensors(n, source, &scene.system);
-  if (const YAML::Node n = r.Optional("analysis")) ReadAnalysis(n, source, &scene.analysis);
+  YAML::Node analysis_node = r.Optional("analysis");
+  if (analysis_node) ReadAnalysis(analysis_node, source, &scene.analysis, &scene.steady_state);
   if (const YAML::Node n = r.Optional("output")) ReadOutput(n, source, &scene.output);
   r.Finish();
   scene.system.Finalize();
+  if (scene.steady_state.enabled()) {
+    try {
+      ChannelSet(scene.system, scene.steady_state.channels);
+    } catch (const InputError& e) {
+      EMB_THROW(InputError, Where(source, analysis_node) << ": analysis steady_state: " << e.what());
+    }
+  }
   return scene;
 }
 

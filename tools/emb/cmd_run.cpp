@@ -83,6 +83,9 @@ struct RunCommand {
     scene::Scene sc = scene::LoadScene(scene_file, options);
     mbs::AnalysisSettings& st = sc.analysis;
     Override(st);
+    EMB_THROW_IF(t_end && sc.steady_state.enabled() && st.type == mbs::AnalysisType::kDynamic,
+                 "--t-end: the scene runs to steady state (analysis.steady_state); its "
+                 "max_cycles sets the end");
     // Output paths: -o beats the scene; the scene's were made relative to its directory by
     // LoadScene (and confined to it), the command line's are relative to the working
     // directory.
@@ -93,7 +96,7 @@ struct RunCommand {
     CheckWritableOutput(h5, output.empty() ? scene_file + ": output.file" : "-o");
     CheckWritableOutput(csv_path, csv.empty() ? scene_file + ": output.csv" : "--csv");
     CheckDistinctFiles({h5, csv_path}, sc.inputs);
-    if (!csv_path.empty()) scene::CheckChannels(sc.system, sc.output.channels);
+    if (!csv_path.empty()) (void)scene::ChannelSet(sc.system, sc.output.channels);  // names
     CheckOutputSize(sc, st);
     OutputLock h5_lock, csv_lock;
     if (!h5.empty()) h5_lock = OutputLock(h5);
@@ -108,8 +111,13 @@ struct RunCommand {
     std::optional<scene::CsvWriter> csv_writer;
     if (!h5.empty()) writer.emplace(h5, run.system, sc.source, mbs::Name(st.type));
     if (!csv_path.empty()) csv_writer.emplace(csv_path, run.system, sc.output.channels);
+    std::optional<scene::SteadyStateMonitor> steady;
+    if (sc.steady_state.enabled() && st.type == mbs::AnalysisType::kDynamic) {
+      steady.emplace(run.system, sc.steady_state, st.t_start, st.output_step);
+      st.t_end = steady->t_end();
+    }
     mbs::Sample last;
-    bool any = false;
+    bool any = false, at_steady_state = false;
     sw.Restart();
     mbs::RunResult r;
     {
@@ -121,6 +129,7 @@ struct RunCommand {
             [&](const mbs::Sample& s) {
               if (writer) writer->Write(s);
               if (csv_writer) csv_writer->Write(s);
+              if (steady) at_steady_state = steady->Add(s);
               last = s;
               any = true;
               if (const int sig = StopSignal())
@@ -129,7 +138,7 @@ struct RunCommand {
                                            (h5.empty() ? "" : "; the results up to it are in " +
                                                                   h5 + " (status 'interrupted')"));
             },
-            progress);
+            progress, [&] { return at_steady_state; });
       } catch (const std::exception& e) {
         // Whatever stopped the run, the file says so (if it still can be written).
         const bool interrupted = dynamic_cast<const Interrupted*>(&e) != nullptr;
@@ -150,6 +159,7 @@ struct RunCommand {
     const double t_run = sw.seconds();
     if (writer) {
       writer->Finish(r);
+      if (steady) writer->RecordSteadyState(steady->report(), sc.steady_state);
       writer->Close();
     }
     if (csv_writer) csv_writer->Close();
@@ -168,7 +178,20 @@ struct RunCommand {
     s.Add("true_dof", "true DOF", run.dof.true_dof);
     if (!run.system.removed_equations().empty())
       s.Add("removed_equations", "removed redundant equations", run.system.removed_equations());
+    if (!run.start_note.empty()) s.Add("elastic_start", "elastic start", run.start_note);
     s.Add("t_reached", "time reached [s]", r.t_reached);
+    if (steady) {
+      const scene::SteadyStateReport& ss = steady->report();
+      s.Add("steady_state", "steady state",
+            std::string(ss.converged ? "reached" : "NOT reached") + " after " +
+                std::to_string(ss.cycles) + " cycles of " + std::to_string(sc.steady_state.period) +
+                " s");
+      s.Add("steady_state_change", "last cycle-to-cycle change (RMS, relative)", ss.change);
+      s.Add("steady_state_tolerance", "steady-state tolerance", sc.steady_state.tolerance);
+      s.Add("steady_state_worst_channel", "channel of the largest change", ss.worst_channel);
+      s.Add("steady_state_cycle_start", "steady cycle from [s]", ss.cycle_start);
+      s.Add("steady_state_cycle_end", "steady cycle to [s]", ss.cycle_end);
+    }
     s.Add("samples", "output samples", r.num_samples);
     if (st.type == mbs::AnalysisType::kDynamic) {
       s.Add("rtol", "rtol", st.ida.rtol);
@@ -200,6 +223,16 @@ struct RunCommand {
       PrintJson({{"summary", s.ToJson()}});
     else
       s.Print(std::cout);
+    if (r.ok() && steady && !steady->report().converged)
+      EMB_THROW(NumericalError,
+                "no periodic steady state in " << sc.steady_state.max_cycles
+                                               << " cycles: the last change was "
+                                               << steady->report().change << " in "
+                                               << steady->report().worst_channel
+                                               << " (tolerance " << sc.steady_state.tolerance
+                                               << "); raise max_cycles or add damping (results "
+                                                  "are in "
+                                               << h5 << ")");
     if (!r.ok())
       EMB_THROW(NumericalError,
                 r.message << (h5.empty() ? ""

@@ -45,7 +45,25 @@ struct SpectrumCommand {
       for (double t : y.time) angle.push_back(angle_start + 6.0 * *rpm * (t - y.time.front()));
       angle_source = "constant speed " + std::to_string(*rpm) + " rpm";
     }
-    const scene::OrderSpectrum sp = scene::CalcOrderSpectrum(angle, y.values, settings);
+    // A run that searched for its periodic steady state ended with the steady cycle: by
+    // default that cycle alone is analysed (the earlier ones hold the start-up).
+    const scene::ResultsSteadyState steady = scene::ReadResultsSteadyState(file);
+    scene::OrderSpectrumSettings used = settings;
+    std::string window = used.cycles > 0 ? "the last " + std::to_string(used.cycles) + " (--cycles)"
+                                         : "every whole cycle the data cover";
+    if (steady.present && used.cycles == 0) {
+      if (steady.converged) {
+        used.cycles = 1;
+        window = "the steady-state cycle " + std::to_string(steady.cycle_start) + " .. " +
+                 std::to_string(steady.cycle_end) + " s (change " +
+                 std::to_string(steady.change) + ")";
+      } else {
+        std::cerr << "emb: warning: " << file << " did not reach its periodic steady state "
+                  << "(last cycle-to-cycle change " << steady.change << ", tolerance "
+                  << steady.tolerance << "): the spectrum holds start-up transients\n";
+      }
+    }
+    const scene::OrderSpectrum sp = scene::CalcOrderSpectrum(angle, y.values, used);
 
     Table t("Engine-order spectrum of " + channel, {"order", "amplitude", "phase_deg"},
             {"order", "amplitude", "phase [deg]"});
@@ -54,6 +72,7 @@ struct SpectrumCommand {
     Summary s("Order analysis of " + file);
     s.Add("channel", "channel", channel);
     s.Add("angle", "crank angle from", angle_source);
+    s.Add("window", "analysed", window);
     s.Add("cycles", "whole 720-degree cycles analysed", sp.cycles);
     s.Add("angle_start_deg", "window start [deg]", sp.angle_start_deg);
     s.Add("angle_end_deg", "window end [deg]", sp.angle_end_deg);
@@ -100,7 +119,7 @@ void RegisterSpectrumCommand(CLI::App& app) {
                   "the inline-4 scenes); sets the phase reference")
       ->capture_default_str();
   cmd->add_option("--cycles", st->settings.cycles,
-                  "Whole cycles to analyse, the last ones (0 = all the data cover)")
+                  "Whole cycles to analyse, the last ones (0 = the steady-state cycle of a run that found one, else all the data cover)")
       ->capture_default_str();
   cmd->add_option("--orders", st->settings.max_order, "Highest order (multiple of 0.5)")
       ->capture_default_str();

@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Writes the inline-4 engine scenes with a rigid crankshaft (tools/scenes/inline4_rigid*.yaml).
 
-Run from the repository root:  /usr/bin/python3 tools/scenes/make_inline4.py
+Run from the repository root:  /usr/bin/python3 tools/scenes/make_inline4.py [OUT_DIR]
+(OUT_DIR defaults to tools/scenes/; the ctest tools_inline4_scenes_test writes them to a
+temporary directory and compares them with the checked-in files.)
 The scenes are generated so that the initial velocities of every body are those of the
 rigid mechanism at the start speed (no start-up transient) and so that the variants share
 one geometry. Geometry: meshes/crankshaft_i4.geo (crank axis = world x, pin i at
@@ -9,6 +11,7 @@ one geometry. Geometry: meshes/crankshaft_i4.geo (crank axis = world x, pin i at
 """
 import math
 import os
+import sys
 
 R = 0.043          # crank radius [m] (stroke 86 mm)
 L = 0.1435         # rod centre distance [m]
@@ -176,7 +179,7 @@ def scene(name, description, rpm, mains, drive, t_end_cycles=2, output_step_deg=
 
 
 if __name__ == "__main__":
-    here = os.path.dirname(os.path.abspath(__file__))
+    here = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
     variants = [
         ("inline4_rigid", "bushing mains, flywheel driven by a dynamometer at 3000 rpm", 3000,
          "bushing", "dyno"),

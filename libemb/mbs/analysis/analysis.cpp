@@ -1,4 +1,5 @@
 #include "libemb/mbs/analysis/analysis.h"
+#include "libemb/mbs/analysis/quasi_static_start.h"
 
 #include <cmath>
 #include <limits>
@@ -52,6 +53,17 @@ DynamicIntegrator ParseDynamicIntegrator(const std::string& name) {
   for (DynamicIntegrator i : {DynamicIntegrator::kIda, DynamicIntegrator::kGeneralizedAlpha})
     if (name == Name(i)) return i;
   EMB_THROW(InputError, "integrator: expected 'ida' or 'generalized-alpha', got '" << name << "'");
+}
+
+const char* Name(ElasticStart start) {
+  return start == ElasticStart::kAsGiven ? "as-given" : "quasi-static";
+}
+
+ElasticStart ParseElasticStart(const std::string& name) {
+  for (ElasticStart s : {ElasticStart::kAsGiven, ElasticStart::kQuasiStatic})
+    if (name == Name(s)) return s;
+  EMB_THROW(InputError,
+            "elastic_start: expected 'as-given' or 'quasi-static', got '" << name << "'");
 }
 
 const char* Name(RunStatus status) {
@@ -126,6 +138,15 @@ PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
         << p.relative_change << " in the kinetic-energy norm)";
       run.warnings.push_back(o.str());
     }
+    if (settings.type == AnalysisType::kDynamic &&
+        settings.elastic_start == ElasticStart::kQuasiStatic) {
+      QuasiStaticStartOptions qs;
+      qs.assembly = settings.assembly;
+      const QuasiStaticStartReport start =
+          SetQuasiStaticStart(run.system, settings.t_start, &run.q0, &run.v0, &ws2, qs);
+      if (!start.converged) EMB_THROW(NumericalError, start.message);
+      run.start_note = start.message;
+    }
   } else {
     run.v0 = Eigen::VectorXd::Zero(run.system.layout().nv());
   }
@@ -170,7 +191,7 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
 }
 
 RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
-                      const SampleSink& sink, const ProgressFn& progress) {
+                      const SampleSink& sink, const ProgressFn& progress, const StopFn& stop) {
   switch (settings.type) {
     case AnalysisType::kAssemble: {
       ConstraintWorkspace ws(run.system);
@@ -190,7 +211,7 @@ RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
     case AnalysisType::kQuasiStatic:
       return internal::RunStatic(run, settings, sink, progress, true);
     case AnalysisType::kDynamic:
-      return internal::RunDynamic(run, settings, sink, progress);
+      return internal::RunDynamic(run, settings, sink, progress, stop);
   }
   return {};
 }
@@ -296,7 +317,7 @@ std::unique_ptr<DaeIntegrator> MakeIntegrator(const System& sys, const GglDae& d
 }
 
 RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
-                     const SampleSink& sink, const ProgressFn& progress) {
+                     const SampleSink& sink, const ProgressFn& progress, const StopFn& stop) {
   const System& sys = run.system;
   const GglDae dae(sys);
   const GglLayout& G = dae.ggl_layout();
@@ -391,6 +412,10 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     sink(MakeSample(sys, ida.t(), yk.segment(G.q(), G.nq()), yk.segment(G.v(), G.nv()),
                     ypk.segment(G.v(), G.nv()), yk.segment(G.lambda(), G.m()), &ws));
     ++r.num_samples;
+    if (stop && stop()) {
+      r.stopped = true;
+      break;
+    }
     ReportProgress(
         progress, "dynamic",
         (ida.t() - settings.t_start) / std::max(1e-300, settings.t_end - settings.t_start));

@@ -42,6 +42,15 @@ const char* Name(DynamicIntegrator integrator);
 /// "ida" or "generalized-alpha". @throws InputError listing the valid names.
 DynamicIntegrator ParseDynamicIntegrator(const std::string& name);
 
+/// How flexible bodies start (quasi_static_start.h).
+enum class ElasticStart {
+  kAsGiven,      ///< the parts' modal coordinates (undeformed unless given) and rates
+  kQuasiStatic,  ///< the quasi-static deformation under the initial loads and motion
+};
+const char* Name(ElasticStart start);
+/// "as-given" or "quasi-static". @throws InputError otherwise.
+ElasticStart ParseElasticStart(const std::string& name);
+
 struct AnalysisSettings {
   AnalysisType type{AnalysisType::kDynamic};
   double t_start{0.0};       ///< [s]
@@ -107,6 +116,9 @@ struct AnalysisSettings {
   /// residual max |f - C^T lambda| <= static_force_tolerance * (1 + max |f|).
   double static_force_tolerance{1e-9};
   int static_max_iterations{100};
+  /// Dynamic analysis: how flexible bodies start. kQuasiStatic removes the free vibration
+  /// an undeformed start excites (issue 19); a start that does not converge is an error.
+  ElasticStart elastic_start{ElasticStart::kAsGiven};
 };
 
 /// A prepared run: the (possibly reduced) system and consistent initial values.
@@ -115,6 +127,7 @@ struct PreparedRun {
   DofReport dof;
   Eigen::VectorXd q0, v0;
   std::vector<std::string> warnings;
+  std::string start_note;  ///< the quasi-static elastic start, when asked for
 };
 
 /// Assembles and checks the model. @throws InputError if the assembly does not close
@@ -139,6 +152,9 @@ struct Sample {
   double velocity_residual{0.0};  ///< max |C v + Phi_t|
 };
 using SampleSink = std::function<void(const Sample&)>;
+/// Asked after every sample of a dynamic analysis: true ends the run there, successfully
+/// (RunResult::stopped), e.g. once a periodic steady state is reached.
+using StopFn = std::function<bool()>;
 
 enum class RunStatus { kSuccess, kIntegratorFailure, kNewtonFailure, kNotKinematic };
 const char* Name(RunStatus status);
@@ -182,13 +198,15 @@ struct RunResult {
   std::vector<std::string> warnings;  ///< e.g. atol raised to the floor
   int newton_iterations{0};  ///< kinematic/static: total
   StaticReport static_report;  ///< static/quasi-static: the last (or failed) solve
+  bool stopped{false};  ///< dynamic analysis: ended before t_end by the caller's StopFn
   bool ok() const { return status == RunStatus::kSuccess; }
 };
 
 /// Runs the analysis of `settings.type`, calling `sink` for every output time (including
 /// t_start). Numerical failures are a status; the sink has seen every sample before it.
 RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
-                      const SampleSink& sink, const ProgressFn& progress = {});
+                      const SampleSink& sink, const ProgressFn& progress = {},
+                      const StopFn& stop = {});
 
 /// A sample at (q, v, vdot, lambda, t), evaluating reactions, energies and residuals.
 Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,

@@ -17,6 +17,7 @@ RunResult RunKinematic(const PreparedRun& run, const AnalysisSettings& settings,
 RunResult RunStatic(const PreparedRun& run, const AnalysisSettings& settings,
                     const SampleSink& sink, const ProgressFn& progress, bool sequence);
 RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
-                     const SampleSink& sink, const ProgressFn& progress);
+                     const SampleSink& sink, const ProgressFn& progress,
+                     const StopFn& stop);
 
 }  // namespace emb::mbs::internal

@@ -1,0 +1,365 @@
+#!/usr/bin/python3
+"""Records the numbers of a benchmark as JSON: benchmarks/results/NAME.json.
+
+Every results file holds
+    {"benchmark": NAME, "commit": SHA, "dirty": BOOL, "date": ISO-8601 UTC,
+     "machine": {"cpu": MODEL, "cores": N, "memory_gb": X, "os": ...},
+     "command": the command line that ran the benchmark, "note": $EMB_BENCH_NOTE,
+     "data": {...the numbers...}}
+"dirty" says whether the library, the tools, the meshes, the build files or the benchmarks
+differed from the commit (documents, plots, results and the table renderer excluded). benchmarks/render_tables.py renders the documentation's tables from them.
+
+The benchmark scripts call one subcommand each, which turns raw outputs into "data":
+  run NAME -- PROGRAM ARGS...        PROGRAM prints one JSON document (C++ benchmarks)
+  merge NAME LABEL=RUN.json ...      one JSON document per LABEL (e.g. block_solve per mesh)
+  modes NAME H=RUN.json ...          `emb modes --json` per mesh size H [m]
+  reduce-sizes NAME H=RUN.json ...   `emb reduce --json` per mesh size H [m]
+  reduce-modes NAME RUN.json ...     `emb reduce --json` per mode count (+ PNG plot)
+  stiffening NAME LABEL=RUN.json ... `emb reduce --json` with/without geometric stiffness
+  compare NAME LABEL=RUN.json ...    `emb compare --json` per part/support
+  web-width NAME B=RUN.json ...      `emb compare --json` per web width B [m]
+  inline4 NAME DIR RUN ...           `emb run` outputs DIR/RUN.{json,csv} against DIR/ref
+  profile NAME DIR                   perf reports and run summary of inline4_profile.sh
+All take --command "...". Run with /usr/bin/python3 (inline4 needs numpy, reduce-modes
+matplotlib for its plot).
+"""
+import argparse
+import datetime
+import json
+import math
+import os
+import platform
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RESULTS = os.path.join(ROOT, "benchmarks", "results")
+
+
+# --------------------------------------------------------------------------- metadata
+def machine():
+    cpu, memory_kb = "unknown", 0
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+        with open("/proc/meminfo") as f:
+            for line in f:
+                if line.startswith("MemTotal:"):
+                    memory_kb = int(line.split()[1])
+    except OSError:
+        pass
+    return {"cpu": cpu, "cores": os.cpu_count(), "memory_gb": round(memory_kb / 1048576, 1),
+            "os": f"{platform.system()} {platform.release()}"}
+
+
+def git(*args):
+    return subprocess.run(["git", "-C", ROOT, *args], capture_output=True, text=True,
+                          check=True).stdout.strip()
+
+
+# What the benchmarks' programs and scripts are made of (a change elsewhere, e.g. in tests,
+# examples or documents, does not make a run "dirty").
+BUILT_FROM = ("libemb/", "tools/", "meshes/", "cmake/", "CMakeLists.txt", "benchmarks/")
+NOT_BUILT = (".md", ".png", "render_tables.py")
+RESULTS_DIR = "benchmarks/results/"  # the benchmarks write there themselves
+
+
+def commit():
+    sha = git("rev-parse", "HEAD")
+    changed = [line[3:] for line in git("status", "--porcelain", "--untracked-files=no").splitlines()]
+    dirty = [p for p in changed if p.startswith(BUILT_FROM) and not p.endswith(NOT_BUILT)
+             and not p.startswith(RESULTS_DIR)]
+    return sha, bool(dirty)
+
+
+def write_result(name, command, data):
+    """benchmarks/results/NAME.json with the metadata around `data` (atomically)."""
+    sha, dirty = commit()
+    doc = {"benchmark": name, "commit": sha, "dirty": dirty,
+           "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
+           "machine": machine(), "command": command, "note": os.environ.get("EMB_BENCH_NOTE", ""),
+           "data": data}
+    os.makedirs(RESULTS, exist_ok=True)
+    path = os.path.join(RESULTS, name + ".json")
+    with open(path + ".tmp", "w") as f:
+        json.dump(doc, f, indent=1, allow_nan=False, default=str)
+        f.write("\n")
+    os.replace(path + ".tmp", path)
+    print(f"wrote {os.path.relpath(path, ROOT)}")
+
+
+def load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def labelled(items):
+    """["0.02=a.json", ...] -> [("0.02", "a.json"), ...]"""
+    out = []
+    for item in items:
+        label, sep, path = item.partition("=")
+        if not sep:
+            sys.exit(f"record.py: expected LABEL=FILE, got '{item}'")
+        out.append((label, path))
+    return out
+
+
+def finite(x):
+    """NaN (from JSON null or a non-number) -> None, so that the JSON stays strict."""
+    return x if isinstance(x, (int, float)) and math.isfinite(x) else None
+
+
+# --------------------------------------------------------------------------- collectors
+def phases(summary):
+    return {k[len("seconds_"):]: v for k, v in summary.items() if k.startswith("seconds_")}
+
+
+def collect_modes(items):
+    runs = []
+    for h, path in labelled(items):
+        r = load(path)
+        s = r["summary"]
+        runs.append({"h_m": float(h), "dofs": s["dofs"], "nnz_factor": s["nnz_factor"],
+                     "seconds": phases(s), "solves": s["solves"],
+                     "peak_memory_mb": s["peak_memory_mb"], "status": s["status"],
+                     "rigid_modes": s["rigid_modes"],
+                     "max_backward_error": s["max_backward_error"],
+                     "elastic_hz": [m["frequency_hz"] for m in r["modes"] if m["kind"] == "elastic"]})
+    runs.sort(key=lambda r: r["dofs"])
+    ref = runs[-1]["elastic_hz"]
+    for r in runs:
+        n = min(len(r["elastic_hz"]), len(ref))
+        r["max_change_vs_finest"] = max(abs(a - b) / b for a, b in zip(r["elastic_hz"][:n], ref[:n]))
+    return {"runs": runs}
+
+
+def paired_errors(run, fmax=None):
+    return [abs(x["error_percent"]) for x in run["comparison"]
+            if isinstance(x["error_percent"], float) and (fmax is None or x["full_hz"] <= fmax)]
+
+
+def certificate(run):
+    c = run["certificate"]
+    return {k: c.get(k) for k in ("passed", "mass_error", "com_error", "inertia_error",
+                                   "static_error", "num_near_zero", "min_mac", "unrepresented",
+                                   "max_frequency_error")}
+
+
+def collect_reduce_sizes(items):
+    runs = []
+    for h, path in labelled(items):
+        r = load(path)
+        s = r["summary"]
+        err = paired_errors(r)
+        runs.append({"h_m": float(h), "dofs": s["dofs"],
+                     "fixed_interface_modes": s["fixed_interface_modes"],
+                     "elastic_modes": s["elastic_modes"], "seconds": phases(s),
+                     "peak_memory_mb": s["peak_memory_mb"],
+                     "max_error_pct": max(err) if err else None, "certificate": certificate(r)})
+    runs.sort(key=lambda r: r["dofs"])
+    return {"runs": runs}
+
+
+def collect_reduce_modes(paths):
+    runs = []
+    for path in paths:
+        r = load(path)
+        s = r["summary"]
+        seconds = phases(s)
+        runs.append({"dofs": s["dofs"], "fixed_interface_modes": s["fixed_interface_modes"],
+                     "elastic_modes": s["elastic_modes"], "seconds": seconds,
+                     "seconds_reduction": seconds["total"] - seconds.get("certificate", 0.0),
+                     "max_error_pct_6khz": max(paired_errors(r, 6000.0)),
+                     "max_error_pct_3khz": max(paired_errors(r, 3000.0)),
+                     "certificate": certificate(r)})
+    runs.sort(key=lambda r: r["fixed_interface_modes"])
+    plot_reduce_modes(runs)
+    return {"runs": runs}
+
+
+def plot_reduce_modes(runs):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("record.py: no matplotlib, plot not made", file=sys.stderr)
+        return
+    t = [r["seconds_reduction"] for r in runs]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.loglog(t, [r["max_error_pct_6khz"] for r in runs], "o-", label="modes ≤ 6 kHz")
+    ax.loglog(t, [r["max_error_pct_3khz"] for r in runs], "s-", label="modes ≤ 3 kHz")
+    for r in runs:
+        ax.annotate(str(r["fixed_interface_modes"]), (r["seconds_reduction"], r["max_error_pct_6khz"]),
+                    textcoords="offset points", xytext=(4, 4))
+    ax.set_xlabel("reduction wall time [s]")
+    ax.set_ylabel("max frequency error vs full FE [%]")
+    ax.set_title(f"Crankshaft CB ({runs[0]['dofs'] / 1000:.0f}k DOF): error against cost")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend()
+    out = os.path.join(ROOT, "benchmarks", "reduce_error_vs_time.png")
+    fig.savefig(out, dpi=120, bbox_inches="tight")
+    print(f"wrote {os.path.relpath(out, ROOT)}")
+
+
+def collect_stiffening(items):
+    runs = []
+    for label, path in labelled(items):
+        r = load(path)
+        s = r["summary"]
+        out = s.get("output", "").split(" and ")[0]
+        runs.append({"name": label, "dofs": s["dofs"],
+                     "fixed_interface_modes": s["fixed_interface_modes"],
+                     "elastic_modes": s["elastic_modes"], "seconds": phases(s),
+                     "peak_memory_mb": s["peak_memory_mb"],
+                     "file_mb": os.path.getsize(out) / 1e6 if out and os.path.exists(out) else None,
+                     "certificate": certificate(r)})
+    return {"runs": runs}
+
+
+def collect_compare(items):
+    cases = []
+    for label, path in labelled(items):
+        r = load(path)
+        s = r["summary"]
+        ref = r["modes"]
+        routes = []
+        for x in r["routes"]:
+            errors = [finite(e) for e in x["relative_errors"]]
+            judged = [100 * e for e, m in zip(errors, ref)
+                      if e is not None and (x["method"] in ("cms", "fe") or m["beam_like"] == "yes")]
+            routes.append({"route": x["route"], "method": x["method"], "unknowns": x["unknowns"],
+                           "seconds": x["seconds"], "paired": x["paired"], "judged": x["judged"],
+                           "max_abs_error_pct": finite(x["max_abs_error_pct"]),
+                           "mean_abs_error_pct": finite(x["mean_abs_error_pct"]),
+                           "min_error_pct": min(judged) if judged else None,
+                           "max_error_pct": max(judged) if judged else None,
+                           "min_mac": finite(x["min_mac"]), "relative_errors": errors})
+        cases.append({"name": label, "part": s["part"], "support": s["support"],
+                      "fe_dofs": s["fe_dofs"], "mesh": s["mesh"], "tmm_vs_lumped": s["tmm_vs_lumped"],
+                      "reference_hz": [m["reference_hz"] for m in ref],
+                      "beam_like": [m["beam_like"] == "yes" for m in ref],
+                      "num_not_beam_like": len(r["not_beam_like"]), "routes": routes})
+    return {"cases": cases}
+
+
+def collect_web_width(items, route):
+    runs = []
+    reference = None
+    for width, path in labelled(items):
+        r = load(path)
+        reference = [m["reference_hz"] for m in r["modes"]]
+        x = next(x for x in r["routes"] if x["route"] == route)
+        runs.append({"width_m": float(width), "route": route,
+                     "errors_pct": [None if finite(e) is None else 100 * e for e in x["relative_errors"]],
+                     "mac": [finite(m) for m in x["mac"]]})
+    runs.sort(key=lambda r: r["width_m"])
+    return {"reference_hz": reference, "runs": runs}
+
+
+def collect_inline4(directory, names):
+    import numpy as np
+
+    def read(name):
+        csv = np.genfromtxt(os.path.join(directory, name + ".csv"), delimiter=",", names=True)
+        return csv, load(os.path.join(directory, name + ".json"))["summary"]
+
+    ref, _ = read("ref")
+    t = ref["t"]
+    second = t >= 0.5 * t[-1] - 1e-12  # the second of two cycles
+    cycles = t[-1] / 0.04  # 4-stroke cycles at 3000 rpm
+
+    def rms(x):
+        return float(np.sqrt(np.mean(x[second] ** 2)))
+
+    nose_ref = ref["nose_torsionrz"]
+    force_ref = np.hypot(ref["main_bearing3Fx"], ref["main_bearing3Fy"])
+    rows = []
+    for name in names:
+        run, s = read(name)
+        nose = run["nose_torsionrz"]
+        force = np.hypot(run["main_bearing3Fx"], run["main_bearing3Fy"])
+        rows.append({"name": name, "status": s["status"], "modal_coordinates": s["modal_coordinates"],
+                     "rtol": s["rtol"], "steps": s["steps"], "residual_evals": s["residual_evals"],
+                     "jacobian_evals": s["jacobian_evals"], "seconds_run": s["seconds_run"],
+                     "seconds_per_cycle": s["seconds_run"] / cycles,
+                     "nose_rms_error_pct": 100 * rms(nose - nose_ref) / rms(nose_ref),
+                     "bearing3_rms_error_pct": 100 * rms(force - force_ref) / rms(force_ref),
+                     "max_nose_torsion_mrad": 1e3 * float(np.max(np.abs(nose[second])))})
+    return {"cycles": cycles, "reference": "ref", "runs": rows}
+
+
+def collect_profile(directory):
+    def shares(path, key):
+        out = []
+        with open(path) as f:
+            for line in f:
+                parts = line.split()
+                if parts and parts[0].endswith("%"):
+                    out.append({key: " ".join(parts[1:]), "share_pct": float(parts[0][:-1])})
+        return out
+
+    run = load(os.path.join(directory, "run.json"))["summary"]
+    return {"run": {k: run.get(k) for k in ("status", "steps", "residual_evals", "jacobian_evals",
+                                            "modal_coordinates", "seconds_run", "t_reached")},
+            "by_library": shares(os.path.join(directory, "by_library.txt"), "library"),
+            "by_function": shares(os.path.join(directory, "by_function.txt"), "symbol")}
+
+
+def collect_merge(items):
+    return {"runs": [dict(name=label, **load(path)) for label, path in labelled(items)]}
+
+
+def collect_run(program):
+    out = subprocess.run(program, capture_output=True, text=True)
+    if out.returncode != 0:
+        sys.stderr.write(out.stderr)
+        sys.exit(f"record.py: {' '.join(program)} failed with exit code {out.returncode}")
+    return json.loads(out.stdout)
+
+
+# --------------------------------------------------------------------------- main
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("kind", choices=["run", "merge", "modes", "reduce-sizes", "reduce-modes", "stiffening",
+                                    "compare", "web-width", "inline4", "profile"])
+    p.add_argument("name", help="results file name: benchmarks/results/NAME.json")
+    p.add_argument("inputs", nargs="*")
+    p.add_argument("--command", help="the command line that ran the benchmark (default: PROGRAM)")
+    p.add_argument("--route", default="beam consistent, elastic webs", help="web-width: the route")
+    argv = sys.argv[1:]
+    program = []
+    if "--" in argv:
+        i = argv.index("--")
+        argv, program = argv[:i], argv[i + 1:]
+    a = p.parse_intermixed_args(argv)
+    if a.kind == "run":
+        if not program:
+            sys.exit("record.py run: expected -- PROGRAM ARGS...")
+        data = collect_run(program)
+        command = a.command or " ".join(os.path.relpath(x, ROOT) if os.path.isabs(x) else x
+                                        for x in program)
+    else:
+        if not a.command:
+            sys.exit(f"record.py {a.kind}: expected --command")
+        command = a.command
+        collectors = {
+            "merge": lambda: collect_merge(a.inputs),
+            "modes": lambda: collect_modes(a.inputs),
+            "reduce-sizes": lambda: collect_reduce_sizes(a.inputs),
+            "reduce-modes": lambda: collect_reduce_modes(a.inputs),
+            "stiffening": lambda: collect_stiffening(a.inputs),
+            "compare": lambda: collect_compare(a.inputs),
+            "web-width": lambda: collect_web_width(a.inputs, a.route),
+            "inline4": lambda: collect_inline4(a.inputs[0], a.inputs[1:]),
+            "profile": lambda: collect_profile(a.inputs[0]),
+        }
+        data = collectors[a.kind]()
+    write_result(a.name, command, data)
+
+
+if __name__ == "__main__":
+    main()

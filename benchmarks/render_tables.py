@@ -1,0 +1,407 @@
+#!/usr/bin/python3
+"""Renders the benchmark tables of the documentation from benchmarks/results/*.json.
+
+The documents (benchmarks/README.md, README.md) mark what is generated:
+    <!-- table:NAME -->  ...  <!-- /table:NAME -->        a table below (TABLES), with a
+                                                          line naming its results file,
+                                                          commit, date and machine
+    <!-- value:FILE/PATH|FORMAT -->42.0<!-- /value -->  one number in running text: the
+        field PATH of benchmarks/results/FILE.json's "data" ('/'-separated: dict keys, list
+        indices (negative from the end) or, in a list of objects, the one whose name, route
+        or label is the segment; a last segment @min, @max, @maxabs or @count reduces a
+        list, nulls left out), printed with the Python format spec FORMAT (default 'g')
+Usage (stdlib only; run with /usr/bin/python3 from anywhere):
+    render_tables.py            rewrite the marked parts of the documents in place
+    render_tables.py --check    exit 1 (listing them) if a marked part differs from its
+                                rendering, a marker names an unknown table or value, or a
+                                results file is missing; the ctest benchmarks_render_tables_test
+    render_tables.py --print NAME   print one table (the benchmark scripts do)
+    --root DIR                  the repository root (default: this file's)
+"""
+import argparse
+import json
+import math
+import os
+import re
+import sys
+
+DOCS = ["benchmarks/README.md", "README.md"]
+TABLE_RE = re.compile(r"(<!-- table:([\w-]+) -->\n)(.*?)(<!-- /table:\2 -->)", re.S)
+VALUE_RE = re.compile(r"(<!-- value:([^|>]+?)(?:\|([^>]*?))? -->)(.*?)(<!-- /value -->)", re.S)
+
+
+class RenderError(Exception):
+    pass
+
+
+class Results:
+    """Loads benchmarks/results/NAME.json on first use."""
+
+    def __init__(self, root):
+        self.dir = os.path.join(root, "benchmarks", "results")
+        self.cache = {}
+
+    def __call__(self, name):
+        if name not in self.cache:
+            path = os.path.join(self.dir, name + ".json")
+            if not os.path.exists(path):
+                raise RenderError(f"benchmarks/results/{name}.json does not exist (run its benchmark)")
+            with open(path) as f:
+                self.cache[name] = json.load(f)
+        return self.cache[name]
+
+
+# --------------------------------------------------------------------------- formatting
+def num(x, spec="g"):
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return "–"
+    return format(x, spec)
+
+
+def sig3(x):
+    """Three significant digits without an exponent: 1.64, 37.3, 408, 1130."""
+    if x is None:
+        return "–"
+    if abs(x) >= 1000:
+        return f"{x:.0f}"
+    return format(x, "#.3g").rstrip(".")
+
+
+def thousands(n):
+    return f"{n:,}".replace(",", " ")
+
+
+def table(header, rows):
+    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+    return out
+
+
+def source(doc, name):
+    m = doc["machine"]
+    line = (f"Source: `benchmarks/results/{name}.json` — commit {doc['commit'][:7]}"
+            f"{' (with uncommitted changes)' if doc['dirty'] else ''}, {doc['date'][:10]}, "
+            f"{m['cpu']}, {m['cores']} cores, {m['memory_gb']:g} GB; `{doc['command']}`")
+    if doc.get("note"):
+        line += f"; {doc['note']}"
+    return line + "."
+
+
+REDUCERS = {"@min": min, "@max": max, "@maxabs": lambda xs: max(abs(x) for x in xs),
+            "@count": len}
+
+
+def find(data, path):
+    node = data
+    for seg in path:
+        if seg in REDUCERS:
+            if not isinstance(node, list):
+                raise RenderError(f"'{seg}' of a non-list")
+            values = [x for x in node if x is not None]
+            if not values and seg != "@count":
+                raise RenderError(f"'{seg}' of an empty list")
+            node = REDUCERS[seg](values)
+        elif isinstance(node, dict):
+            if seg not in node:
+                raise RenderError(f"no key '{seg}'")
+            node = node[seg]
+        elif isinstance(node, list):
+            if re.fullmatch(r"-?\d+", seg):
+                node = node[int(seg)]
+            else:
+                match = [x for x in node if isinstance(x, dict) and
+                         seg in (x.get("name"), x.get("route"), x.get("label"))]
+                if not match:
+                    raise RenderError(f"no element named '{seg}'")
+                node = match[0]
+        else:
+            raise RenderError(f"'{seg}' below a number")
+    return node
+
+
+# --------------------------------------------------------------------------- tables
+def crank_modes(res):
+    doc = res("crank_modes")
+    rows = []
+    for r in doc["data"]["runs"]:
+        s = r["seconds"]
+        rows.append([r["dofs"], f"{r['nnz_factor'] / 1e6:.1f}M", num(s["mesh"], ".1f"),
+                     num(s["assembly"], ".2f"), num(s["factorisation"], ".2f"),
+                     num(s["eigen-solve"], ".2f"), num(s["checks"], ".2f"), num(s["total"], ".1f"),
+                     num(s["eigen-solve"] / s["factorisation"], ".2f"), r["solves"],
+                     num(r["peak_memory_mb"], ".0f"), num(r["elastic_hz"][0], ".2f"),
+                     num(r["max_change_vs_finest"], ".2e"), r["status"], r["rigid_modes"],
+                     num(r["max_backward_error"], ".1e")])
+    return table(["DOF", "nnz(L)", "mesh s", "assembly s", "factorisation s", "eigen-solve s",
+                  "checks s", "total s", "eigen/factor", "solves", "peak MB", "f7 Hz",
+                  "max \\|Δf\\|/f vs finest", "status", "rigid modes", "max backward error"],
+                 rows), [doc]
+
+
+def block_solve(res):
+    doc = res("block_solve")
+    rows = []
+    for r in doc["data"]["runs"]:
+        per = {b["block"]: b["seconds_per_rhs"] for b in r["blocks"]}
+        rows.append([f"h = {float(r['name']) * 1000:g} mm", r["unknowns"], f"{r['nnz_factor'] / 1e6:.1f}M",
+                     num(r["seconds_analyse"], ".2f"), num(r["seconds_factorise"], ".2f")] +
+                    [num(per.get(b), ".4f") for b in (1, 2, 4, 8, 16, 32)] +
+                    [num(per[1] / per[16], ".1f") if 1 in per and 16 in per else "–"])
+    return table(["mesh", "dof", "nnz(L)", "analyse s", "factorise s", "b = 1", "2", "4", "8", "16",
+                  "32", "single / b=16"], rows), [doc]
+
+
+# emb reduce's phases in pipeline order ("total" is their sum without "write").
+REDUCE_PHASES = ["mesh", "assembly", "interfaces", "partition", "factorisation", "eigen-solve",
+                 "checks", "constraint modes", "basis", "reduced matrices", "orthonormalisation",
+                 "invariants", "static load cases", "geometric stiffness", "certificate", "write"]
+
+
+def crank_reduce_sizes(res):
+    doc = res("crank_reduce_sizes")
+    runs = doc["data"]["runs"]
+    unknown = sorted({p for r in runs for p in r["seconds"]} - set(REDUCE_PHASES) - {"total"})
+    if unknown:
+        raise RenderError(f"crank_reduce_sizes: phases {unknown} not in REDUCE_PHASES")
+    rows = []
+    for r in runs:
+        s = r["seconds"]
+        c = r["certificate"]
+        rows.append([r["dofs"], r["fixed_interface_modes"]] +
+                    [num(s.get(p, 0.0), ".1f") for p in REDUCE_PHASES] +
+                    [num(s["total"] + s.get("write", 0.0), ".1f"), num(r["peak_memory_mb"], ".0f"),
+                     num(r["max_error_pct"], ".3f"), "passed" if c["passed"] else "FAILED",
+                     num(c["static_error"], ".1e")])
+    return table(["FE DOF", "kept modes"] + [p + " s" for p in REDUCE_PHASES] +
+                 ["total s", "peak MB", "max error % (≤ band)", "certificate", "static error"],
+                 rows), [doc]
+
+
+def crank_reduce_modes(res):
+    doc = res("crank_reduce_modes")
+    rows = [[r["fixed_interface_modes"], r["elastic_modes"], num(r["seconds_reduction"], ".1f"),
+             num(r["seconds"].get("eigen-solve"), ".1f"), num(r["max_error_pct_6khz"], ".3f"),
+             num(r["max_error_pct_3khz"], ".3f"), r["certificate"]["unrepresented"],
+             num(r["certificate"]["min_mac"], ".4f")] for r in doc["data"]["runs"]]
+    return table(["fixed-interface modes", "elastic coords", "reduction s (without certificate)",
+                  "of which eigen-solve s", "max error % ≤ 6 kHz", "max error % ≤ 3 kHz",
+                  "not represented", "min MAC"], rows), [doc]
+
+
+def crank_reduce_stiffening(res):
+    doc = res("crank_reduce_stiffening")
+    rows = []
+    for r in doc["data"]["runs"]:
+        s = r["seconds"]
+        with_k = "static load cases" in s
+        rows.append(["with (default)" if r["name"] == "with" else "`--no-geometric-stiffness`",
+                     r["dofs"], r["elastic_modes"],
+                     num(s.get("static load cases"), ".1f") if with_k else "—",
+                     num(s.get("geometric stiffness"), ".1f") if with_k else "—",
+                     num(s["total"] - s.get("certificate", 0.0), ".1f"), num(s.get("certificate"), ".1f"),
+                     num(s.get("write"), ".1f"), num(s["total"] + s.get("write", 0.0), ".1f"),
+                     num(r["peak_memory_mb"], ".0f"), num(r["file_mb"], ".2f")])
+    return table(["run", "FE DOF", "elastic modes", "static load cases s", "geometric stiffness s",
+                  "total − certificate − write s", "certificate s", "write s", "total s", "peak MB",
+                  "file MB"],
+                 rows), [doc]
+
+
+def beam_vs_cms(res):
+    crank, tube = res("beam_vs_cms_crank"), res("beam_vs_cms_tube")
+    cases = crank["data"]["cases"] + tube["data"]["cases"]
+    order = []
+    for c in cases:
+        for r in c["routes"]:
+            if r["route"] not in order:
+                order.append(r["route"])
+
+    def cell(case, route):
+        r = next((x for x in case["routes"] if x["route"] == route), None)
+        if r is None:
+            return "—"
+        err = "0" if r["method"] == "fe" else num(r["max_abs_error_pct"], ".3g")
+        return f"{r['paired']}/{r['judged']}, {err}, {num(r['seconds'], '.3g')}"
+
+    names = {"fe": "3-D FE (reference)"}
+    rows = [[names.get(route, route)] + [cell(c, route) for c in cases] for route in order]
+    header = ["route"] + [f"{c['part']} {c['name'].split('_')[-1]} ({thousands(c['fe_dofs'])} DOF): "
+                          "paired/judged, max \\|err\\| %, s" for c in cases]
+    return table(header, rows), [crank, tube]
+
+
+def beam_web_width(res):
+    doc = res("beam_web_width")
+    runs = doc["data"]["runs"]
+    n = len(doc["data"]["reference_hz"])
+    rows = [[f"{r['width_m']:g}"] + [num(e, "+.1f") for e in r["errors_pct"]] for r in runs]
+    return table(["b [m]"] + [f"{k + 1} ({doc['data']['reference_hz'][k]:.0f} Hz)" for k in range(n)],
+                 rows), [doc]
+
+
+def inline4_rows(doc, names=None):
+    rows = []
+    for r in doc["data"]["runs"]:
+        rows.append([names.get(r["name"], r["name"]) if names else r["name"], r["modal_coordinates"],
+                     f"{r['rtol']:.0e}", r["status"], r["steps"], num(r["seconds_per_cycle"], ".2f"),
+                     num(r["nose_rms_error_pct"], ".3g"), num(r["bearing3_rms_error_pct"], ".3g"),
+                     num(r["max_nose_torsion_mrad"], ".3g")])
+    return rows
+
+
+INLINE4_HEADER = ["run", "modal coordinates", "rtol", "status", "IDA steps", "wall s / cycle",
+                  "nose torsion RMS error %", "bearing 3 force RMS error %", "max nose torsion mrad"]
+
+
+def inline4_flex_modes(res):
+    doc = res("inline4_flex_modes")
+    names = {"ref": "reference (60 modes)", "modes0": "0 modes (rigid crank)", "modes10": "10 modes",
+             "modes20": "20 modes (scene default)", "modes40": "40 modes"}
+    return table(INLINE4_HEADER, inline4_rows(doc, names)), [doc]
+
+
+def inline4_flex_tolerance(res):
+    doc = res("inline4_flex_tolerance")
+    return table(INLINE4_HEADER, inline4_rows(doc)), [doc]
+
+
+def inline4_models(res):
+    doc = res("inline4_models")
+    names = {"model_rigid": "rigid crank", "model_beam": "beam crank (elastic webs)",
+             "model_cms": "CMS crank (20 modes)"}
+    return table(INLINE4_HEADER, inline4_rows(doc, names)), [doc]
+
+
+def inline4_profile(res):
+    doc = res("inline4_profile")
+    lib = doc["data"]["by_library"][:8]
+    fun = doc["data"]["by_function"][:15]
+    out = table(["library", "share of samples %"], [[x["library"], num(x["share_pct"], ".1f")] for x in lib])
+    out += [""] + table(["function (self time)", "share %"],
+                        [[x["symbol"].replace("|", "\\|"), num(x["share_pct"], ".1f")] for x in fun])
+    return out, [doc]
+
+
+def mbs_work_precision(res):
+    doc = res("mbs_work_precision")
+    rows = [[r["model"], f"{r['rtol']:.0e}", r["status"], r["steps"], r["residual_evals"],
+             r["jacobian_evals"], r["linear_solver"], num(r["seconds"], ".3f"), num(r["max_error_m"], ".1e")]
+            for r in doc["data"]["work_precision"]]
+    return table(["model", "rtol", "status", "steps", "residuals", "Jacobians", "linear solver",
+                  f"wall s (best of {doc['data']['repeats']})", "max error m"], rows), [doc]
+
+
+def mbs_chains(res):
+    doc = res("mbs_work_precision")
+    rows = [[r["bodies"], r["unknowns"], r["linear_solver"], r["status"], r["steps"], r["jacobian_evals"],
+             r["full_factorizations"], thousands(r["jacobian_nonzeros"]), num(r["seconds"], ".3f"),
+             r["repeats"]] for r in doc["data"]["chains"]]
+    return table(["bodies", "unknowns", "solver", "status", "steps", "Jacobians", "full LU", "nnz",
+                  "wall s", "best of"], rows), [doc]
+
+
+def mbs_residual(res):
+    doc = res("mbs_residual_benchmark")
+    by = {}
+    for b in doc["data"]["benchmarks"]:
+        kind, n = b["name"].split("/")
+        scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3}[b["time_unit"]]
+        by.setdefault(int(n), {})[kind] = b["real_time"] * scale
+        by[int(n)]["unknowns"] = int(b.get("unknowns", 0))
+        if "nnz" in b:
+            by[int(n)]["nnz"] = int(b["nnz"])
+    rows = [[n, v["unknowns"], sig3(v.get("BM_Residual")), sig3(v.get("BM_Jacobian")),
+             sig3(v.get("BM_SparseJacobian")), thousands(v.get("nnz", 0))] for n, v in sorted(by.items())]
+    return table(["N", "unknowns", "residual µs", "dense Jacobian µs", "sparse Jacobian µs", "nnz"],
+                 rows), [doc]
+
+
+TABLES = {f.__name__: f for f in [
+    crank_modes, block_solve, crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
+    beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
+    inline4_profile, mbs_work_precision, mbs_chains, mbs_residual]}
+
+
+def render_table(name, res):
+    if name not in TABLES:
+        raise RenderError(f"unknown table '{name}' (known: {', '.join(TABLES)})")
+    lines, docs = TABLES[name](res)
+    for d in docs:
+        lines += ["", source(d, d["benchmark"])]
+    return "\n".join(lines) + "\n"
+
+
+def render_value(spec, fmt, res):
+    file, _, path = spec.strip().partition("/")
+    try:
+        x = find(res(file)["data"], [p for p in path.split("/") if p])
+    except RenderError as e:
+        raise RenderError(f"value '{spec}': {e}")
+    if not isinstance(x, (int, float)):
+        raise RenderError(f"value '{spec}' is not a number: {x!r}")
+    return num(x, fmt or "g")
+
+
+def render_document(text, res, problems):
+    def table_sub(m):
+        try:
+            return m.group(1) + render_table(m.group(2), res) + m.group(4)
+        except RenderError as e:
+            problems.append(str(e))
+            return m.group(0)
+
+    def value_sub(m):
+        try:
+            return m.group(1) + render_value(m.group(2), m.group(3), res) + m.group(5)
+        except RenderError as e:
+            problems.append(str(e))
+            return m.group(0)
+
+    return VALUE_RE.sub(value_sub, TABLE_RE.sub(table_sub, text))
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--check", action="store_true")
+    p.add_argument("--print", metavar="NAME")
+    p.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    a = p.parse_args()
+    res = Results(a.root)
+    if a.print:
+        try:
+            sys.stdout.write(render_table(a.print, res))
+        except RenderError as e:
+            sys.exit(f"render_tables.py: {e}")
+        return 0
+    problems, stale = [], []
+    for rel in DOCS:
+        path = os.path.join(a.root, rel)
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        new = render_document(text, res, problems)
+        if new == text:
+            continue
+        if a.check:
+            names = [m.group(2) for m in TABLE_RE.finditer(text)
+                     if m.group(0) not in new]
+            values = [m.group(2) for m in VALUE_RE.finditer(text) if m.group(0) not in new]
+            stale.append(f"{rel}: differs from the results in tables {names or '-'}, values {values or '-'}")
+        else:
+            with open(path + ".tmp", "w", encoding="utf-8") as f:
+                f.write(new)
+            os.replace(path + ".tmp", path)
+            print(f"updated {rel}")
+    for msg in problems + stale:
+        print(f"render_tables.py: {msg}", file=sys.stderr)
+    if problems or stale:
+        if stale:
+            print("render_tables.py: run /usr/bin/python3 benchmarks/render_tables.py to regenerate",
+                  file=sys.stderr)
+        return 1
+    if a.check:
+        print("benchmark tables and values: up to date")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
