@@ -45,9 +45,10 @@ inline constexpr double kRigidRoundOff = 1e-10;
 /// from a spectrum by the gap above it: the next eigenvalue is at least kRigidGap times the
 /// largest rigid one (neighbouring elastic modes lie within ~1e3 of each other) ...
 inline constexpr double kRigidGap = 1e4;
-/// ... where eigenvalues closer to zero than kRigidFloor · s count as kRigidFloor · s (exact
-/// zeros would make any positive next eigenvalue a gap).
-inline constexpr double kRigidFloor = 1e-14;
+/// ... where eigenvalues closer to zero than kRigidFloor · s (double round-off of the scale)
+/// count as kRigidFloor · s: they are numerically zero, and exact zeros would make any
+/// positive next eigenvalue a gap.
+inline constexpr double kRigidFloor = 1e-16;
 
 /// The number of rigid-body modes among the lowest eigenvalues λ (ascending) of a part with
 /// stiffness/mass scale `scale`: the largest k <= 6 such that |λ_0…λ_{k-1}| < kRigidRoundOff

@@ -18,9 +18,16 @@ namespace {
 
 constexpr double kL = 1.0, kB = 0.1, kT = 0.002;  // plate length, width, thickness [m]
 
-SystemMatrices Plate(Mesh* mesh) {
-  *mesh = MakeBoxMesh({kL, kB, kT}, {20, 2, 1}, CellType::kHex20);
-  return AssembleSystem(*mesh, IsotropicMaterial{});
+Mesh PlateMesh() { return MakeBoxMesh({kL, kB, kT}, {20, 2, 1}, CellType::kHex20); }
+
+// The plate's lowest `num_modes` modes with the unknowns `fixed` (of its mesh) held.
+ModalResult PlateModes(int num_modes, const std::vector<int>& fixed) {
+  ModalOptions mo;
+  mo.num_modes = num_modes;
+  mo.fixed_dofs = fixed;
+  const ModalResult r = ComputeModes(AssembleSystem(PlateMesh(), IsotropicMaterial{}), mo);
+  EXPECT_TRUE(r.eig.ok()) << r.eig.message;
+  return r;
 }
 
 // Euler-Bernoulli first clamped-free bending frequency of the plate as a strip,
@@ -29,13 +36,7 @@ SystemMatrices Plate(Mesh* mesh) {
 constexpr double kBeamTheoryBand = 0.15;
 
 TEST(RigidModes, ClampedThinPlateHasNoneHoweverLowItsFirstMode) {
-  Mesh mesh;
-  const SystemMatrices sys = Plate(&mesh);
-  ModalOptions mo;
-  mo.num_modes = 3;
-  mo.fixed_dofs = GroupDofs(mesh, "x0");
-  const ModalResult r = ComputeModes(sys, mo);
-  ASSERT_TRUE(r.eig.ok()) << r.eig.message;
+  const ModalResult r = PlateModes(3, GroupDofs(PlateMesh(), "x0"));
   const IsotropicMaterial s;
   const double I = kB * std::pow(kT, 3) / 12.0, A = kB * kT;
   const double f_beam = 1.8751 * 1.8751 / (2.0 * M_PI) *
@@ -46,38 +47,17 @@ TEST(RigidModes, ClampedThinPlateHasNoneHoweverLowItsFirstMode) {
   EXPECT_EQ(r.num_rigid_modes, 0);
 }
 
-TEST(RigidModes, FreeThinPlateHasExactlySix) {
-  Mesh mesh;
-  const SystemMatrices sys = Plate(&mesh);
-  ModalOptions mo;
-  mo.num_modes = 8;
-  const ModalResult r = ComputeModes(sys, mo);
-  ASSERT_TRUE(r.eig.ok()) << r.eig.message;
-  EXPECT_EQ(r.num_rigid_modes, 6);
-  for (int i = 0; i < 8; ++i) std::printf("lambda %d = %.6e\n", i, r.eig.eigenvalues[i]);
-}
+TEST(RigidModes, FreeThinPlateHasExactlySix) { EXPECT_EQ(PlateModes(8, {}).num_rigid_modes, 6); }
 
 TEST(RigidModes, PartHeldAtOneNodeKeepsItsThreeRotations) {
-  Mesh mesh;
-  const SystemMatrices sys = Plate(&mesh);
-  ModalOptions mo;
-  mo.num_modes = 5;
-  mo.fixed_dofs = {Dof(0, 0), Dof(0, 1), Dof(0, 2)};
-  const ModalResult r = ComputeModes(sys, mo);
-  ASSERT_TRUE(r.eig.ok()) << r.eig.message;
-  EXPECT_EQ(r.num_rigid_modes, 3);
+  EXPECT_EQ(PlateModes(5, {Dof(0, 0), Dof(0, 1), Dof(0, 2)}).num_rigid_modes, 3);
 }
 
 TEST(RigidModes, NodesInTwoClampedGroupsCountOnce) {
-  Mesh mesh;
-  const SystemMatrices sys = Plate(&mesh);
-  ModalOptions mo;
-  mo.num_modes = 2;
-  const std::vector<int> x0 = GroupDofs(mesh, "x0");
-  mo.fixed_dofs = x0;
-  mo.fixed_dofs.insert(mo.fixed_dofs.end(), x0.begin(), x0.end());  // the same group twice
-  const ModalResult r = ComputeModes(sys, mo);
-  EXPECT_EQ(r.num_fixed_dofs, static_cast<int>(x0.size()));
+  std::vector<int> twice = GroupDofs(PlateMesh(), "x0");
+  const int once = static_cast<int>(twice.size());
+  twice.insert(twice.end(), twice.begin(), twice.begin() + once);  // the same group twice
+  EXPECT_EQ(PlateModes(2, twice).num_fixed_dofs, once);
 }
 
 TEST(RigidModes, CountNeedsRoundOffAndAGap) {

@@ -16,6 +16,7 @@
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/scene/scene.h"
+#include "tests/support/pendulum_scene.h"
 #include "tests/support/temp_dir.h"
 
 namespace emb::scene {
@@ -177,18 +178,9 @@ analysis: {linear_solver: klu, atol_floor_relative: 1.0e-12, multiplier_atol_rel
 
 // --- bad input -------------------------------------------------------------------------
 
-const char* kGood = R"(
-name: t
-gravity: [0, -9.81, 0]
-bodies:
-  - {name: rod, mass: 1.0, inertia: [1.0e-4, 0.083, 0.083], position: [0.5, 0, 0]}
-markers:
-  - {name: pivot, body: ground, position: [0, 0, 0]}
-  - {name: rod_top, body: rod, position: [-0.5, 0, 0]}
-joints:
-  - {name: hinge, type: revolute, i: rod_top, j: pivot}
-analysis: {type: dynamic, t_end: 0.1, output_step: 0.01}
-)";
+const std::string kGood = std::string("\nname: t\ngravity: [0, -9.81, 0]\n") +
+                          testing::kPendulumSceneParts +
+                          "analysis: {type: dynamic, t_end: 0.1, output_step: 0.01}\n";
 
 std::string Replace(std::string s, const std::string& from, const std::string& to) {
   const auto p = s.find(from);

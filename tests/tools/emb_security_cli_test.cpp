@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "tests/support/cli_fixture.h"
+#include "tests/support/pendulum_scene.h"
 
 namespace emb::test {
 namespace {
@@ -26,15 +27,8 @@ class SecurityCli : public CliTest {
   }
   // A scene that assembles one pendulum and writes `output`.
   void WriteScene(const fs::path& path, const std::string& output) const {
-    std::ofstream(path) << R"(bodies:
-  - {name: rod, mass: 1.0, inertia: [1.0e-4, 0.083, 0.083], position: [0.5, 0, 0]}
-markers:
-  - {name: pivot, body: ground, position: [0, 0, 0]}
-  - {name: rod_top, body: rod, position: [-0.5, 0, 0]}
-joints:
-  - {name: hinge, type: revolute, i: rod_top, j: pivot}
-analysis: {type: assemble}
-output: )" << output << "\n";
+    std::ofstream(path) << emb::testing::kPendulumSceneParts << "analysis: {type: assemble}\n"
+                        << "output: " << output << "\n";
   }
 };
 
