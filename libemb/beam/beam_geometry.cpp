@@ -11,6 +11,7 @@
 
 #include "libemb/beam/beam_modal.h"
 #include "libemb/common/error.h"
+#include "libemb/mesh/gmsh_input_audit.h"
 #include "libemb/mesh/gmsh_reader.h"
 #include "libemb/mesh/gmsh_session.h"
 
@@ -67,7 +68,8 @@ std::vector<BeamInterface> SurfaceGroupCentroids(const std::string& path) {
   std::vector<BeamInterface> out;
   gmsh::vectorpair groups;
   GmshCall("read surface groups of", path, [&] { gmsh::model::getPhysicalGroups(groups, 2); });
-  for (const auto& [dim, tag] : groups) {
+  for (const auto& group : groups) {
+    const int dim = group.first, tag = group.second;  // captured below (clang 14: no bindings)
     BeamInterface itf;
     std::vector<int> surfaces;
     GmshCall("read surface group " + std::to_string(tag) + " of", path, [&] {
@@ -200,6 +202,7 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
   EMB_THROW_IF(!(o.contact_tolerance > 0.0),
                "beam generation: contact tolerance: expected > 0 m, got " << o.contact_tolerance);
   o.material.Validate();
+  if (!o.trust_scripts) AuditGmshInput(path);
 
   auto overrides = o.parameters;
   const auto declared = GeoParameters(path);
@@ -221,11 +224,12 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
   std::vector<Integrals> integrals;
   {
     GmshSession session(args);
-    GmshCall("open", path, [&] { gmsh::open(path); });
+    GmshOpen(path, /*trusted=*/true);  // audited above unless trusted
     gmsh::vectorpair groups;
     GmshCall("read physical groups of", path, [&] { gmsh::model::getPhysicalGroups(groups, 3); });
     std::string found;
-    for (const auto& [dim, tag] : groups) {
+    for (const auto& group : groups) {
+      const int dim = group.first, tag = group.second;  // captured below (clang 14: no bindings)
       std::string name;
       gmsh::model::getPhysicalName(dim, tag, name);
       found += (found.empty() ? "'" : ", '") + name + "'";

@@ -92,6 +92,8 @@ struct BeamGenerationOptions {
   /// Elastic webs: width b of the web arm's section [m]; 0 = web_r_main + web_r_pin of the
   /// .geo (an InputError if it declares neither).
   double web_width{0.0};
+  /// Give the geometry to gmsh without auditing it (gmsh_input_audit.h): trusted files only.
+  bool trust_scripts{false};
 };
 
 /// One named part of the geometry and what became of it.

@@ -1,9 +1,11 @@
 #include "libemb/cms/body_file.h"
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "libemb/common/error.h"
@@ -108,6 +110,26 @@ class Codec {
       x = h5_.ReadDoubleAttribute(object, name);
     digest_.Add(&x, sizeof x);
   }
+  // Metadata covered by the digest (format version 2): text and numbers, length-prefixed so
+  // that "ab","c" and "a","bc" differ.
+  void Text(const std::string& s) {
+    const std::uint64_t n = s.size();
+    digest_.Add(&n, sizeof n);
+    digest_.Add(s.data(), s.size());
+  }
+  void Number(double x) { digest_.Add(&x, sizeof x); }
+  // Reading: the dataset just read at `path` must have this shape (a damaged or crafted file
+  // must not make the reader index past what it read).
+  void ExpectShape(const std::string& path, const Eigen::MatrixXd& A, Eigen::Index rows,
+                   Eigen::Index cols) const {
+    EMB_THROW_IF(!writing_ && (A.rows() != rows || A.cols() != cols),
+                 "'" << h5_.path() << "': " << path << ": expected a (" << rows << ", " << cols
+                     << ") dataset, got (" << A.rows() << ", " << A.cols() << ")");
+  }
+  void ExpectSize(const std::string& path, Eigen::Index size, Eigen::Index expected) const {
+    EMB_THROW_IF(!writing_ && size != expected, "'" << h5_.path() << "': " << path << ": expected "
+                                                    << expected << " values, got " << size);
+  }
   std::string Hex() const { return digest_.Hex(); }
   bool writing() const { return writing_; }
   bool Exists(const std::string& path) const { return h5_.Exists(path); }
@@ -133,46 +155,97 @@ void TransferGeometricStiffness(Codec& c, GeometricStiffness& g) {
   g.present = true;
 }
 
-// The numeric content of a body, in one fixed order.
+// The numeric content of a body, in one fixed order. Reading, every dataset is checked
+// against the sizes read before it (nr from K, nb from the interfaces, ne from the
+// frequencies).
 void Transfer(Codec& c, ReducedBody& b) {
   c.Matrix("/reduced/K", b.K);
+  const Eigen::Index nr = b.K.rows();
+  c.ExpectShape("/reduced/K", b.K, nr, nr);
   c.Matrix("/reduced/M", b.M);
+  c.ExpectShape("/reduced/M", b.M, nr, nr);
   c.Matrix("/reduced/D", b.D);
-  Eigen::MatrixXd points(b.interfaces.size(), 3);
-  for (size_t j = 0; j < b.interfaces.size(); ++j) points.row(j) = b.interfaces[j].point.transpose();
+  c.ExpectShape("/reduced/D", b.D, nr, nr);
+  const Eigen::Index nb = static_cast<Eigen::Index>(b.interfaces.size());
+  Eigen::MatrixXd points(nb, 3);
+  for (Eigen::Index j = 0; j < nb; ++j) points.row(j) = b.interfaces[j].point.transpose();
   c.Matrix("/interfaces/points", points);
-  for (size_t j = 0; j < b.interfaces.size(); ++j) {
+  c.ExpectShape("/interfaces/points", points, nb, 3);
+  for (Eigen::Index j = 0; j < nb; ++j) {
     Interface& itf = b.interfaces[j];
     itf.point = points.row(j).transpose();
     c.Ints("/interfaces/" + itf.name + "/nodes", itf.nodes);
     c.Vector("/interfaces/" + itf.name + "/weights", itf.weights);
+    c.ExpectSize("/interfaces/" + itf.name + "/weights", itf.weights.size(),
+                 static_cast<Eigen::Index>(itf.nodes.size()));
   }
   c.Vector("/fixed_interface/frequencies_hz", b.fixed_interface_hz);
   c.Vector("/modes/frequencies_hz", b.modes.frequencies_hz);
+  const Eigen::Index ne = b.modes.frequencies_hz.size();
   c.Vector("/modes/eigenvalues", b.modes.eigenvalues);
+  c.ExpectSize("/modes/eigenvalues", b.modes.eigenvalues.size(), ne);
   c.Vector("/modes/damping_ratios", b.damping_ratios);
+  c.ExpectSize("/modes/damping_ratios", b.damping_ratios.size(), ne);
   c.Matrix("/modes/X", b.modes.elastic);
+  c.ExpectShape("/modes/X", b.modes.elastic, nr, ne);
   c.Matrix("/modes/rigid", b.modes.rigid);
+  c.ExpectShape("/modes/rigid", b.modes.rigid, nr, 6);
   c.Matrix("/modes/interface_shapes", b.interface_shapes);
+  c.ExpectShape("/modes/interface_shapes", b.interface_shapes, 6 * nb, ne);
   c.Vector("/modes/rigid_frequencies_hz", b.modes.rigid_frequencies_hz);
   InertiaInvariants& inv = b.invariants;
   c.Scalar("/invariants", "mass", inv.mass);
   Eigen::VectorXd first = inv.first_moment;
   c.Vector("/invariants/first_moment", first);
+  c.ExpectSize("/invariants/first_moment", first.size(), 3);
   inv.first_moment = first;
   Eigen::MatrixXd second = inv.second_moment;
   c.Matrix("/invariants/second_moment", second);
+  c.ExpectShape("/invariants/second_moment", second, 3, 3);
   inv.second_moment = second;
   c.Matrix("/invariants/St", inv.St);
+  c.ExpectShape("/invariants/St", inv.St, 3, ne);
   c.Matrix("/invariants/Ibar", inv.Ibar);
+  c.ExpectShape("/invariants/Ibar", inv.Ibar, 9, ne);
   // Sbar as one (9, ne, ne) dataset: stack the 9 matrices row-wise into (9·ne, ne).
-  const int ne = static_cast<int>(b.modes.elastic.cols());
   Eigen::MatrixXd stacked(9 * ne, ne);
   for (int k = 0; k < 9; ++k)
     if (inv.Sbar[k].size() == ne * ne) stacked.middleRows(k * ne, ne) = inv.Sbar[k];
   c.Matrix("/invariants/Sbar", stacked);
+  c.ExpectShape("/invariants/Sbar", stacked, 9 * ne, ne);
   for (int k = 0; k < 9; ++k) inv.Sbar[k] = stacked.middleRows(k * ne, ne);
   TransferGeometricStiffness(c, b.geometric_stiffness);
+}
+
+// Format version 2 of the digest also covers everything else the reader uses (the
+// attributes and the interface names), in this order; version 1 covered the numeric
+// datasets only, so a changed damping ratio or material went unnoticed.
+constexpr long long kDigestVersion = 2;
+
+void TransferMetadata(Codec& c, const BodyFileInfo& info, const ReducedBody& b) {
+  for (const std::string* s :
+       {&info.provenance.command, &info.provenance.source, &info.provenance.mesh_hash,
+        &info.provenance.options, &info.element_types, &info.interfaces, &info.selection,
+        &info.material.name, &b.selection_note})
+    c.Text(*s);
+  for (double x : {info.shift_hz, info.material.youngs_modulus, info.material.poisson_ratio,
+                   info.material.density, double(b.num_boundary), double(b.free_free),
+                   double(b.num_fe_dofs)})
+    c.Number(x);
+  for (const Interface& itf : b.interfaces) {
+    c.Text(itf.name);
+    c.Text(Name(itf.coupling));
+    c.Text(itf.point_source);
+  }
+  if (b.damping.kind == DampingModel::Kind::kModal) {
+    c.Text("modal");
+    c.Number(b.damping.ratio);
+  } else {
+    c.Text("rayleigh");
+    c.Number(b.damping.alpha);
+    c.Number(b.damping.beta);
+  }
+  if (b.geometric_stiffness.present) c.Text(b.geometric_stiffness.support);
 }
 
 // The parts of a body that Transfer reads or writes (not the large mesh shapes).
@@ -253,7 +326,11 @@ void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const 
     ReducedBody content = NumericContent(body);  // Transfer works on a mutable body
     Codec codec(h5, true);
     Transfer(codec, content);
+    BodyFileInfo written = info;
+    written.element_types = mesh ? ElementTypes(*mesh) : info.element_types;
+    TransferMetadata(codec, written, body);
     h5.SetAttribute("/", "content_digest", codec.Hex());
+    h5.SetAttribute("/", "content_digest_version", kDigestVersion);
     if (body.geometric_stiffness.present) {
       h5.SetAttribute(kGeometricStiffnessGroup, "support", body.geometric_stiffness.support);
       h5.SetAttribute(kGeometricStiffnessGroup, "centrifugal_products",
@@ -300,9 +377,11 @@ void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const 
       const std::uint64_t ne = body.mesh_shapes.cols(), n = mesh->num_nodes();
       h5.Write("/modes/mesh_shapes", body.mesh_shapes.data(), {ne, n, 3});
     }
+    h5.Close();
   }
-  out.Commit();
 
+  // Both files are complete before either takes its name.
+  std::optional<AtomicFile> xdmf;
   if (shapes && !xdmf_path.empty()) {
     std::vector<double> steps;
     std::vector<std::string> names;
@@ -313,9 +392,12 @@ void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const 
       names.emplace_back(buf);
     }
     const std::string h5_name = std::filesystem::path(path).filename().string();
-    WriteTextFileAtomic(xdmf_path,
-                        MakeXdmfSteps(h5_name, *mesh, "/modes/mesh_shapes", "mode_shape", steps, names));
+    xdmf.emplace(xdmf_path);
+    xdmf->WriteText(
+        MakeXdmfSteps(h5_name, *mesh, "/modes/mesh_shapes", "mode_shape", steps, names));
   }
+  out.Commit();
+  if (xdmf) xdmf->Commit();
 }
 
 ReducedBody ReadBodyFile(const std::string& path, BodyFileInfo* info_out) {
@@ -389,8 +471,18 @@ ReducedBody ReadBodyFile(const std::string& path, BodyFileInfo* info_out) {
   }
   for (const auto& p : {"/reduced/K", "/modes/X", "/invariants/Sbar"})
     EMB_THROW_IF(!h5.Exists(p), "body file '" << path << "': missing dataset " << p);
+  const long long digest_version =
+      h5.HasAttribute("/", "content_digest_version")
+          ? h5.ReadIntAttribute("/", "content_digest_version")
+          : 1;
+  EMB_THROW_IF(digest_version != 1 && digest_version != kDigestVersion,
+               "body file '" << path << "': expected content digest version 1 or "
+                             << kDigestVersion << ", got " << digest_version);
+  if (h5.Exists(kGeometricStiffnessGroup))
+    b.geometric_stiffness.support = h5.ReadStringAttribute(kGeometricStiffnessGroup, "support");
   Codec codec(h5, false);
   Transfer(codec, b);
+  if (digest_version >= 2) TransferMetadata(codec, info, b);
   EMB_THROW_IF(codec.Hex() != info.content_digest,
                "body file '" << path << "': content digest " << codec.Hex()
                              << " does not match the recorded " << info.content_digest
@@ -399,7 +491,6 @@ ReducedBody ReadBodyFile(const std::string& path, BodyFileInfo* info_out) {
   const int ne = static_cast<int>(b.modes.elastic.cols());
   GeometricStiffness& g = b.geometric_stiffness;
   if (g.present) {
-    g.support = h5.ReadStringAttribute(kGeometricStiffnessGroup, "support");
     const std::string products =
         h5.ReadStringAttribute(kGeometricStiffnessGroup, "centrifugal_products");
     EMB_THROW_IF(products != kCentrifugalProducts,
@@ -417,6 +508,32 @@ ReducedBody ReadBodyFile(const std::string& path, BodyFileInfo* info_out) {
                    b.modes.frequencies_hz.size() != ne ||
                    b.interface_shapes.rows() != 6 * static_cast<int>(b.interfaces.size()),
                "body file '" << path << "': inconsistent dataset sizes");
+  // Values no reduction writes (a file from elsewhere, or one written before the digest
+  // covered its attributes).
+  try {
+    info.material.Validate();
+  } catch (const InputError& e) {
+    EMB_THROW(InputError, "body file '" << path << "': " << e.what());
+  }
+  const DampingModel& d = b.damping;
+  EMB_THROW_IF(!(std::isfinite(d.ratio) && d.ratio >= 0.0 && std::isfinite(d.alpha) &&
+                 d.alpha >= 0.0 && std::isfinite(d.beta) && d.beta >= 0.0),
+               "body file '" << path << "': damping: expected finite values >= 0, got ratio "
+                             << d.ratio << ", alpha " << d.alpha << " 1/s, beta " << d.beta
+                             << " s");
+  EMB_THROW_IF(b.num_boundary < 0 || b.num_boundary > nr,
+               "body file '" << path << "': /reduced@num_boundary: expected 0.." << nr
+                             << ", got " << b.num_boundary);
+  for (const auto& [name, A] :
+       {std::pair<const char*, const Eigen::MatrixXd*>{"/reduced/K", &b.K},
+        {"/reduced/M", &b.M}, {"/reduced/D", &b.D}, {"/modes/X", &b.modes.elastic},
+        {"/modes/interface_shapes", &b.interface_shapes}, {"/invariants/St", &b.invariants.St},
+        {"/invariants/Ibar", &b.invariants.Ibar}})
+    EMB_THROW_IF(!A->allFinite(), "body file '" << path << "': " << name
+                                                << " holds a non-finite value (NaN or inf)");
+  EMB_THROW_IF(!b.modes.eigenvalues.allFinite() || !std::isfinite(b.invariants.mass) ||
+                   !(b.invariants.mass > 0.0),
+               "body file '" << path << "': expected finite eigenvalues and a positive mass");
   if (info_out) *info_out = info;
   return b;
 }

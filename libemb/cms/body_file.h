@@ -10,7 +10,11 @@
 ///   /                      @format "emb.body", @format_version 1, @emb_version, @units,
 ///                          @content_digest (FNV-1a of every numeric dataset below except
 ///                          /mesh and /modes/mesh_shapes, in a fixed order, /geometric_stiffness
-///                          last if present: a changed byte is detected on reading)
+///                          last if present, then — @content_digest_version 2 — the
+///                          attributes and interface names the reader uses: provenance,
+///                          material, /reduced counts, damping, stiffening support; a changed
+///                          byte is detected on reading. Files without the version attribute
+///                          (version 1) have only the datasets covered)
 ///   /provenance            @command @source @mesh_hash @options @element_types
 ///                          @interfaces ("name:coupling@x,y,z; ...") @selection @shift_hz
 ///   /material              @name @youngs_modulus [Pa] @poisson_ratio @density [kg/m³]

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "libemb/cms/coupled_model.h"
@@ -11,6 +12,14 @@
 #include "libemb/fe/modal_analysis.h"
 
 namespace emb {
+namespace {
+// A small number with its digits ("4.6e-10", not std::to_string's "0.000000").
+std::string Sci(double v) {
+  std::ostringstream o;
+  o << std::setprecision(2) << v;
+  return o.str();
+}
+}  // namespace
 namespace {
 
 constexpr double kPairedMac = 0.5;
@@ -54,7 +63,9 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
   constexpr double kMassLimit = CertificateLimits::kMassProperties;
   if (!(cert.mass_error <= kMassLimit && cert.com_error <= kMassLimit &&
         cert.inertia_error <= kMassLimit))
-    fail("mass properties of the reduced body differ from the full model");
+    fail("mass properties of the reduced body differ from the full model (mass, centre and "
+         "inertia errors " + Sci(cert.mass_error) + ", " + Sci(cert.com_error) + ", " +
+         Sci(cert.inertia_error) + ", limit " + Sci(kMassLimit) + ")");
   // Two quadratures of the same mass integrals: round-off apart.
   if (!(cert.quadrature_mass_error <= kMassLimit))
     fail("the consistent mass matrix disagrees with the mesh's mass quadrature");
@@ -71,7 +82,9 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
   cert.rigid_stiffness = modes.rigid_stiffness;
   if (!(cert.orthonormality_error <= CertificateLimits::kOrthonormality &&
         cert.k_diagonality_error <= CertificateLimits::kOrthonormality))
-    fail("the orthonormalised basis is not M-orthonormal and K-diagonal");
+    fail("the orthonormalised basis is not M-orthonormal and K-diagonal (errors " +
+         Sci(cert.orthonormality_error) + " and " + Sci(cert.k_diagonality_error) + ", limit " +
+         Sci(CertificateLimits::kOrthonormality) + ")");
 
   // 4. Free-free frequencies vs the full model.
   const int ne = static_cast<int>(modes.frequencies_hz.size());
@@ -112,14 +125,9 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
       const Eigen::MatrixXd& Phi_r = elastic_shapes;
       const Eigen::MatrixXd MPphi = sys.M * (model.P * ref.vectors);
       const Eigen::MatrixXd cross = (Phi_r.transpose() * MPphi).cwiseAbs2();
-      const double rigid_threshold = 1e-10 * NormOne(model.K) / NormOne(model.M);
-      int num_rigid = 0;
-      for (int i = 0; i < ref.eigenvalues.size(); ++i) {
+      const int num_rigid = CountRigidModes(ref.eigenvalues, NormOne(model.K) / NormOne(model.M));
+      for (int i = num_rigid; i < ref.eigenvalues.size(); ++i) {
         const double f = FrequencyHz(ref.eigenvalues[i]);
-        if (std::abs(ref.eigenvalues[i]) < rigid_threshold) {
-          ++num_rigid;
-          continue;
-        }
         if (f > cert.fmax_hz) break;
         ModePair p;
         p.full_mode = i + 1 - num_rigid;
@@ -155,7 +163,8 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
     cert.static_loads = st.num_loads;
     cert.static_error = st.max_error;
     if (st.run && !(st.max_error <= CertificateLimits::kStatic))
-      fail("the reduced body is not statically exact at its interfaces");
+      fail("the reduced body is not statically exact at its interfaces (error " +
+           Sci(st.max_error) + ", limit " + Sci(CertificateLimits::kStatic) + ")");
   } else {
     cert.static_note = "not run (switched off)";
   }
@@ -166,7 +175,7 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
   cert.constraint_mode_residual = basis.static_residual;
   if (!basis.free_free && !(basis.static_residual <= CertificateLimits::kConstraintModes))
     fail("the constraint modes are inaccurate (relative residual " +
-         std::to_string(basis.static_residual) + ")");
+         Sci(basis.static_residual) + ", limit " + Sci(CertificateLimits::kConstraintModes) + ")");
   return cert;
 }
 

@@ -159,6 +159,11 @@ CylinderFit FitCylinder(const Eigen::Matrix3Xd& x, Eigen::Vector3d a) {
 }
 
 Interface Resolve(const Mesh& mesh, const InterfaceSpec& spec) {
+  EMB_THROW_IF(std::none_of(mesh.groups.begin(), mesh.groups.end(),
+                           [&](const PhysicalGroup& g) { return g.name == spec.group; }),
+               "interface '" << spec.group << "': mesh '" << mesh.source
+                             << "' has no physical group of that name; expected one of: "
+                             << mesh.GroupNames());
   const PhysicalGroup& g = mesh.group(spec.group);
   EMB_THROW_IF(g.dim != 2, "interface '" << spec.group << "': expected a surface group, got a "
                                          << g.dim << "-D group");

@@ -120,6 +120,7 @@ BeamGenerationOptions GenerationOptions(const ComparisonOptions& o, WebModel web
   g.shear_deformable = o.shear_deformable;
   g.webs = webs;
   g.web_width = o.web_width;
+  g.trust_scripts = o.meshing.trust_scripts;
   return g;
 }
 

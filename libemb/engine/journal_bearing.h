@@ -80,6 +80,7 @@ class JournalBearing final : public ForceElement {
   double DoCalcDissipatedPower(const ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override { return {i_, j_}; }
   bool DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const override;
+  bool DoReportsLoad() const override { return true; }
 
  private:
   /// The film load of the relative motion of I in J (relative_motion.h): e = x.head<2>,

@@ -21,9 +21,13 @@ double LambdaFromHz(double f_hz) {
 ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
                          const ProgressFn& progress) {
   EigenSolverOptions so = options.solver;
+  // Unknowns fixed twice (a node in two clamped groups) count once.
+  std::vector<int> fixed = options.fixed_dofs;
+  std::sort(fixed.begin(), fixed.end());
+  fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
   // For the lowest modes, one more than asked tells whether the last one has a degenerate
   // partner (the requested count would cut a pair in two).
-  const int free_dofs = sys.num_dofs() - static_cast<int>(options.fixed_dofs.size());
+  const int free_dofs = sys.num_dofs() - static_cast<int>(fixed.size());
   const bool probe_next = options.shift_hz < 0.0 && options.num_modes + 1 < free_dofs &&
                           (so.subspace == 0 || so.subspace > options.num_modes + 1);
   so.num_modes = options.num_modes + (probe_next ? 1 : 0);
@@ -31,20 +35,19 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
   if (so.shift > 0.0 && so.backend == CholeskyBackend::kCholmodSupernodal)
     so.backend = CholeskyBackend::kCholmodLDLT;  // interior shift: K − σM is indefinite
   ModalResult r;
-  if (options.fixed_dofs.empty()) {
+  r.num_fixed_dofs = static_cast<int>(fixed.size());
+  double scale = 0.0;  // ‖K‖₁/‖M‖₁ of the free unknowns
+  if (fixed.empty()) {
     r.eig = SolveGeneralizedEigen(sys.K, sys.M, so, progress);
-    r.rigid_threshold = 1e-10 * NormOne(sys.K) / NormOne(sys.M);
+    scale = NormOne(sys.K) / NormOne(sys.M);
   } else {
-    std::vector<int> fixed = options.fixed_dofs;
-    std::sort(fixed.begin(), fixed.end());
-    fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
     EMB_THROW_IF(fixed.front() < 0 || fixed.back() >= sys.num_dofs(),
                  "fixed unknowns: expected indices in [0, " << sys.num_dofs() << ")");
     const std::vector<int> free = Complement(fixed, sys.num_dofs());
     const SparseMatrix Kff = ExtractSubmatrix(sys.K, free, free);
     const SparseMatrix Mff = ExtractSubmatrix(sys.M, free, free);
     r.eig = SolveGeneralizedEigen(Kff, Mff, so, progress);
-    r.rigid_threshold = 1e-10 * NormOne(Kff) / NormOne(Mff);
+    scale = NormOne(Kff) / NormOne(Mff);
     Eigen::MatrixXd full = Eigen::MatrixXd::Zero(sys.num_dofs(), r.eig.vectors.cols());
     for (size_t k = 0; k < free.size(); ++k) full.row(free[k]) = r.eig.vectors.row(k);
     r.eig.vectors = std::move(full);
@@ -52,13 +55,17 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
   if (probe_next && !r.eig.ok())
     r.eig.message += " (" + std::to_string(so.num_modes) +
                      " = one more mode than asked, to check for a degenerate partner)";
+  r.rigid_threshold = kRigidRoundOff * scale;
+  // Rigid modes are counted with the probe mode, which may show the gap after the last one.
+  r.num_rigid_modes = CountRigidModes(r.eig.eigenvalues, scale);
   if (probe_next && r.eig.eigenvalues.size() == so.num_modes) {
     const int n = options.num_modes;
     const double last = r.eig.eigenvalues[n - 1], next = r.eig.eigenvalues[n];
     // Degenerate to 1e-6 relative: far above the solver's accuracy (~1e-12), far below the
     // splitting of pairs that a mesh breaks (Tet10 tube: 2e-4).
-    r.splits_degenerate_group = std::abs(last) >= r.rigid_threshold &&
-                                std::abs(next - last) <= 1e-6 * std::abs(last);
+    r.splits_degenerate_group =
+        n > r.num_rigid_modes && std::abs(next - last) <= 1e-6 * std::abs(last);
+    r.num_rigid_modes = std::min(r.num_rigid_modes, n);
     r.eig.eigenvalues.conservativeResize(n);
     r.eig.vectors.conservativeResize(Eigen::NoChange, n);
     r.eig.backward_errors.conservativeResize(n);
@@ -66,12 +73,20 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
     r.eig.num_requested = n;
   }
   r.frequencies_hz = r.eig.eigenvalues.unaryExpr([](double l) { return FrequencyHz(l); });
-  // Rigid-body eigenvalues come out at round-off level relative to the stiffness/mass scale
-  // ‖K‖/‖M‖ (~ the largest eigenvalue); 1e-10 of it is far above round-off (1e-16) and far
-  // below any elastic mode of a part that is not a mechanism.
-  for (int i = 0; i < r.eig.eigenvalues.size(); ++i)
-    r.num_rigid_modes += std::abs(r.eig.eigenvalues[i]) < r.rigid_threshold;
   return r;
+}
+
+int CountRigidModes(const Eigen::VectorXd& eigenvalues, double scale) {
+  const int n = static_cast<int>(eigenvalues.size());
+  // The largest k <= 6 whose k lowest eigenvalues are all at round-off level and, if an
+  // eigenvalue follows, lie a gap below it.
+  for (int k = std::min(n, 6); k > 0; --k) {
+    const double largest = eigenvalues.head(k).cwiseAbs().maxCoeff();
+    if (!(largest < kRigidRoundOff * scale)) continue;
+    if (k == n || eigenvalues[k] >= kRigidGap * std::max(largest, kRigidFloor * scale))
+      return k;
+  }
+  return 0;
 }
 
 }  // namespace emb

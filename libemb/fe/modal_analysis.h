@@ -27,13 +27,35 @@ struct ModalResult {
   EigenResult eig;                 ///< eigenvalues λ = ω² [rad²/s²], vectors (all unknowns,
                                    ///< zeros at fixed ones), checks
   Eigen::VectorXd frequencies_hz;  ///< f = sign(λ)·√|λ| / 2π [Hz], ascending
-  int num_rigid_modes{0};          ///< modes with |λ| < rigid_threshold
-  double rigid_threshold{0.0};     ///< 1e-10 · ‖K‖₁/‖M‖₁ [rad²/s²]
+  int num_rigid_modes{0};          ///< the lowest modes that are rigid (CountRigidModes)
+  double rigid_threshold{0.0};     ///< kRigidRoundOff · ‖K‖₁/‖M‖₁ [rad²/s²]
+  int num_fixed_dofs{0};           ///< distinct unknowns held at zero
   /// True when the highest mode returned has a (numerically) degenerate partner that was not
   /// asked for — e.g. one of a bending pair of a tube. Checked for the lowest modes only, by
   /// computing one mode more than asked; the extra mode is not returned.
   bool splits_degenerate_group{false};
 };
+
+/// Rigid-body eigenvalues come out at round-off level of the stiffness/mass scale
+/// s = ‖K‖₁/‖M‖₁ (~ the largest eigenvalue): |λ| ~ 1e-16…1e-12 s. Below kRigidRoundOff · s
+/// an eigenvalue may be rigid ...
+inline constexpr double kRigidRoundOff = 1e-10;
+/// ... but s grows with refinement (as 1/h²) until a low elastic mode of a slender part falls
+/// under it too (a clamped 2 mm plate's 1.7 Hz bending on a fine mesh). Round-off is told
+/// from a spectrum by the gap above it: the next eigenvalue is at least kRigidGap times the
+/// largest rigid one (neighbouring elastic modes lie within ~1e3 of each other) ...
+inline constexpr double kRigidGap = 1e4;
+/// ... where eigenvalues closer to zero than kRigidFloor · s (double round-off of the scale)
+/// count as kRigidFloor · s: they are numerically zero, and exact zeros would make any
+/// positive next eigenvalue a gap.
+inline constexpr double kRigidFloor = 1e-16;
+
+/// The number of rigid-body modes among the lowest eigenvalues λ (ascending) of a part with
+/// stiffness/mass scale `scale`: the largest k <= 6 such that |λ_0…λ_{k-1}| < kRigidRoundOff
+/// · scale and, if λ_k was computed, λ_k >= kRigidGap · max(|λ_i|, kRigidFloor · scale). A
+/// clamped part thus has none however fine its mesh, a free one six; a part held at one point
+/// three (the rotations).
+int CountRigidModes(const Eigen::VectorXd& eigenvalues, double scale);
 
 /// Signed frequency in Hz of an eigenvalue λ = ω² (negative λ → negative frequency).
 double FrequencyHz(double lambda);

@@ -1,6 +1,7 @@
 #include "libemb/integrators/dae_problem.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "libemb/common/error.h"
 
@@ -11,7 +12,12 @@ bool DaeProblem::CalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>&
                               Eigen::Ref<Eigen::VectorXd> r) const {
   const int n = size();
   EMB_CHECK(y.size() == n && yp.size() == n && r.size() == n);
-  return DoCalcResidual(t, y, yp, r);
+  try {
+    return DoCalcResidual(t, y, yp, r);
+  } catch (const NumericalError& e) {
+    recoverable_failure_ = e.what();
+    return false;
+  }
 }
 
 void DaeProblem::CalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
@@ -20,7 +26,12 @@ void DaeProblem::CalcJacobian(double t, double cj, const Eigen::Ref<const Eigen:
   const int n = size();
   EMB_CHECK(has_jacobian());
   EMB_CHECK(y.size() == n && yp.size() == n && jacobian.rows() == n && jacobian.cols() == n);
-  DoCalcJacobian(t, cj, y, yp, jacobian);
+  try {
+    DoCalcJacobian(t, cj, y, yp, jacobian);
+  } catch (const NumericalError& e) {
+    recoverable_failure_ = e.what();
+    jacobian.setConstant(std::numeric_limits<double>::quiet_NaN());
+  }
 }
 
 void DaeProblem::CalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
@@ -31,7 +42,14 @@ void DaeProblem::CalcSparseJacobian(double t, double cj, const Eigen::Ref<const 
   EMB_CHECK(y.size() == n && yp.size() == n);
   const Eigen::Index nnz_before = jacobian->nonZeros();
   const bool first = jacobian->rows() == 0;
-  DoCalcSparseJacobian(t, cj, y, yp, jacobian);
+  try {
+    DoCalcSparseJacobian(t, cj, y, yp, jacobian);
+  } catch (const NumericalError& e) {
+    if (first) throw;  // no structure to fill yet
+    recoverable_failure_ = e.what();
+    std::fill(jacobian->valuePtr(), jacobian->valuePtr() + nnz_before,
+              std::numeric_limits<double>::quiet_NaN());
+  }
   EMB_CHECK(jacobian->rows() == n && jacobian->cols() == n && jacobian->isCompressed());
   EMB_CHECK(first || jacobian->nonZeros() == nnz_before);  // the structure is fixed
 }

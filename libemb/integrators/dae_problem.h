@@ -27,9 +27,12 @@ class DaeProblem {
   /// Number of unknowns n.
   int size() const { return DoSize(); }
 
-  /// r = F(t, y, y'). Sizes n. Implementations may throw (the integrator re-throws) or
-  /// return false to flag a recoverable failure (e.g. a non-finite value), after which the
-  /// integrator retries with a smaller step.
+  /// r = F(t, y, y'). Sizes n. Implementations return false to flag a recoverable failure
+  /// (e.g. a non-finite value), after which the integrator retries with a smaller step. A
+  /// NumericalError thrown by the implementation (a model leaving its domain at a trial
+  /// state, e.g. a journal bearing at eccentricity >= 1) is such a failure too: it is caught
+  /// here, kept as last_recoverable_failure() and false is returned. Other exceptions pass
+  /// (the integrator re-throws them).
   bool CalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
                     const Eigen::Ref<const Eigen::VectorXd>& yp,
                     Eigen::Ref<Eigen::VectorXd> r) const;
@@ -38,8 +41,9 @@ class DaeProblem {
   /// quotients.
   bool has_jacobian() const { return DoHasJacobian(); }
 
-  /// J = dF/dy + cj dF/dy' at (t, y, y'), n x n, overwritten.
-  /// @pre has_jacobian().
+  /// J = dF/dy + cj dF/dy' at (t, y, y'), n x n, overwritten. A NumericalError of the
+  /// implementation is kept as for CalcResidual() and leaves J all NaN (which the
+  /// integrators treat as a recoverable failure). @pre has_jacobian().
   void CalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                     const Eigen::Ref<const Eigen::VectorXd>& yp,
                     Eigen::Ref<Eigen::MatrixXd> jacobian) const;
@@ -51,7 +55,8 @@ class DaeProblem {
   /// J = dF/dy + cj dF/dy' as a compressed-column matrix. On the first call (J empty,
   /// 0 x 0) the problem builds the structure: every entry that can be non-zero at any
   /// state. Later calls with the same matrix keep that structure and refill only the values
-  /// (see MatrixAssembler). Same values as CalcJacobian(). @pre has_jacobian().
+  /// (see MatrixAssembler). Same values as CalcJacobian(); a NumericalError after the first
+  /// call leaves the values NaN as there. @pre has_jacobian().
   void CalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                           const Eigen::Ref<const Eigen::VectorXd>& yp, SparseMatrixd* jacobian) const;
 
@@ -61,6 +66,11 @@ class DaeProblem {
   /// A human-readable name of component i ("body crank: q_w", "joint pin: lambda[2]"),
   /// used in failure reports. Default "y[i]".
   std::string ComponentName(int i) const { return DoComponentName(i); }
+
+  /// The message of the last NumericalError turned into a recoverable failure since
+  /// ClearRecoverableFailure() (empty if none): what an integrator that gives up quotes.
+  const std::string& last_recoverable_failure() const { return recoverable_failure_; }
+  void ClearRecoverableFailure() const { recoverable_failure_.clear(); }
 
  protected:
   virtual int DoSize() const = 0;
@@ -78,6 +88,9 @@ class DaeProblem {
                                     SparseMatrixd* jacobian) const;
   virtual Eigen::VectorXd DoDifferentialMask() const = 0;
   virtual std::string DoComponentName(int i) const;
+
+ private:
+  mutable std::string recoverable_failure_;
 };
 
 }  // namespace emb

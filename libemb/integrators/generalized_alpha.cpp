@@ -226,6 +226,8 @@ IntegratorReport GeneralizedAlphaSolver::Failure(IntegratorStatus status, double
   r.t = t_;
   r.last_step = h;
   r.message = message;
+  if (!problem_.last_recoverable_failure().empty())
+    r.message += "; last failed evaluation: " + problem_.last_recoverable_failure();
   if (last_error_.size() && last_error_.cwiseAbs().maxCoeff() > 0.0) {
     Eigen::Index i = 0;
     r.worst_weighted_error = last_error_.cwiseAbs().maxCoeff(&i);
@@ -239,6 +241,7 @@ IntegratorReport GeneralizedAlphaSolver::AdvanceTo(double t_out) {
   IntegratorReport report;
   report.t = t_;
   if (!(t_out > t_)) return report;
+  problem_.ClearRecoverableFailure();
   if (!(h_next_ > 0.0)) h_next_ = 1e-4 * (t_out - t_);
   long steps = 0;
   int consecutive_error_failures = 0;

@@ -243,6 +243,7 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
   CheckSetup(IDASetStopTime(m.mem, t_out), "IDASetStopTime");
   realtype t_reached = t_;
   m.last_message.clear();
+  problem_.ClearRecoverableFailure();
   const int flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_NORMAL);
   if (m.pending) {
     std::exception_ptr e = m.pending;
@@ -259,6 +260,8 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
   report.message = m.last_message;
   if (linear_solver_ == LinearSolverKind::kKlu && !KluFactorizationOf(m.ls).message().empty())
     report.message += " (" + KluFactorizationOf(m.ls).message() + ")";
+  if (!problem_.last_recoverable_failure().empty())
+    report.message += "; last failed evaluation: " + problem_.last_recoverable_failure();
   realtype h = 0.0;
   if (IDAGetLastStep(m.mem, &h) >= 0) report.last_step = h;
   realtype tcur = t_reached;

@@ -1,10 +1,12 @@
 #include "libemb/io/atomic_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "libemb/common/error.h"
 
@@ -19,26 +21,55 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
                "output '" << path_ << "': directory '" << dir.string() << "' does not exist");
   EMB_THROW_IF(fs::is_directory(p, ec), "output '" << path_ << "' is a directory; expected a file name");
   temp_ = (dir / ("." + p.filename().string() + ".tmp." + std::to_string(::getpid()))).string();
+  cleanup_ = CleanupOnSignal(temp_);
 }
 
 AtomicFile::~AtomicFile() {
   if (!committed_) std::remove(temp_.c_str());
 }
 
+void AtomicFile::WriteText(const std::string& text) {
+  const int fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  EMB_THROW_IF(fd < 0, "output '" << path_ << "': cannot create '" << temp_
+                                  << "': " << std::strerror(errno));
+  const char* p = text.data();
+  std::size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : EIO;
+      ::close(fd);
+      EMB_THROW(InputError, "output '" << path_ << "': write failed: " << std::strerror(err));
+    }
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  EMB_THROW_IF(::close(fd) != 0,
+               "output '" << path_ << "': write failed on close: " << std::strerror(errno));
+}
+
 void AtomicFile::Commit() {
+  // The data must be on the disk before the rename makes it the file (after a crash in
+  // between, some file systems would show an empty file under the target's name).
+  const int fd = ::open(temp_.c_str(), O_RDONLY | O_CLOEXEC);
+  EMB_THROW_IF(fd < 0, "output '" << path_ << "': the finished file '" << temp_
+                                  << "' cannot be opened: " << std::strerror(errno));
+  const bool synced = ::fsync(fd) == 0 || errno == EINVAL;  // EINVAL: cannot be synced
+  const int sync_err = errno;
+  ::close(fd);
+  EMB_THROW_IF(!synced, "output '" << path_ << "': writing to the disk failed: "
+                                   << std::strerror(sync_err));
   if (std::rename(temp_.c_str(), path_.c_str()) != 0)
-    EMB_THROW(InputError, "output '" << path_ << "': could not move the finished file into place");
+    EMB_THROW(InputError, "output '" << path_ << "': could not move the finished file into place: "
+                                     << std::strerror(errno));
   committed_ = true;
+  cleanup_.Release();
 }
 
 void WriteTextFileAtomic(const std::string& path, const std::string& text) {
   AtomicFile file(path);
-  {
-    std::ofstream out(file.temp_path(), std::ios::binary);
-    out << text;
-    out.flush();
-    EMB_THROW_IF(!out, "output '" << path << "': write failed (disk full or no permission?)");
-  }
+  file.WriteText(text);
   file.Commit();
 }
 

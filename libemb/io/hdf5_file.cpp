@@ -1,5 +1,6 @@
 #include "libemb/io/hdf5_file.h"
 
+#include <H5PLpublic.h>
 #include <hdf5.h>
 
 #include <algorithm>
@@ -39,7 +40,9 @@ void SilenceHdf5() {
 }
 
 void Check(herr_t status, const std::string& file, const std::string& what) {
-  if (status < 0) EMB_THROW(InputError, "HDF5 file '" << file << "': " << what << " failed");
+  if (status < 0)
+    EMB_THROW(InputError, "HDF5 file '" << file << "': " << what
+                                        << " failed (disk full, I/O error or a damaged file?)");
 }
 
 hid_t CheckId(hid_t id, const std::string& file, const std::string& what) {
@@ -72,15 +75,88 @@ H5File::H5File(const std::string& path, Mode mode) : path_(path) {
   } else {
     std::error_code ec;
     EMB_THROW_IF(!std::filesystem::exists(path, ec), "file '" << path << "' does not exist");
+    // A FIFO or device would stall or never end.
+    EMB_THROW_IF(!std::filesystem::is_regular_file(path, ec),
+                 "file '" << path << "' is not a regular file; expected an HDF5 file");
     EMB_THROW_IF(H5Fis_hdf5(path.c_str()) <= 0, "file '" << path << "' is not an HDF5 file");
+    // Filters are decoded only by what HDF5 has built in: a dataset must not make emb load
+    // a shared library from HDF5_PLUGIN_PATH.
+    H5PLset_loading_state(0);
     id_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     EMB_THROW_IF(id_ < 0, "HDF5 file '" << path << "' cannot be opened");
+    file_size_ = std::filesystem::file_size(path, ec);
+    RefuseForeignStorage();
   }
 }
 
-H5File::~H5File() {
-  if (id_ >= 0) H5Fclose(id_);
+namespace {
+
+// What H5File refuses in a file it reads: links to other files, and datasets whose data
+// live in other files (external storage, virtual datasets). Through them a crafted file
+// would make emb read files it was not given.
+struct ForeignStorage {
+  std::string found;  // "<path>: <what>", empty if none
+};
+
+herr_t VisitLink(hid_t, const char* name, const H5L_info_t* info, void* data) {
+  auto* f = static_cast<ForeignStorage*>(data);
+  if (info->type == H5L_TYPE_EXTERNAL) {
+    f->found = std::string("/") + name + ": an external link (to another file)";
+    return 1;
+  }
+  if (info->type != H5L_TYPE_HARD && info->type != H5L_TYPE_SOFT) {
+    f->found = std::string("/") + name + ": a user-defined link";
+    return 1;
+  }
+  return 0;
 }
+
+herr_t VisitObject(hid_t loc, const char* name, const H5O_info_t* info, void* data) {
+  if (info->type != H5O_TYPE_DATASET) return 0;
+  auto* f = static_cast<ForeignStorage*>(data);
+  const hid_t ds = H5Dopen2(loc, name, H5P_DEFAULT);
+  if (ds < 0) {
+    f->found = std::string("/") + name + ": a dataset that cannot be opened";
+    return 1;
+  }
+  const hid_t dcpl = H5Dget_create_plist(ds);
+  const H5D_layout_t layout = dcpl >= 0 ? H5Pget_layout(dcpl) : H5D_LAYOUT_ERROR;
+  const int external = dcpl >= 0 ? H5Pget_external_count(dcpl) : -1;
+  if (dcpl >= 0) H5Pclose(dcpl);
+  H5Dclose(ds);
+  if (layout == H5D_VIRTUAL)
+    f->found = std::string("/") + name + ": a virtual dataset (data mapped from other files)";
+  else if (external != 0)
+    f->found = std::string("/") + name + ": a dataset stored in external files";
+  else if (layout == H5D_LAYOUT_ERROR)
+    f->found = std::string("/") + name + ": a dataset of unknown layout";
+  return f->found.empty() ? 0 : 1;
+}
+
+}  // namespace
+
+void H5File::RefuseForeignStorage() const {
+  ForeignStorage f;
+  const herr_t links = H5Lvisit(id_, H5_INDEX_NAME, H5_ITER_NATIVE, VisitLink, &f);
+  if (f.found.empty() && links >= 0)
+    H5Ovisit2(id_, H5_INDEX_NAME, H5_ITER_NATIVE, VisitObject, &f, H5O_INFO_BASIC);
+  EMB_THROW_IF(!f.found.empty(), "HDF5 file '" << path_ << "': " << f.found
+                                                << "; emb reads only data stored in the file "
+                                                   "itself (README: Files from others)");
+  EMB_THROW_IF(links < 0, "HDF5 file '" << path_ << "': its links cannot be listed (damaged?)");
+}
+
+H5File::~H5File() {
+  if (id_ >= 0) H5Fclose(id_);  // an error path: the failure was reported already
+}
+
+void H5File::Close() {
+  const hid_t id = id_;
+  id_ = -1;
+  if (id >= 0) Check(H5Fclose(id), path_, "closing (data may not have reached the disk)");
+}
+
+void DisableHdf5ExitCleanup() { H5dont_atexit(); }
 
 namespace {
 
@@ -168,7 +244,16 @@ Handle OpenAttribute(hid_t file, const std::string& fname, const std::string& ob
   EMB_THROW_IF(H5Aexists(obj.get(), name.c_str()) <= 0,
                "HDF5 file '" << fname << "': expected attribute '" << name << "' on '" << object
                              << "', not found");
-  return Handle(H5Aopen(obj.get(), name.c_str(), H5P_DEFAULT), H5Aclose);
+  Handle attr(CheckId(H5Aopen(obj.get(), name.c_str(), H5P_DEFAULT), fname,
+                      "opening attribute " + object + "@" + name),
+              H5Aclose);
+  // Every attribute emb reads is one value: reading an array into one would overrun it.
+  Handle space(H5Aget_space(attr.get()), H5Sclose);
+  EMB_THROW_IF(H5Sget_simple_extent_npoints(space.get()) != 1,
+               "HDF5 file '" << fname << "': attribute " << object << "@" << name
+                             << ": expected a single value, got "
+                             << H5Sget_simple_extent_npoints(space.get()));
+  return attr;
 }
 
 }  // namespace
@@ -217,11 +302,24 @@ std::vector<std::uint64_t> H5File::Shape(const std::string& path) const {
 }
 
 namespace {
+// A dataset may be compressed, so its size is not bounded by the file's; a crafted file could
+// claim any size. Reads are limited to the larger of 1 GiB and 64 times the file's size.
+constexpr std::uint64_t kMinReadLimitBytes = std::uint64_t{1} << 30;
+constexpr std::uint64_t kReadLimitPerFileByte = 64;
+
 template <typename T>
 std::vector<T> ReadAll(hid_t file, const std::string& fname, const std::string& path,
-                       hid_t mem_type, const std::vector<std::uint64_t>& shape) {
-  const std::uint64_t total =
-      std::accumulate(shape.begin(), shape.end(), std::uint64_t{1}, std::multiplies<>());
+                       hid_t mem_type, const std::vector<std::uint64_t>& shape,
+                       std::uintmax_t file_size) {
+  const std::uint64_t limit =
+      std::max<std::uint64_t>(kMinReadLimitBytes, kReadLimitPerFileByte * file_size) / sizeof(T);
+  std::uint64_t total = 1;
+  for (std::uint64_t d : shape) {
+    EMB_THROW_IF(d != 0 && total > limit / d,
+                 "HDF5 file '" << fname << "': dataset " << path << " claims more than " << limit
+                               << " values, more than the file can hold; the file is damaged");
+    total *= d;
+  }
   std::vector<T> out(total);
   Handle ds(CheckId(H5Dopen2(file, path.c_str(), H5P_DEFAULT), fname, "opening " + path),
             H5Dclose);
@@ -233,15 +331,15 @@ std::vector<T> ReadAll(hid_t file, const std::string& fname, const std::string& 
 }  // namespace
 
 std::vector<double> H5File::ReadDoubles(const std::string& path) const {
-  return ReadAll<double>(id_, path_, path, H5T_NATIVE_DOUBLE, Shape(path));
+  return ReadAll<double>(id_, path_, path, H5T_NATIVE_DOUBLE, Shape(path), file_size_);
 }
 std::vector<int> H5File::ReadInts(const std::string& path) const {
-  return ReadAll<int>(id_, path_, path, H5T_NATIVE_INT, Shape(path));
+  return ReadAll<int>(id_, path_, path, H5T_NATIVE_INT, Shape(path), file_size_);
 }
 std::vector<std::string> H5File::ReadStrings(const std::string& path) const {
   const auto shape = Shape(path);
   Handle t = VarString();
-  std::vector<char*> ptrs = ReadAll<char*>(id_, path_, path, t.get(), shape);
+  std::vector<char*> ptrs = ReadAll<char*>(id_, path_, path, t.get(), shape, file_size_);
   std::vector<std::string> out;
   for (char* p : ptrs) out.emplace_back(p ? p : "");
   if (!ptrs.empty()) {
@@ -267,6 +365,9 @@ std::string H5File::ReadStringAttribute(const std::string& object, const std::st
     return s;
   }
   const size_t n = H5Tget_size(ftype.get());
+  EMB_THROW_IF(n > (std::size_t{1} << 24), "HDF5 file '" << path_ << "': attribute " << object
+                                                         << "@" << name << " is a string of "
+                                                         << n << " bytes; expected < 16 MiB");
   std::string s(n, '\0');
   Check(H5Aread(attr.get(), ftype.get(), s.data()), path_, "reading attribute " + name);
   return s.substr(0, s.find('\0'));

@@ -12,11 +12,20 @@
 
 namespace emb {
 
+/// Keeps HDF5 from closing files itself at process exit. Call first thing in main(), before
+/// any other HDF5 call. emb closes every file it opens and checks the result; HDF5 1.10's
+/// exit-time clean-up of a file whose close failed (a full disk) crashes the process.
+void DisableHdf5ExitCleanup();
+
 class H5File {
  public:
   enum class Mode { kCreate, kRead };
-  /// kCreate truncates/creates `path`; kRead opens it read-only.
-  /// @throws InputError if the file cannot be created or is not an HDF5 file.
+  /// kCreate truncates/creates `path`; kRead opens it read-only, refusing a file that links
+  /// to other files: external links, user-defined links, datasets with external storage and
+  /// virtual datasets (a crafted file would make emb read files it was not given). Dynamic
+  /// filter plugins are not loaded.
+  /// @throws InputError if the file cannot be created, is not an HDF5 file, or holds any of
+  ///         the above (naming the object).
   H5File(const std::string& path, Mode mode);
   ~H5File();
   H5File(const H5File&) = delete;
@@ -37,7 +46,7 @@ class H5File {
   void SetAttribute(const std::string& object, const std::string& name, long long value);
 
   bool Exists(const std::string& path) const;
-  /// True if `object` exists and carries attribute `name`.
+  /// True if `object` exists and has the attribute `name`.
   bool HasAttribute(const std::string& object, const std::string& name) const;
   /// Shape of a dataset. @throws InputError if missing.
   std::vector<std::uint64_t> Shape(const std::string& path) const;
@@ -52,11 +61,17 @@ class H5File {
 
   /// Flushes buffers to disk (for long runs that append as they go).
   void Flush();
+  /// Closes the file, writing what HDF5 still buffers. Call it before using a written file
+  /// (e.g. before AtomicFile::Commit): the destructor closes too but cannot report a failure.
+  /// @throws InputError if the close fails (disk full, I/O error); the file is then invalid.
+  void Close();
   const std::string& path() const { return path_; }
 
  private:
+  void RefuseForeignStorage() const;
   std::string path_;
   std::int64_t id_{-1};
+  std::uintmax_t file_size_{0};  ///< of a file opened for reading
 };
 
 }  // namespace emb

@@ -1,6 +1,7 @@
 #include "libemb/io/modes_file.h"
 
 #include <filesystem>
+#include <optional>
 
 #include "libemb/io/atomic_file.h"
 #include "libemb/io/hdf5_file.h"
@@ -46,9 +47,11 @@ void WriteModesFile(const std::string& path, const std::string& xdmf_path, const
     h5.SetAttribute("/modes", "orthonormality_error", e.orthonormality_error);
     h5.SetAttribute("/modes", "max_backward_error", e.max_backward_error);
     h5.SetAttribute("/modes", "nnz_factor", static_cast<long long>(e.factor.nnz_factor));
+    h5.Close();
   }
-  out.Commit();
 
+  // Both files are complete before either takes its name.
+  std::optional<AtomicFile> xdmf;
   if (!xdmf_path.empty()) {
     std::vector<double> steps;
     std::vector<std::string> names;
@@ -59,9 +62,11 @@ void WriteModesFile(const std::string& path, const std::string& xdmf_path, const
       names.emplace_back(buf);
     }
     const std::string h5_name = std::filesystem::path(path).filename().string();
-    WriteTextFileAtomic(xdmf_path,
-                        MakeXdmfSteps(h5_name, mesh, "/modes/shapes", "mode_shape", steps, names));
+    xdmf.emplace(xdmf_path);
+    xdmf->WriteText(MakeXdmfSteps(h5_name, mesh, "/modes/shapes", "mode_shape", steps, names));
   }
+  out.Commit();
+  if (xdmf) xdmf->Commit();
 }
 
 }  // namespace emb

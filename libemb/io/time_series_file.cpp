@@ -8,7 +8,9 @@ namespace emb {
 namespace {
 
 void Check(herr_t status, const std::string& file, const std::string& what) {
-  if (status < 0) EMB_THROW(InputError, "HDF5 file '" << file << "': " << what << " failed");
+  if (status < 0)
+    EMB_THROW(InputError, "HDF5 file '" << file << "': " << what
+                                        << " failed (disk full, I/O error or file removed?)");
 }
 
 hid_t CheckId(hid_t id, const std::string& file, const std::string& what) {
@@ -40,12 +42,23 @@ TimeSeriesFile::TimeSeriesFile(const std::string& path) : path_(path) {
 }
 
 TimeSeriesFile::~TimeSeriesFile() {
+  // An error path (Close() was not reached): close without reporting, the failure that led
+  // here was reported already.
   for (auto& s : series_)
     if (s.dataset >= 0) H5Dclose(s.dataset);
-  if (file_ >= 0) {
-    H5Fflush(file_, H5F_SCOPE_GLOBAL);
-    H5Fclose(file_);
+  if (file_ >= 0) H5Fclose(file_);
+}
+
+void TimeSeriesFile::Close() {
+  bool ok = true;
+  for (auto& s : series_) {
+    if (s.dataset >= 0) ok = H5Dclose(s.dataset) >= 0 && ok;
+    s.dataset = -1;
   }
+  const hid_t f = file_;
+  file_ = -1;
+  if (f >= 0) ok = H5Fclose(f) >= 0 && ok;
+  EMB_THROW_IF(!ok, "HDF5 file '" << path_ << "': closing failed (disk full or I/O error?)");
 }
 
 int TimeSeriesFile::AddSeries(const std::string& path, int width, int chunk_rows) {
@@ -83,7 +96,8 @@ int TimeSeriesFile::Create(const std::string& path, int width, bool scalar, int 
 }
 
 void TimeSeriesFile::Append(int handle, const double* row) {
-  Series& s = series_.at(handle);
+  EMB_CHECK(handle >= 0 && handle < static_cast<int>(series_.size()) && file_ >= 0);
+  Series& s = series_[handle];
   const int rank = s.scalar ? 1 : 2;
   const hsize_t new_dims[2] = {s.rows + 1, static_cast<hsize_t>(s.width)};
   Check(H5Dset_extent(s.dataset, new_dims), path_, "extending " + s.path);
@@ -102,7 +116,10 @@ void TimeSeriesFile::Append(int handle, const double* row) {
   ++s.rows;
 }
 
-void TimeSeriesFile::Flush() { Check(H5Fflush(file_, H5F_SCOPE_GLOBAL), path_, "flush"); }
+void TimeSeriesFile::Flush() {
+  EMB_CHECK(file_ >= 0);
+  Check(H5Fflush(file_, H5F_SCOPE_GLOBAL), path_, "flush");
+}
 
 void TimeSeriesFile::EnsureGroup(const std::string& object) {
   if (object == "/" || H5Lexists(file_, object.c_str(), H5P_DEFAULT) > 0) return;
@@ -183,6 +200,9 @@ void TimeSeriesFile::SetAttribute(const std::string& object, const std::string& 
   WriteAttr(file_, path_, object, name, H5T_NATIVE_LLONG, &value);
 }
 
-std::uint64_t TimeSeriesFile::rows(int handle) const { return series_.at(handle).rows; }
+std::uint64_t TimeSeriesFile::rows(int handle) const {
+  EMB_CHECK(handle >= 0 && handle < static_cast<int>(series_.size()));
+  return series_[handle].rows;
+}
 
 }  // namespace emb

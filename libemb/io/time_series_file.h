@@ -30,6 +30,9 @@ class TimeSeriesFile {
   void Append(int handle, const double* row);
   /// Writes everything buffered by HDF5 to disk.
   void Flush();
+  /// Closes the file (datasets first). The destructor closes too but cannot report a
+  /// failure; call Close() at the end of a run. @throws InputError if a close fails.
+  void Close();
 
   /// Static content.
   void WriteDoubles(const std::string& path, const std::vector<double>& data,

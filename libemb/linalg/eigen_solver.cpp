@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/common/number_check.h"
 #include "libemb/linalg/dense_eigen.h"
 #include "libemb/linalg/kronecker_matrix.h"
 #include "libemb/linalg/shift_invert_solver.h"
@@ -323,6 +324,12 @@ EigenResult SolveGeneralizedEigen(ShiftInvertSolver& solver, const EigenSolverOp
   // Unknowns left once the constraints are imposed.
   const int n = static_cast<int>(K.rows() - C.rows());
   EMB_THROW_IF(o.num_modes < 1, "number of modes: expected at least 1, got " << o.num_modes);
+  // Options are the caller's (exit 1 through the CLI), not numerical outcomes.
+  CheckNumber("eigen-solver tolerance", o.tolerance, NumberRange::Open(0.0, 1.0));
+  CheckNumber("eigen-solver shift", o.shift, NumberRange::Finite("rad^2/s^2"));
+  CheckNumber("eigen-solver residual tolerance", o.residual_tolerance, NumberRange::Positive());
+  CheckInteger("eigen-solver subspace", o.subspace, 0, std::numeric_limits<int>::max());
+  CheckInteger("eigen-solver restarts", o.max_restarts, 1, std::numeric_limits<int>::max());
   const bool dense = o.method == EigenMethod::kDense || (o.method == EigenMethod::kAuto && n <= 300);
 
   EMB_THROW_IF(o.num_modes > n || (!dense && o.num_modes >= n),

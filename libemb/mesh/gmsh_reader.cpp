@@ -3,14 +3,19 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <regex>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
 #include "libemb/common/error.h"
+#include "libemb/mesh/geo_lexer.h"
+#include "libemb/mesh/gmsh_input_audit.h"
 #include "libemb/mesh/gmsh_session.h"
+#include "libemb/mesh/saved_mesh.h"
 
 namespace emb {
 namespace {
@@ -24,9 +29,36 @@ std::string Extension(const std::string& path) {
   return Lower(std::filesystem::path(path).extension().string());
 }
 
+// Node tag -> 0-based index of a node of a solid cell (negative: none). Dense while the tags
+// are nearly contiguous; a hash map when the largest tag is far beyond the node count (a file
+// may number its nodes up to 1e12), so memory follows the nodes, not the largest tag.
+class TagIndex {
+ public:
+  static constexpr int kNone = -1, kUsed = -2;
+  TagIndex(std::size_t max_tag, std::size_t count) : dense_(max_tag <= 4 * count + 1024) {
+    if (dense_) v_.assign(max_tag + 1, kNone);
+  }
+  int operator[](std::size_t t) const {
+    if (dense_) return t < v_.size() ? v_[t] : kNone;
+    const auto it = m_.find(t);
+    return it == m_.end() ? kNone : it->second;
+  }
+  void Set(std::size_t t, int i) {
+    if (dense_)
+      v_[t] = i;
+    else
+      m_[t] = i;
+  }
+
+ private:
+  bool dense_;
+  std::vector<int> v_;
+  std::unordered_map<std::size_t, int> m_;
+};
+
 CellBlock MakeBlock(int gmsh_type, const std::vector<std::size_t>& tags,
                     const std::vector<std::size_t>& node_tags,
-                    const std::vector<int>& index_of_tag, const std::string& path) {
+                    const TagIndex& index_of_tag, const std::string& path) {
   auto type = CellTypeFromGmsh(gmsh_type);
   if (!type) {
     std::string name;
@@ -44,7 +76,7 @@ CellBlock MakeBlock(int gmsh_type, const std::vector<std::size_t>& tags,
   b.connectivity.resize(node_tags.size());
   for (size_t k = 0; k < node_tags.size(); ++k) {
     const std::size_t t = node_tags[k];
-    const int idx = t < index_of_tag.size() ? index_of_tag[t] : -1;
+    const int idx = index_of_tag[t];
     EMB_THROW_IF(idx < 0, "mesh '" << path << "': element " << tags[k / NumNodes(b.type)]
                                    << " uses node " << t << " which is not a node of a solid cell");
     b.connectivity[k] = idx;
@@ -52,24 +84,83 @@ CellBlock MakeBlock(int gmsh_type, const std::vector<std::size_t>& tags,
   return b;
 }
 
-// gmsh picks the format from the extension, so the temporary name keeps it.
-void SaveMesh(const std::string& target) {
-  namespace fs = std::filesystem;
-  const fs::path p(target);
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  std::error_code ec;
-  EMB_THROW_IF(!fs::is_directory(dir, ec),
-               "output '" << target << "': directory '" << dir.string() << "' does not exist");
-  const fs::path tmp = dir / ("." + p.stem().string() + ".tmp" + p.extension().string());
-  GmshCall("write", target, [&] { gmsh::write(tmp.string()); });
-  fs::rename(tmp, p, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    EMB_THROW(InputError, "output '" << target << "': could not move the written mesh into place");
+// gmsh reads a mesh file with a node or element number given twice by keeping one of them and
+// only logging it; emb refuses the file (which of the two is meant is not known).
+// The MSH2 reader keeps the last of two elements numbered alike without a word; its log
+// line "N elements" (the count the file declares) then exceeds the elements gmsh holds.
+void RefuseDuplicates(const std::string& path) {
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  long long declared = -1;
+  for (const std::string& line : log) {
+    for (const char* what : {"duplicate node", "duplicate element"}) {
+      const auto at = line.find(std::string("Skipping ") + what);
+      if (at == std::string::npos) continue;
+      EMB_THROW(InputError, "mesh '" << path << "': " << (what + 10)
+                                     << line.substr(at + 9 + std::string(what).size())
+                                     << " is defined twice; expected unique numbers");
+    }
+    long long n = 0;
+    char tail[16] = {};
+    if (std::sscanf(line.c_str(), "Info: %lld element%15s", &n, tail) == 2 &&
+        std::string(tail) == "s")
+      declared = n;
   }
+  if (declared < 0 || Extension(path) != ".msh") return;
+  std::vector<int> types;
+  std::vector<std::vector<std::size_t>> tags, nodes;
+  GmshCall("read elements of", path,
+           [&] { gmsh::model::mesh::getElements(types, tags, nodes, -1, -1); });
+  long long held = 0;
+  for (const auto& t : tags) held += static_cast<long long>(t.size());
+  EMB_THROW_IF(held < declared, "mesh '" << path << "' declares " << declared
+                                         << " elements but only " << held
+                                         << " have distinct numbers: an element is defined "
+                                            "twice; expected unique numbers");
+}
+
+// Refuses a mesh size that would make more than kMaxEstimatedElements elements, from the
+// volume and surface area of the OpenCASCADE model (the bounding box for built-in-kernel
+// geometry, which over-estimates).
+void CheckElementEstimate(const std::string& path, double size) {
+  double volume = 0.0, area = 0.0;
+  gmsh::vectorpair volumes, surfaces;
+  GmshCall("measure", path, [&] {
+    gmsh::model::occ::getEntities(volumes, 3);
+    gmsh::model::occ::getEntities(surfaces, 2);
+    for (const auto& [dim, tag] : volumes) {
+      double m = 0.0;
+      gmsh::model::occ::getMass(dim, tag, m);
+      volume += m;
+    }
+    for (const auto& [dim, tag] : surfaces) {
+      double m = 0.0;
+      gmsh::model::occ::getMass(dim, tag, m);
+      area += m;
+    }
+    if (volumes.empty()) {
+      double x0, y0, z0, x1, y1, z1;
+      gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+      const double a = x1 - x0, b = y1 - y0, c = z1 - z0;
+      volume = a * b * c;
+      area = 2.0 * (a * b + b * c + c * a);
+    }
+  });
+  const double estimate = EstimateTetrahedra(volume, area, size);
+  EMB_THROW_IF(estimate > kMaxEstimatedElements,
+               "meshing '" << path << "' at size " << size << " m would make about "
+                           << static_cast<long long>(estimate) << " elements (estimated from "
+                           << (volumes.empty() ? "the bounding box: " : "") << "volume "
+                           << volume << " m^3 and surface " << area
+                           << " m^2); the limit is " << static_cast<long long>(kMaxEstimatedElements)
+                           << ": use a larger --size, or --force to mesh anyway");
 }
 
 }  // namespace
+
+double EstimateTetrahedra(double volume, double area, double size) {
+  return 4.0 * volume / (size * size * size) + 4.5 * area / (size * size);
+}
 
 bool IsGeometryFile(const std::string& path) {
   static const char* kGeometry[] = {".geo", ".brep", ".step", ".stp", ".iges", ".igs", ".xao"};
@@ -79,23 +170,11 @@ bool IsGeometryFile(const std::string& path) {
 }
 
 std::vector<std::pair<std::string, double>> GeoParameters(const std::string& path) {
-  std::vector<std::pair<std::string, double>> out;
-  if (Extension(path) != ".geo") return out;
-  std::ifstream in(path);
+  if (Extension(path) != ".geo") return {};
+  std::ifstream in(path, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
-  const std::string text = ss.str();
-  // Inside DefineConstant[ ... ]: entries of the form `name = {value, ...}`.
-  static const std::regex kBlock(R"(DefineConstant\s*\[([\s\S]*?)\]\s*;)");
-  static const std::regex kEntry(R"(([A-Za-z_]\w*)\s*=\s*\{\s*([-+0-9.eE]+))");
-  for (auto b = std::sregex_iterator(text.begin(), text.end(), kBlock); b != std::sregex_iterator();
-       ++b) {
-    const std::string body = (*b)[1];
-    for (auto e = std::sregex_iterator(body.begin(), body.end(), kEntry);
-         e != std::sregex_iterator(); ++e)
-      out.emplace_back((*e)[1], std::stod((*e)[2]));
-  }
-  return out;
+  return DefineConstantParameters(LexGeoScript(ss.str(), path));
 }
 
 Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const ProgressFn& progress) {
@@ -109,8 +188,11 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
   }
   EMB_THROW_IF(options.order != 1 && options.order != 2,
                "meshing order: expected 1 or 2, got " << options.order);
-  EMB_THROW_IF(options.size < 0.0, "mesh size: expected > 0 (or 0 for the file's default), got "
-                                       << options.size);
+  EMB_THROW_IF(!(std::isfinite(options.size) && options.size >= 0.0),
+               "mesh size: expected > 0 m (or 0 for the file's default), got " << options.size
+                                                                               << " m");
+  // Before anything reads the file as a script: what gmsh would run while reading it.
+  if (!options.trust_scripts) AuditGmshInput(path);
 
   const bool geometry = IsGeometryFile(path);
   std::vector<std::string> args;
@@ -134,9 +216,13 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
                  "parameters can only be set for .geo geometry files, not '" << path << "'");
   }
 
+  Mesh mesh;
+  std::optional<SavedMeshFile> saved;
+  {
   GmshSession session(args);
   ReportProgress(progress, geometry ? "meshing" : "reading mesh", 0.0);
-  GmshCall("open", path, [&] { gmsh::open(path); });
+  GmshOpen(path, /*trusted=*/true);  // audited above unless trusted
+  if (geometry && options.size > 0.0 && !options.force) CheckElementEstimate(path, options.size);
   if (geometry) {
     GmshCall("mesh", path, [&] {
       gmsh::option::setNumber("Mesh.ElementOrder", options.order);
@@ -146,9 +232,8 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
     });
   }
   ReportProgress(progress, geometry ? "meshing" : "reading mesh", 0.5);
-  if (!options.save_as.empty()) SaveMesh(options.save_as);
-
-  Mesh mesh;
+  RefuseDuplicates(path);
+  if (!options.save_as.empty()) saved.emplace(options.save_as);
   mesh.source = path;
 
   // Solid cells first: they decide which nodes exist.
@@ -166,22 +251,32 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
   std::vector<double> coords, param;
   GmshCall("read nodes of", path,
            [&] { gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, true, false); });
-  std::vector<std::size_t> all_max{max_tag};
-  for (auto t : node_tags) all_max[0] = std::max(all_max[0], t);
-  std::vector<int> index_of_tag(all_max[0] + 1, -1);
+  std::size_t all_max = max_tag;
+  for (auto t : node_tags) all_max = std::max(all_max, t);
+  TagIndex index_of_tag(all_max, node_tags.size());
   // Number the nodes of solid cells in the order gmsh lists them.
-  std::vector<char> used(all_max[0] + 1, 0);
   for (const auto& nodes : elem_nodes)
-    for (auto t : nodes) used[t] = 1;
+    for (auto t : nodes) index_of_tag.Set(t, TagIndex::kUsed);
   int n = 0;
   for (auto t : node_tags)
-    if (used[t] && index_of_tag[t] < 0) index_of_tag[t] = n++;
+    if (index_of_tag[t] == TagIndex::kUsed) index_of_tag.Set(t, n++);
   mesh.nodes.resize(3, n);
   mesh.node_tags.resize(n);
+  std::vector<char> placed(n, 0);
   for (size_t k = 0; k < node_tags.size(); ++k) {
     const int i = index_of_tag[node_tags[k]];
     if (i < 0) continue;
-    mesh.nodes.col(i) << coords[3 * k], coords[3 * k + 1], coords[3 * k + 2];
+    const Eigen::Vector3d x(coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]);
+    // gmsh lists a node once per entity it bounds (same node, same place); one id at two
+    // places is a broken file.
+    EMB_THROW_IF(placed[i] && mesh.nodes.col(i) != x,
+                 "mesh '" << path << "': node " << node_tags[k]
+                          << " is defined twice at different places; expected unique node ids");
+    EMB_THROW_IF(!x.allFinite(), "mesh '" << path << "': node " << node_tags[k]
+                                          << " has a non-finite coordinate (" << x.transpose()
+                                          << "); expected finite coordinates [m]");
+    placed[i] = 1;
+    mesh.nodes.col(i) = x;
     mesh.node_tags[i] = node_tags[k];
   }
   for (size_t b = 0; b < types.size(); ++b) {
@@ -213,7 +308,7 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
     std::vector<double> gcoords;
     gmsh::model::mesh::getNodesForPhysicalGroup(dim, tag, gnodes, gcoords);
     for (auto t : gnodes) {
-      const int i = t < index_of_tag.size() ? index_of_tag[t] : -1;
+      const int i = index_of_tag[t];
       if (i >= 0) g.nodes.push_back(i);
     }
     std::sort(g.nodes.begin(), g.nodes.end());
@@ -231,6 +326,8 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
     }
     mesh.groups.push_back(std::move(g));
   }
+  }  // the gmsh session ends here: the saved mesh is read back in a new one
+  if (saved) saved->Commit();
   ReportProgress(progress, geometry ? "meshing" : "reading mesh", 1.0);
   return mesh;
 }

@@ -3,9 +3,11 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/mesh/gmsh_input_audit.h"
 #include "libemb/mesh/gmsh_reader.h"
 
 namespace emb {
@@ -25,6 +27,8 @@ GmshSession::GmshSession(const std::vector<std::string>& args) {
   // parameters should give the same mesh: its hash is provenance). Known exception in 4.8:
   // Mesh.HighOrderOptimize moves curved high-order nodes differently from run to run.
   gmsh::option::setNumber("General.NumThreads", 1);
+  // Never ask on stdin (gmsh's GetValue/GetString, "uncompress this file?"): the default.
+  gmsh::option::setNumber("General.NoPopup", 1);
   gmsh::logger::start();
 }
 
@@ -65,6 +69,11 @@ void ThrowGmshError(const std::string& what, const std::string& path, const std:
 }
 }  // namespace internal
 
+void GmshOpen(const std::string& path, bool trusted) {
+  if (!trusted) AuditGmshInput(path);
+  GmshCall("open", path, [&] { gmsh::open(path); });
+}
+
 std::vector<std::string> GeoParameterArgs(
     const std::string& path, const std::vector<std::pair<std::string, double>>& overrides) {
   const auto known = GeoParameters(path);
@@ -80,6 +89,10 @@ std::vector<std::string> GeoParameterArgs(
                                          << "'; expected one of: "
                                          << (list.empty() ? "(none)" : list));
     }
+    // gmsh aborts the process on a non-finite -setnumber value.
+    EMB_THROW_IF(!std::isfinite(value), "geometry '" << path << "': parameter " << name
+                                                     << ": expected a finite number, got "
+                                                     << value);
     std::ostringstream v;
     v.precision(17);
     v << value;

@@ -48,10 +48,16 @@ void GmshCall(const std::string& what, const std::string& path, F&& f) {
   if (!error.empty()) internal::ThrowGmshError(what, path, error);
 }
 
+/// Opens `path` in the current session (gmsh::open). Unless `trusted`, the file and everything
+/// gmsh would read with it are audited first (AuditGmshInput): gmsh never sees a file that
+/// would run a command, write or delete files or stop the process.
+/// @throws InputError for a refused file or when gmsh fails (GmshCall).
+void GmshOpen(const std::string& path, bool trusted);
+
 /// The gmsh arguments {"-setnumber", name, value, ...} that set the `DefineConstant`
 /// parameters `overrides` of the .geo file `path`.
 /// @throws InputError naming the parameter and listing the file's parameters when a name is
-///         not declared by the file.
+///         not declared by the file, or for a value that is not finite.
 std::vector<std::string> GeoParameterArgs(
     const std::string& path, const std::vector<std::pair<std::string, double>>& overrides);
 

@@ -44,6 +44,7 @@ std::vector<std::string> ValidChannelNames(const mbs::System& system) {
       for (const char* q : {"F2", "T2"})
         for (const char* c : xyz) n.push_back(e.name + "." + q + "." + c);
   for (const auto& f : system.force_elements()) {
+    if (!f->reports_load()) continue;  // CalcLoad gives nothing (NaN in the results)
     for (const char* q : {"F", "T"})
       for (const char* c : xyz) n.push_back(f->name() + "." + q + "." + c);
     n.push_back(f->name() + ".F.norm");
@@ -62,6 +63,12 @@ ChannelSet::ChannelSet(const mbs::System& system, const std::vector<std::string>
   const std::vector<std::string> valid = ValidChannelNames(system);
   for (const auto& c : names) {
     const auto it = std::find(valid.begin(), valid.end(), c);
+    const int fe = ForceElementIndex(system, c.substr(0, c.find('.')));
+    EMB_THROW_IF(it == valid.end() && fe >= 0 && !system.force_elements()[fe]->reports_load(),
+                 "output channel '" << c << "': force element '"
+                                    << system.force_elements()[fe]->name()
+                                    << "' reports no load (F/T channels exist for bushings and "
+                                       "journal bearings)");
     EMB_THROW_IF(it == valid.end(), "output channel '" << c << "' is unknown"
                                                        << DidYouMean(c, valid)
                                                        << " (channels look like crank.p.x, "

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 #include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
@@ -13,6 +14,38 @@
 namespace emb::scene {
 namespace {
 
+ResultsStatus ReadStatus(const H5File& h5, const std::string& path) {
+  ResultsStatus s;
+  s.status = "(none)";
+  if (h5.Exists("/")) {
+    try {
+      s.status = h5.ReadStringAttribute("/", "status");
+    } catch (const InputError&) {
+    }
+    try {
+      s.message = h5.ReadStringAttribute("/", "message");
+      s.t_reached = h5.ReadDoubleAttribute("/", "t_reached");
+    } catch (const InputError&) {
+    }
+  }
+  if (s.status == "success") return s;
+  std::ostringstream w;
+  w << "'" << path << "' holds an unfinished run (status '" << s.status << "'";
+  if (s.status == "running")
+    w << ": the run was stopped without a word, e.g. killed, or is still going";
+  else if (!s.message.empty())
+    w << ": " << s.message;
+  w << ")";
+  if (std::isfinite(s.t_reached)) w << "; it reached t = " << s.t_reached << " s";
+  s.warning = w.str();
+  return s;
+}
+
+// The time series a reader may use; a run killed between two appends leaves them one row
+// apart, so a reader uses the rows they all have.
+constexpr const char* kSeries[] = {"/state/q",         "/state/v",         "/reactions/force",
+                                   "/reactions/torque", "/energy",          "/residuals",
+                                   "/forces/load",      "/sensors"};
 // Where a body's values sit in a row of /state/q and /state/v: the layout record the writer
 // stores (version 3), or for version 2 files mbs::StateLayout's, which they were written with.
 struct StateColumns {
@@ -25,6 +58,7 @@ struct ResultsFile {
   std::vector<std::string> bodies, ports, sensors, forces;
   std::vector<double> time;
   std::size_t n{0};
+  ResultsStatus status;
   StateColumns state;
 
   explicit ResultsFile(const std::string& path) : h5(path, H5File::Mode::kRead) {
@@ -35,17 +69,37 @@ struct ResultsFile {
     }
     EMB_THROW_IF(format != "emb-mbs-results",
                  "'" << path << "': expected a multibody results file (format emb-mbs-results)");
+    status = ReadStatus(h5, path);
     bodies = h5.ReadStrings("/model/bodies");
     ports = h5.ReadStrings("/model/reaction_ports");
     if (h5.Exists("/model/sensors")) sensors = h5.ReadStrings("/model/sensors");
     if (h5.Exists("/model/force_elements")) forces = h5.ReadStrings("/model/force_elements");
     time = h5.ReadDoubles("/time");
     n = time.size();
+    for (const char* s : kSeries)
+      if (h5.Exists(s)) {
+        const auto shape = h5.Shape(s);
+        EMB_THROW_IF(shape.size() != 2, "'" << path << "': " << s << ": expected [samples, "
+                                                 << "columns], got " << shape.size()
+                                                 << " dimensions");
+        n = std::min<std::size_t>(n, shape[0]);
+      }
+    time.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      EMB_THROW_IF(!std::isfinite(time[i]) || (i > 0 && !(time[i] > time[i - 1])),
+                   "'" << path << "': /time[" << i << "] = " << time[i]
+                       << ": expected finite, increasing sample times (damaged file?)");
     const mbs::StateLayout layout(2);  // one moving body: its offsets within a block
     state.quaternion = layout.quaternion(1) - layout.position(1);
     state.angular_velocity = layout.angular_velocity(1) - layout.velocity(1);
+    // A crafted layout record must not index past a row: small, non-negative numbers only
+    // (the blocks' fit in the rows is checked where they are read).
     auto column = [&](const char* dataset, const char* name, std::size_t* out) {
-      if (h5.HasAttribute(dataset, name)) *out = static_cast<std::size_t>(h5.ReadIntAttribute(dataset, name));
+      if (!h5.HasAttribute(dataset, name)) return;
+      const long long v = h5.ReadIntAttribute(dataset, name);
+      EMB_THROW_IF(v < 0 || v > 64, "'" << path << "': " << dataset << " attribute " << name
+                                        << " = " << v << ": expected 0 to 64 (damaged file?)");
+      *out = static_cast<std::size_t>(v);
     };
     column("/state/q", "values_per_body", &state.q_stride);
     column("/state/q", "position_column", &state.position);
@@ -53,20 +107,43 @@ struct ResultsFile {
     column("/state/v", "values_per_body", &state.v_stride);
     column("/state/v", "velocity_column", &state.velocity);
     column("/state/v", "angular_velocity_column", &state.angular_velocity);
+    EMB_THROW_IF(state.position + 3 > state.q_stride || state.quaternion + 4 > state.q_stride ||
+                     state.velocity + 3 > state.v_stride ||
+                     state.angular_velocity + 3 > state.v_stride,
+                 "'" << path << "': the state layout record (values_per_body, *_column) puts a "
+                     << "block outside a body's values; expected blocks within them (damaged "
+                        "file?)");
+    for (auto [dataset, stride] : {std::pair{"/state/q", state.q_stride},
+                                   std::pair{"/state/v", state.v_stride}})
+      if (h5.Exists(dataset)) {
+        const auto shape = h5.Shape(dataset);  // two dimensions (checked above)
+        EMB_THROW_IF(shape[1] != stride * bodies.size(),
+                     "'" << path << "': " << dataset << " has " << shape[1] << " columns; "
+                         << "expected values_per_body x bodies = " << stride << " x "
+                         << bodies.size() << " (damaged file?)");
+      }
   }
-  /// Column `col` of the [n, width] dataset `path`.
+  /// Column `col` of the [rows, width] dataset `path`, its first n rows.
   std::vector<double> Column(const std::string& path, std::size_t col) const {
+    EMB_THROW_IF(!h5.Exists(path), "'" << h5.path() << "': missing " << path);
+    const auto shape = h5.Shape(path);
+    const std::size_t width = shape.size() == 2 ? shape[1] : 0;
+    EMB_THROW_IF(shape.size() != 2 || col >= width || shape[0] < n,
+                 "'" << h5.path() << "': " << path << " has no column " << col
+                     << " for every sample (damaged file?)");
     const std::vector<double> all = h5.ReadDoubles(path);
-    const std::size_t width = n > 0 ? all.size() / n : 0;
-    EMB_CHECK(col < width);
     std::vector<double> out(n);
     for (std::size_t i = 0; i < n; ++i) out[i] = all[i * width + col];
     return out;
   }
   /// Body rotations R_WB at every sample.
   std::vector<Eigen::Matrix3d> Rotations(std::size_t body) const {
+    const auto shape = h5.Shape("/state/q");
+    const std::size_t width = shape.size() == 2 ? shape[1] : 0;
+    EMB_THROW_IF(width < state.q_stride * body + state.quaternion + 4 || shape[0] < n,
+                 "'" << h5.path() << "': /state/q has no quaternion of body " << body
+                     << " for every sample (damaged file?)");
     const std::vector<double> q = h5.ReadDoubles("/state/q");
-    const std::size_t width = q.size() / std::max<std::size_t>(n, 1);
     std::vector<Eigen::Matrix3d> out(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double* e = &q[i * width + state.q_stride * body + state.quaternion];
@@ -93,10 +170,16 @@ std::size_t FindName(const std::vector<std::string>& names, const std::string& n
 
 }  // namespace
 
+ResultsStatus ReadResultsStatus(const std::string& path) {
+  const H5File h5(path, H5File::Mode::kRead);
+  return ReadStatus(h5, path);
+}
+
 ResultsChannel ReadResultsChannel(const std::string& path, const std::string& channel) {
   const ResultsFile f(path);
   ResultsChannel out;
   out.time = f.time;
+  out.warning = f.status.warning;
   const std::size_t dot2 = channel.rfind('.');
   const std::size_t dot1 = dot2 == std::string::npos ? dot2 : channel.rfind('.', dot2 - 1);
   if (channel.rfind("energy.", 0) == 0) {
@@ -132,6 +215,11 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
   if ((quantity == "F" || quantity == "T") && is_force_element) {  // /forces/load
     const std::size_t k = std::find(f.forces.begin(), f.forces.end(), owner) - f.forces.begin();
     out.values = f.Column("/forces/load", 6 * k + c + (quantity == "T" ? 3 : 0));
+    EMB_THROW_IF(std::any_of(out.values.begin(), out.values.end(),
+                             [](double v) { return std::isnan(v); }),
+                 "channel '" << channel << "': force element '" << owner
+                             << "' reports no load (F/T channels exist for bushings and journal "
+                                "bearings)");
     return out;
   }
   if (quantity == "F" || quantity == "T") {
@@ -173,6 +261,7 @@ ResultsChannel ReadBodyRotationAngle(const std::string& path, const std::string&
   const Eigen::Vector3d u = Eigen::Vector3d::Unit((a + 1) % 3), v = ax.cross(u);
   ResultsChannel out;
   out.time = f.time;
+  out.warning = f.status.warning;
   out.values.resize(f.n);
   double previous = 0.0, turns = 0.0;
   const auto R = f.Rotations(b);

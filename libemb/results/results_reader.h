@@ -3,6 +3,7 @@
 /// Reading channels back from a multibody results file (results_writer.h layout) by the
 /// CSV channel names, for post-processing (emb spectrum, plots).
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,21 @@ namespace emb::scene {
 struct ResultsChannel {
   std::vector<double> time;
   std::vector<double> values;
+  /// Non-empty when the file holds an unfinished run (ResultsStatus::warning): callers
+  /// should show it, the data end early.
+  std::string warning;
 };
+
+/// How the run that wrote a results file ended (root attributes, results_writer.h).
+struct ResultsStatus {
+  std::string status;   ///< "success", "running" (never finished), "interrupted", "failed", ...
+  std::string message;
+  double t_reached{std::numeric_limits<double>::quiet_NaN()};  ///< [s]
+  std::string warning;  ///< a sentence for the user; empty for "success"
+};
+
+/// @throws InputError if the file cannot be read as HDF5.
+ResultsStatus ReadResultsStatus(const std::string& path);
 
 /// Channels: <body>.p|v|omega.{x,y,z} (omega in W, as in the CSV), <port>.F|T.{x,y,z}
 /// (reactions in J's axes), energy.{kinetic,gravity,elastic,total,dissipated}.

@@ -171,6 +171,25 @@ void ResultsWriter::Write(const mbs::Sample& s) {
   file_.Flush();
 }
 
+void ResultsWriter::MarkStopped(const std::string& status, const std::string& reason,
+                                double t_reached) {
+  file_.SetAttribute("/", "status", status);
+  file_.SetAttribute("/", "message", reason);
+  file_.SetAttribute("/", "t_reached", t_reached);
+  file_.Flush();
+}
+
+void ResultsWriter::Close() { file_.Close(); }
+
+std::uint64_t ResultsWriter::BytesPerSample(const mbs::System& system) {
+  const std::uint64_t nb = system.layout().num_moving();
+  const std::uint64_t np = system.reaction_ports().size();
+  const std::uint64_t doubles = 1 + 7 * nb + 6 * nb + 6 * nb + 3 * nb + system.num_equations() +
+                                6 * np + 5 + 2 + 2 * system.layout().num_elastic_total() +
+                                6 * system.force_elements().size() + 6 * system.sensors().size();
+  return 8 * doubles;
+}
+
 void ResultsWriter::Finish(const mbs::RunResult& r) {
   file_.SetAttribute("/", "status", std::string(mbs::Name(r.status)));
   file_.SetAttribute("/", "message", r.message);
@@ -197,13 +216,20 @@ void ResultsWriter::RecordSteadyState(const SteadyStateReport& report,
 
 CsvWriter::CsvWriter(const std::string& path, const mbs::System& system,
                      const std::vector<std::string>& channels)
-    : channels_(system, channels) {
+    : path_(path), channels_(system, channels) {
   out_.open(path);
   EMB_THROW_IF(!out_, "CSV file '" << path << "' cannot be created");
   out_ << "t";
   for (const auto& c : channels) out_ << "," << c;
   out_ << "\n";
   out_ << std::setprecision(12);
+  out_.flush();
+  EMB_THROW_IF(!out_, "CSV file '" << path << "': write failed (disk full?)");
+}
+
+void CsvWriter::Close() {
+  out_.close();
+  EMB_THROW_IF(!out_, "CSV file '" << path_ << "': closing failed (disk full?)");
 }
 
 void CsvWriter::Write(const mbs::Sample& s) {
@@ -211,6 +237,7 @@ void CsvWriter::Write(const mbs::Sample& s) {
   for (int k = 0; k < channels_.size(); ++k) out_ << "," << channels_.Value(s, k);
   out_ << "\n";
   out_.flush();
+  EMB_THROW_IF(!out_, "CSV file '" << path_ << "': write failed (disk full?)");
 }
 
 }  // namespace emb::scene

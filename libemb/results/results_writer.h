@@ -4,6 +4,12 @@
 /// CSV of chosen channels. Every sample is appended and flushed at once, so a run that
 /// fails (integrator failure) or is interrupted keeps every sample before it.
 ///
+/// The file is written in place, not atomically: it is a log of the run. Its root attribute
+/// `status` says how far it is: "running" while the run goes (and forever if the process was
+/// killed outright), then the run's outcome ("success", "integrator-failure", ...), or
+/// "interrupted" (SIGINT/SIGTERM) or "failed" (an error), with `message` and `t_reached`
+/// (the last sample written). Readers warn on anything but "success" (results_reader.h).
+///
 /// HDF5 layout (format "emb-mbs-results", version 3, SI units; N samples, nb moving bodies,
 /// m equations, ne constraint elements, np >= ne reaction ports; row-major as h5py shows
 /// it):
@@ -56,6 +62,12 @@
 
 namespace emb::scene {
 
+/// Limits on what one run writes, checked before it starts (`emb run --force` lifts them): the
+/// output times are built up front and every sample is appended and flushed (about a
+/// millisecond each), so 2 million samples is already half an hour of writing.
+inline constexpr double kMaxOutputSamples = 2e6;
+inline constexpr double kMaxOutputBytes = 4e9;  ///< [bytes] of one results file
+
 class ResultsWriter {
  public:
   /// Creates the file and writes the model description.
@@ -66,6 +78,13 @@ class ResultsWriter {
   void Write(const mbs::Sample& sample);
   /// Records the outcome (status, message, t_reached) as root attributes and flushes.
   void Finish(const mbs::RunResult& result);
+  /// Records a run that stopped early: `status` "interrupted" or "failed", the reason and
+  /// the time of the last sample written, and flushes.
+  void MarkStopped(const std::string& status, const std::string& reason, double t_reached);
+  /// Closes the file. @throws InputError if the close fails (disk full, I/O error).
+  void Close();
+  /// Bytes one sample adds to the file of `system` (for output-size estimates).
+  static std::uint64_t BytesPerSample(const mbs::System& system);
   /// Records the steady-state search as root attributes steady_state_{converged (1/0),
   /// cycles, change, tolerance, worst_channel, cycle_start, cycle_end} [s] and flushes;
   /// readers (emb spectrum, the plots) analyse [cycle_start, cycle_end] by default.
@@ -85,9 +104,13 @@ class CsvWriter {
   /// @throws InputError for an unknown channel (with a did-you-mean) or an unwritable file.
   CsvWriter(const std::string& path, const mbs::System& system,
             const std::vector<std::string>& channels);
+  /// Appends one line and flushes. @throws InputError if the write fails (disk full).
   void Write(const mbs::Sample& sample);
+  /// Closes the file. @throws InputError if the close fails.
+  void Close();
 
  private:
+  std::string path_;
   std::ofstream out_;
   ChannelSet channels_;
 };

@@ -27,17 +27,25 @@ BeamPartSpec ReadBeamPart(const YAML::Node& node, const std::string& file) {
   BeamGenerationOptions& g = s.generation;
   if (const YAML::Node p = r.Optional("parameters")) {
     EMB_THROW_IF(!p.IsMap(), Where(file, p) << ": " << what << " parameters: expected a map");
-    for (const auto& kv : p)
-      g.parameters.emplace_back(kv.first.as<std::string>(), kv.second.as<double>());
+    for (const auto& kv : p) {
+      EMB_THROW_IF(!kv.first.IsScalar(),
+                   Where(file, kv.first) << ": " << what << " parameters: expected NAME: VALUE");
+      g.parameters.emplace_back(
+          kv.first.Scalar(),
+          AsDouble(kv.second, file, what + " parameter '" + kv.first.Scalar() + "'"));
+    }
   }
   const std::string webs = r.GetString("webs", "rigid");
   EMB_THROW_IF(webs != "rigid" && webs != "elastic",
                Where(file, node) << ": " << what << " webs: expected rigid or elastic, got '"
                                  << webs << "'");
   g.webs = webs == "rigid" ? WebModel::kRigid : WebModel::kElastic;
-  g.web_width = r.GetDouble("web_width", 0.0);
-  g.max_element_length = r.GetDouble("element_length", g.max_element_length);
-  g.stiffness_damping = r.GetDouble("stiffness_damping", g.stiffness_damping);
+  g.web_width = r.GetDouble("web_width", 0.0, NumberRange::NonNegative("m"));
+  // The element count is the part's length over this: bounded below.
+  g.max_element_length = r.GetDouble("element_length", g.max_element_length,
+                                     NumberRange::Closed(1e-4, 100.0, "m"));
+  g.stiffness_damping =
+      r.GetDouble("stiffness_damping", g.stiffness_damping, NumberRange::NonNegative("s"));
   if (const YAML::Node m = r.Optional("material")) {
     MapReader rm(m, file, what + " material");
     g.material.youngs_modulus = rm.GetDouble("E", g.material.youngs_modulus);

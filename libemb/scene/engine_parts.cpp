@@ -11,10 +11,10 @@ namespace emb::scene {
 void ReadJournalBearing(MapReader& r, const std::string& name, mbs::System* sys) {
   const int i = sys->FindMarker(r.GetString("i")), j = sys->FindMarker(r.GetString("j"));
   mbs::JournalBearingParameters p;
-  p.radius = r.GetDouble("radius");
-  p.length = r.GetDouble("length");
-  p.clearance = r.GetDouble("clearance");
-  p.viscosity = r.GetDouble("viscosity");
+  p.radius = r.GetDouble("radius", NumberRange::Positive("m"));
+  p.length = r.GetDouble("length", NumberRange::Positive("m"));
+  p.clearance = r.GetDouble("clearance", NumberRange::Positive("m"));
+  p.viscosity = r.GetDouble("viscosity", NumberRange::Positive("Pa s"));
   sys->AddForceElement(std::make_shared<mbs::JournalBearing>(name, i, j, p));
 }
 
@@ -42,8 +42,10 @@ mbs::TimeFunction ReadCylinderPressure(const YAML::Node& n, const std::string& f
   get("peak_pressure", s.peak_pressure);
   get("exhaust_opening_deg", s.exhaust_opening_deg);
   get("blowdown_deg", s.blowdown_deg);
-  get("step_deg", s.step_deg);
-  const double crankcase = r.GetDouble("crankcase_pressure", 1.0e5);
+  // The cycle is tabulated at every step: a tiny step would be billions of samples.
+  s.step_deg = r.GetDouble("step_deg", s.step_deg, NumberRange::Closed(1e-3, 10.0, "deg"));
+  const double crankcase =
+      r.GetDouble("crankcase_pressure", 1.0e5, NumberRange::NonNegative("Pa"));
   const std::string output = r.GetString("output", "force");
   r.Finish();
   EMB_THROW_IF(output != "force" && output != "pressure",

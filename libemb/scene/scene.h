@@ -33,15 +33,26 @@ struct Scene {
   SteadyStateSettings steady_state;
   OutputSpec output;
   std::vector<std::string> notes;  ///< what the loader decided, e.g. the modes a part kept
+  std::vector<std::string> inputs;  ///< files it reads: the scene, body files, geometries
+};
+
+/// How to read a scene.
+struct SceneOptions {
+  /// Give the geometry of `model: beam` parts to gmsh without auditing it first
+  /// (gmsh_input_audit.h): only for files the user trusts (`--trust-geo`).
+  bool trust_geo_scripts{false};
 };
 
 /// Reads and validates a scene file; output paths become relative to its directory
-/// (OutputSpec). @throws InputError with file:line for anything wrong:
-/// YAML syntax, unknown keys (with a did-you-mean), unknown part/marker/joint names, zero or
-/// non-unit axes, bad mass or inertia, bad functions.
-Scene LoadScene(const std::string& path);
+/// (OutputSpec) and must stay inside that directory's tree or the working directory
+/// (symbolic links followed: a scene from someone else must not write elsewhere).
+/// @throws InputError with file:line for anything wrong:
+/// YAML syntax, duplicate or unknown keys (with a did-you-mean), unknown part/marker/joint
+/// names, zero or non-unit axes, bad mass or inertia, bad functions, output paths outside.
+Scene LoadScene(const std::string& path, const SceneOptions& options = {});
 
-/// The same from text; `source` names it in messages.
-Scene ParseScene(const std::string& yaml_text, const std::string& source);
+/// The same from text; `source` names it in messages (output paths stay as written).
+Scene ParseScene(const std::string& yaml_text, const std::string& source,
+                 const SceneOptions& options = {});
 
 }  // namespace emb::scene

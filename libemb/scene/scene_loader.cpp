@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/common/number_check.h"
+#include "libemb/io/output_path.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/flexible/beam_part.h"
 #include "libemb/mbs/flexible/flexible_body.h"
@@ -42,9 +44,10 @@ std::string ScenePath(const std::string& file, const std::string& p) {
 mbs::FlexibleBodyOptions ReadFlexibleBodyOptions(MapReader& rb, bool flexible) {
   mbs::FlexibleBodyOptions o;
   o.flexible = flexible;
-  o.modes.max_modes = rb.GetInt("modes", -1);
-  o.modes.fmax_hz = rb.GetDouble("fmax_hz", -1.0);
-  o.modes.dynamic_band_hz = rb.GetDouble("dynamic_band_hz", -1.0);
+  o.modes.max_modes = rb.GetInt("modes", -1, 0, 100000);  // -1 (absent): all
+  o.modes.fmax_hz = rb.GetDouble("fmax_hz", -1.0, NumberRange::Positive("Hz"));  // -1: no limit
+  o.modes.dynamic_band_hz =
+      rb.GetDouble("dynamic_band_hz", -1.0, NumberRange::Positive("Hz"));  // -1: all dynamic
   if (rb.Has("geometric_stiffening"))
     o.geometric_stiffening = rb.GetBool("geometric_stiffening", true)
                                  ? mbs::GeometricStiffening::kOn
@@ -57,12 +60,14 @@ mbs::FlexibleBodyOptions ReadFlexibleBodyOptions(MapReader& rb, bool flexible) {
 // A part from a body file (`model: rigid|cms` with `body_file`), built by
 // mbs/flexible/flexible_body.h.
 void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs::System* sys,
-                      Parts* parts, std::vector<std::string>* notes) {
+                      Parts* parts, std::vector<std::string>* notes,
+                      std::vector<std::string>* inputs) {
   const std::string& what = rb.what();
   for (const char* key : {"mass", "inertia"})
     EMB_THROW_IF(rb.Has(key), what << ": '" << key << "' comes from the body file; remove it");
   const std::string name = rb.GetString("name");
   const std::string path = ScenePath(file, rb.GetString("body_file"));
+  inputs->push_back(path);
   const mbs::FlexibleBodyOptions options = ReadFlexibleBodyOptions(rb, flexible);
   const std::string expect_mesh_hash = rb.GetString("expect_mesh_hash", "");
   mbs::PartPlacement placement;
@@ -97,13 +102,16 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   parts->from_body_files[name] = std::move(m.part);
 }
 
-void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sys, Parts* parts,
-                std::vector<std::string>* notes) {
+void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOptions& options,
+                mbs::System* sys, Parts* parts, std::vector<std::string>* notes,
+                std::vector<std::string>* inputs) {
   ReadNamedList(
       list, file, "bodies", "body",
       [&](MapReader& rb, const std::string& name, const YAML::Node& node) {
         if (IsBeamPart(node)) {  // model: beam (beam_part_reader.h)
-          const BeamPartSpec spec = ReadBeamPart(node, file);
+          BeamPartSpec spec = ReadBeamPart(node, file);
+          spec.generation.trust_scripts = options.trust_geo_scripts;
+          inputs->push_back(spec.geometry);
           parts->beams[name] = mbs::AddBeamPart(
               sys, name, MakeBeamModelFromGeometry(spec.geometry, spec.generation), spec.placement);
           return;
@@ -118,7 +126,7 @@ void ReadBodies(const YAML::Node& list, const std::string& file, mbs::System* sy
                                                        << ": " << rb.what()
                                                        << ": model 'cms' needs a body_file (from "
                                                        << "emb reduce)");
-        if (from_file) return ReadBodyFilePart(rb, file, model == "cms", sys, parts, notes);
+        if (from_file) return ReadBodyFilePart(rb, file, model == "cms", sys, parts, notes, inputs);
         mbs::RigidBody b;
         b.name = name;
         b.p_WB = rb.GetVector3("position", Vector3d::Zero());
@@ -233,13 +241,13 @@ void ReadSensors(const YAML::Node& list, const std::string& file, mbs::System* s
 
 void ReadSteadyState(const YAML::Node& node, const std::string& file, SteadyStateSettings* s) {
   MapReader r(node, file, "analysis steady_state");
-  s->period = r.GetDouble("period");
+  s->period = r.GetDouble("period", NumberRange::Positive("s"));
   const YAML::Node ch = r.Require("channels");
   EMB_THROW_IF(!ch.IsSequence(), Where(file, ch) << ": steady_state channels: expected a list");
   for (const auto& c : ch) s->channels.push_back(c.Scalar());
-  s->tolerance = r.GetDouble("tolerance", s->tolerance);
-  s->min_cycles = r.GetInt("min_cycles", s->min_cycles);
-  s->max_cycles = r.GetInt("max_cycles", s->max_cycles);
+  s->tolerance = r.GetDouble("tolerance", s->tolerance, NumberRange::Positive());
+  s->min_cycles = r.GetInt("min_cycles", s->min_cycles, 1, 100000);
+  s->max_cycles = r.GetInt("max_cycles", s->max_cycles, 1, 100000);
   r.Finish();
 }
 
@@ -247,20 +255,24 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
                   SteadyStateSettings* steady) {
   MapReader r(node, file, "analysis");
   s->type = mbs::ParseAnalysisType(r.GetString("type", "dynamic"));
-  s->t_start = r.GetDouble("t_start", s->t_start);
-  s->t_end = r.GetDouble("t_end", s->t_end);
-  s->output_step = r.GetDouble("output_step", s->output_step);
-  s->ida.rtol = r.GetDouble("rtol", s->ida.rtol);
-  s->ida.atol = r.GetDouble("atol", s->ida.atol);
-  s->atol_floor_relative = r.GetDouble("atol_floor_relative", s->atol_floor_relative);
-  s->initial_step_fraction = r.GetDouble("initial_step_fraction", s->initial_step_fraction);
-  s->multiplier_atol = r.GetDouble("multiplier_atol", s->multiplier_atol);
+  using R = NumberRange;
+  s->t_start = r.GetDouble("t_start", s->t_start, R::Finite("s"));
+  s->t_end = r.GetDouble("t_end", s->t_end, R::Finite("s"));
+  s->output_step = r.GetDouble("output_step", s->output_step, R::Positive("s"));
+  s->ida.rtol = r.GetDouble("rtol", s->ida.rtol, R::Open(0.0, 1.0));
+  s->ida.atol = r.GetDouble("atol", s->ida.atol, R::Positive());
+  s->atol_floor_relative =
+      r.GetDouble("atol_floor_relative", s->atol_floor_relative, R::Closed(0.0, 1.0));
+  s->initial_step_fraction =
+      r.GetDouble("initial_step_fraction", s->initial_step_fraction, R::Closed(0.0, 1.0));
+  s->multiplier_atol = r.GetDouble("multiplier_atol", s->multiplier_atol, R::NonNegative("N"));
   s->multiplier_atol_relative =
-      r.GetDouble("multiplier_atol_relative", s->multiplier_atol_relative);
+      r.GetDouble("multiplier_atol_relative", s->multiplier_atol_relative, R::Open(0.0, 1.0));
   s->modal_velocity_atol_by_frequency =
       r.GetBool("modal_velocity_atol_by_frequency", s->modal_velocity_atol_by_frequency);
-  s->ida.max_step = r.GetDouble("max_step", s->ida.max_step);
-  s->ida.max_num_steps = r.GetInt("max_steps", static_cast<int>(s->ida.max_num_steps));
+  s->ida.max_step = r.GetDouble("max_step", s->ida.max_step, R::NonNegative("s"));
+  s->ida.max_num_steps =
+      r.GetInt("max_steps", static_cast<int>(s->ida.max_num_steps), 1, 1000000000);
   try {
     s->ida.linear_solver = ParseLinearSolverKind(r.GetString("linear_solver", "auto"));
     s->integrator = mbs::ParseDynamicIntegrator(r.GetString("integrator", Name(s->integrator)));
@@ -273,10 +285,13 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
                Where(file, node) << ": analysis rho_inf: expected a value in [0, 1], got "
                                  << s->rho_inf);
   s->remove_redundant = r.GetBool("remove_redundant", s->remove_redundant);
-  s->assembly.tolerance = r.GetDouble("assembly_tolerance", s->assembly.tolerance);
-  s->assembly.max_iterations = r.GetInt("assembly_iterations", s->assembly.max_iterations);
-  s->static_force_tolerance = r.GetDouble("static_tolerance", s->static_force_tolerance);
-  s->static_max_iterations = r.GetInt("static_iterations", s->static_max_iterations);
+  s->assembly.tolerance =
+      r.GetDouble("assembly_tolerance", s->assembly.tolerance, R::Open(0.0, 1.0));
+  s->assembly.max_iterations =
+      r.GetInt("assembly_iterations", s->assembly.max_iterations, 1, 100000);
+  s->static_force_tolerance =
+      r.GetDouble("static_tolerance", s->static_force_tolerance, R::Open(0.0, 1.0));
+  s->static_max_iterations = r.GetInt("static_iterations", s->static_max_iterations, 1, 100000);
   const bool t_end_given = r.Has("t_end");
   if (const YAML::Node n = r.Optional("steady_state")) {
     ReadSteadyState(n, file, steady);
@@ -321,13 +336,14 @@ void ReadOutput(const YAML::Node& node, const std::string& file, OutputSpec* o) 
 
 }  // namespace
 
-Scene ParseScene(const std::string& text, const std::string& source) {
+Scene ParseScene(const std::string& text, const std::string& source, const SceneOptions& options) {
   YAML::Node root;
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     EMB_THROW(InputError, source << ":" << e.mark.line + 1 << ": YAML syntax error: " << e.msg);
   }
+  CheckUniqueKeys(root, source);
   MapReader r(root, source, "scene");
   Scene scene;
   scene.source = source;
@@ -338,7 +354,9 @@ Scene ParseScene(const std::string& text, const std::string& source) {
   else
     r.Optional("gravity");
   Parts parts;
-  ReadBodies(r.Require("bodies"), source, &scene.system, &parts, &scene.notes);
+  scene.inputs.push_back(source);
+  ReadBodies(r.Require("bodies"), source, options, &scene.system, &parts, &scene.notes,
+             &scene.inputs);
   if (const YAML::Node n = r.Optional("markers")) ReadMarkers(n, source, &scene.system, parts);
   if (const YAML::Node n = r.Optional("joints")) ReadJoints(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("motions")) ReadMotions(n, source, &scene.system);
@@ -360,16 +378,25 @@ Scene ParseScene(const std::string& text, const std::string& source) {
   return scene;
 }
 
-Scene LoadScene(const std::string& path) {
+Scene LoadScene(const std::string& path, const SceneOptions& options) {
+  std::error_code ec;
+  EMB_THROW_IF(!std::filesystem::exists(path, ec),
+               "scene file '" << path << "' does not exist");
+  EMB_THROW_IF(!std::filesystem::is_regular_file(path, ec),
+               "scene file '" << path << "' is not a regular file; expected a YAML file");
   std::ifstream in(path);
-  EMB_THROW_IF(!in, "scene file '" << path << "' cannot be read (does it exist?)");
+  EMB_THROW_IF(!in, "scene file '" << path << "' cannot be read (permissions?)");
   std::ostringstream text;
   text << in.rdbuf();
-  Scene scene = ParseScene(text.str(), path);
+  Scene scene = ParseScene(text.str(), path, options);
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
-  for (std::string* p : {&scene.output.file, &scene.output.csv})
-    if (!p->empty() && std::filesystem::path(*p).is_relative())
-      *p = (dir / *p).lexically_normal().string();
+  const std::string scene_dir = dir.empty() ? "." : dir.string();
+  for (auto [p, key] : {std::pair{&scene.output.file, "output.file"},
+                        std::pair{&scene.output.csv, "output.csv"}}) {
+    if (p->empty()) continue;
+    if (std::filesystem::path(*p).is_relative()) *p = (dir / *p).lexically_normal().string();
+    CheckConfined(*p, {scene_dir, "."}, path + ": " + key);
+  }
   return scene;
 }
 

@@ -163,7 +163,7 @@ mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
     ++given;
     MapReader h(r.Require("harmonic"), file, what + " harmonic");
     const double amplitude = h.GetDouble("amplitude");
-    const double hz = h.GetDouble("frequency_hz");
+    const double hz = h.GetDouble("frequency_hz", NumberRange::NonNegative("Hz"));
     const double phase = h.GetDouble("phase", 0.0);
     const double offset = h.GetDouble("offset", 0.0);
     h.Finish();
@@ -222,9 +222,13 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
     const std::string type = r.GetString("type");
     if (type == "spring-damper" || type == "rotational-spring-damper") {
       const int i = sys->FindMarker(r.GetString("i")), j = sys->FindMarker(r.GetString("j"));
-      const double k = r.GetDouble("stiffness", 0.0), c = r.GetDouble("damping", 0.0);
-      if (type == "spring-damper") {
-        const double l0 = r.GetDouble("free_length", 0.0);
+      const bool linear = type == "spring-damper";
+      const double k =
+          r.GetDouble("stiffness", 0.0, NumberRange::NonNegative(linear ? "N/m" : "N m/rad"));
+      const double c =
+          r.GetDouble("damping", 0.0, NumberRange::NonNegative(linear ? "N s/m" : "N m s/rad"));
+      if (linear) {
+        const double l0 = r.GetDouble("free_length", 0.0, NumberRange::NonNegative("m"));
         sys->AddForceElement(
             std::make_shared<mbs::TranslationalSpringDamper>(name, i, j, k, c, l0));
       } else {
@@ -241,7 +245,7 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
         r.Optional("damping");
       // The seed's choice: damping as a fraction of stiffness, D = beta K, beta in s.
       if (r.Has("damping_factor"))
-        D += r.GetDouble("damping_factor") * K;
+        D += r.GetDouble("damping_factor", NumberRange::NonNegative("s")) * K;
       else
         r.Optional("damping_factor");
       sys->AddForceElement(std::make_shared<mbs::Bushing>(name, i, j, K, D));

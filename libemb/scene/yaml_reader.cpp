@@ -1,6 +1,7 @@
 #include "libemb/scene/yaml_reader.h"
 
 #include <cmath>
+#include <map>
 
 #include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
@@ -96,13 +97,48 @@ double MapReader::GetDouble(const std::string& key, double fallback) {
   const YAML::Node n = Optional(key);
   return n ? AsDouble(n, file_, what_ + " '" + key + "'") : fallback;
 }
-int MapReader::GetInt(const std::string& key, int fallback) {
+double MapReader::GetDouble(const std::string& key, const NumberRange& range) {
+  const YAML::Node n = Require(key);
+  return CheckNumber(Where(file_, n) + ": " + what_ + " '" + key + "'",
+                     AsDouble(n, file_, what_ + " '" + key + "'"), range);
+}
+double MapReader::GetDouble(const std::string& key, double fallback, const NumberRange& range) {
+  const YAML::Node n = Optional(key);
+  if (!n) return fallback;
+  return CheckNumber(Where(file_, n) + ": " + what_ + " '" + key + "'",
+                     AsDouble(n, file_, what_ + " '" + key + "'"), range);
+}
+int MapReader::GetInt(const std::string& key, int fallback, long long lo, long long hi) {
   const YAML::Node n = Optional(key);
   if (!n) return fallback;
   const double v = AsDouble(n, file_, what_ + " '" + key + "'");
-  EMB_THROW_IF(v != std::floor(v), Where(file_, n) << ": " << what_ << " '" << key
-                                                   << "': expected an integer, got " << v);
+  EMB_THROW_IF(v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi),
+               Where(file_, n) << ": " << what_ << " '" << key << "': expected an integer in ["
+                               << lo << ", " << hi << "], got " << n.Scalar());
   return static_cast<int>(v);
+}
+
+void CheckUniqueKeys(const YAML::Node& root, const std::string& file) {
+  // Iterative (a deep document must not exhaust the stack).
+  std::vector<YAML::Node> pending{root};
+  while (!pending.empty()) {
+    const YAML::Node node = pending.back();
+    pending.pop_back();
+    if (node.IsMap()) {
+      std::map<std::string, int> first_line;
+      for (const auto& kv : node) {
+        const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string();
+        const int line = kv.first.Mark().line + 1;
+        const auto [it, inserted] = first_line.emplace(key, line);
+        EMB_THROW_IF(!inserted && kv.first.IsScalar(),
+                     Where(file, kv.first) << ": key '" << key << "' given twice (first at line "
+                                           << it->second << "); expected each key once");
+        pending.push_back(kv.second);
+      }
+    } else if (node.IsSequence()) {
+      for (const auto& item : node) pending.push_back(item);
+    }
+  }
 }
 bool MapReader::GetBool(const std::string& key, bool fallback) {
   const YAML::Node n = Optional(key);

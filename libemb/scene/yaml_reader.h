@@ -7,10 +7,12 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Dense>
+#include <limits>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "libemb/common/number_check.h"
 #include "libemb/common/error.h"
 
 namespace emb::scene {
@@ -32,7 +34,13 @@ class MapReader {
 
   double GetDouble(const std::string& key);
   double GetDouble(const std::string& key, double fallback);
-  int GetInt(const std::string& key, int fallback);
+  /// The number at `key`, finite and in `range` (number_check.h), with file:line, the key
+  /// and the unit in the message otherwise.
+  double GetDouble(const std::string& key, const NumberRange& range);
+  double GetDouble(const std::string& key, double fallback, const NumberRange& range);
+  /// An integer in [lo, hi] (default: any int).
+  int GetInt(const std::string& key, int fallback, long long lo = std::numeric_limits<int>::min(),
+             long long hi = std::numeric_limits<int>::max());
   bool GetBool(const std::string& key, bool fallback);
   std::string GetString(const std::string& key);
   std::string GetString(const std::string& key, const std::string& fallback);
@@ -53,6 +61,11 @@ class MapReader {
   std::string file_, what_;
   std::set<std::string> known_;
 };
+
+/// @throws InputError "file:line: key 'k' given twice (first at line n)" for the first map
+/// anywhere under `root` that holds a key twice (yaml-cpp keeps both and reads the first,
+/// so a second value would be ignored without a word).
+void CheckUniqueKeys(const YAML::Node& root, const std::string& file);
 
 /// "file:line: '<section>': expected a list" as an InputError.
 [[noreturn]] void ThrowNotAList(const YAML::Node& list, const std::string& file,

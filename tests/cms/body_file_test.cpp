@@ -6,6 +6,7 @@
 #include <hdf5.h>
 
 #include <filesystem>
+#include <tuple>
 
 #include "libemb/common/error.h"
 #include "libemb/fe/assembly.h"
@@ -106,6 +107,39 @@ TEST(BodyFile, RefusesATamperedFile) {
   std::filesystem::remove(path);
 }
 
+// Replaces the double attribute `object@name` (as an editor would: delete, create).
+void ChangeAttribute(const std::string& path, const char* object, const char* name, double value) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  ASSERT_GE(H5Adelete_by_name(file, object, name, H5P_DEFAULT), 0);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t attr =
+      H5Acreate_by_name(file, object, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
+                        H5P_DEFAULT);
+  ASSERT_GE(attr, 0);
+  ASSERT_GE(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), 0);
+  H5Aclose(attr);
+  H5Sclose(space);
+  H5Fclose(file);
+}
+
+// Issue 14: the attributes the reader uses (damping, material, counts) are covered by the
+// digest too (version 2), so changing them is refused like changing a matrix entry.
+TEST(BodyFile, RefusesTamperedAttributes) {
+  const Fixture f;
+  const std::string path = TempPath("attributes.h5");
+  for (auto [object, name, value] : {std::tuple{"/damping", "ratio", 0.5},
+                                     std::tuple{"/material", "density", 7851.0},
+                                     std::tuple{"/provenance", "shift_hz", 1.0}}) {
+    SCOPED_TRACE(std::string(object) + "@" + name);
+    WriteBodyFile(path, "", f.body, f.info, nullptr);
+    EXPECT_NO_THROW(ReadBodyFile(path));
+    ChangeAttribute(path, object, name, value);
+    ExpectDigestRefusal(path);
+  }
+  std::filesystem::remove(path);
+}
+
 // The stress-stiffening group round-trips bit for bit; a body without it (reduced with
 // geometric_stiffness off, or a file written before the group existed: the same bytes) reads
 // with present = false.
@@ -151,6 +185,125 @@ TEST(BodyFile, RefusesAStaleBasisAndOtherFiles) {
   EXPECT_THROW(CheckBodyProvenance(path, info, f.sys.mesh_hash, &aluminium), InputError);
   EXPECT_THROW(ReadBodyFile(TempPath("missing.h5")), InputError);
   std::filesystem::remove(path);
+}
+
+// Issue 18: a body file from someone else must not make emb read other files. Each crafted
+// object is added to a valid body file; the reader refuses it and names it.
+class ForeignStorage : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    path_ = TempPath("foreign.h5");
+    other_ = TempPath("other.h5");
+    WriteBodyFile(path_, "", f_.body, f_.info, nullptr);
+    // A file the crafted links point into.
+    const hid_t o = H5Fcreate(other_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    const hsize_t n = 4;
+    const hid_t space = H5Screate_simple(1, &n, nullptr);
+    const hid_t ds = H5Dcreate2(o, "x", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    H5Dclose(ds);
+    H5Sclose(space);
+    H5Fclose(o);
+  }
+  void TearDown() override {
+    std::filesystem::remove(path_);
+    std::filesystem::remove(other_);
+  }
+  // Expects ReadBodyFile to refuse the file with every word in the message.
+  void ExpectRefusal(std::initializer_list<std::string> words) {
+    try {
+      ReadBodyFile(path_);
+      FAIL() << "the crafted file was read";
+    } catch (const InputError& e) {
+      for (const auto& w : words) EXPECT_NE(std::string(e.what()).find(w), std::string::npos) << e.what();
+    }
+  }
+  hid_t Open() { return H5Fopen(path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT); }
+  Fixture f_;
+  std::string path_, other_;
+};
+
+TEST_F(ForeignStorage, ExternalLinkIsRefusedByName) {
+  const hid_t file = Open();
+  ASSERT_GE(H5Lcreate_external(other_.c_str(), "/x", file, "/reduced/borrowed", H5P_DEFAULT,
+                               H5P_DEFAULT),
+            0);
+  H5Fclose(file);
+  ExpectRefusal({"/reduced/borrowed", "external link"});
+}
+
+TEST_F(ForeignStorage, ExternalDatasetIsRefused) {
+  const hid_t file = Open();
+  const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+  ASSERT_GE(H5Pset_external(dcpl, "/etc/hostname", 0, 32), 0);
+  const hsize_t n = 4;
+  const hid_t space = H5Screate_simple(1, &n, nullptr);
+  const hid_t ds = H5Dcreate2(file, "/modes/outside", H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl,
+                              H5P_DEFAULT);
+  ASSERT_GE(ds, 0);
+  H5Dclose(ds);
+  H5Sclose(space);
+  H5Pclose(dcpl);
+  H5Fclose(file);
+  ExpectRefusal({"/modes/outside", "external files"});
+}
+
+TEST_F(ForeignStorage, VirtualDatasetIsRefused) {
+  const hid_t file = Open();
+  const hsize_t n = 4;
+  const hid_t space = H5Screate_simple(1, &n, nullptr);
+  const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+  ASSERT_GE(H5Pset_virtual(dcpl, space, other_.c_str(), "/x", space), 0);
+  const hid_t ds = H5Dcreate2(file, "/invariants/mapped", H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl,
+                              H5P_DEFAULT);
+  ASSERT_GE(ds, 0);
+  H5Dclose(ds);
+  H5Pclose(dcpl);
+  H5Sclose(space);
+  H5Fclose(file);
+  ExpectRefusal({"/invariants/mapped", "virtual dataset"});
+}
+
+TEST_F(ForeignStorage, ArrayWhereOneValueBelongsIsRefusedNotOverrun) {
+  // An attribute read into one double: a 1000-element array there must not be written over
+  // the reader's stack.
+  const hid_t file = Open();
+  const hid_t obj = H5Oopen(file, "/material", H5P_DEFAULT);
+  H5Adelete(obj, "density");
+  const hsize_t n = 1000;
+  const hid_t space = H5Screate_simple(1, &n, nullptr);
+  const hid_t attr = H5Acreate2(obj, "density", H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT);
+  const std::vector<double> v(n, 7850.0);
+  ASSERT_GE(H5Awrite(attr, H5T_NATIVE_DOUBLE, v.data()), 0);
+  H5Aclose(attr);
+  H5Sclose(space);
+  H5Oclose(obj);
+  H5Fclose(file);
+  ExpectRefusal({"/material@density", "expected a single value", "1000"});
+}
+
+TEST_F(ForeignStorage, DatasetClaimingMoreThanTheFileHoldsIsRefused) {
+  // A chunked, compressed dataset of 2^40 values whose chunks were never written takes a few
+  // bytes in the file; reading it would allocate 8 TB.
+  const hid_t file = Open();
+  H5Ldelete(file, "/reduced/K", H5P_DEFAULT);
+  const hsize_t dims[2] = {hsize_t{1} << 20, hsize_t{1} << 20}, chunk[2] = {64, 64};
+  const hid_t space = H5Screate_simple(2, dims, nullptr);
+  const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+  H5Pset_chunk(dcpl, 2, chunk);
+  H5Pset_deflate(dcpl, 4);
+  const hid_t ds =
+      H5Dcreate2(file, "/reduced/K", H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+  ASSERT_GE(ds, 0);
+  H5Dclose(ds);
+  H5Pclose(dcpl);
+  H5Sclose(space);
+  H5Fclose(file);
+  try {
+    ReadBodyFile(path_);
+    FAIL() << "the crafted file was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/reduced/K"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

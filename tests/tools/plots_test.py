@@ -64,8 +64,57 @@ def check_engine_plots(work):
           "unknown channel: non-zero exit naming it (%s)" % r.stderr.strip()[-200:])
 
 
+def check_sensor_and_force_channels(work):
+    """engine_plots.py reads every kind of channel emb does: sensor components and force
+    elements' loads equal the CSV emb run writes for them (issue 14)."""
+    with open(os.path.join(work, "pend.yaml"), "w") as f:
+        f.write("""gravity: [0, -9.81, 0]
+bodies:
+  - {name: rod, mass: 1.0, inertia: [1.0e-4, 0.083, 0.083], position: [0.5, 0, 0]}
+markers:
+  - {name: pivot, body: ground, position: [0, 0, 0]}
+  - {name: anchor, body: ground, position: [1.0, 0.3, 0]}
+  - {name: rod_top, body: rod, position: [-0.5, 0, 0]}
+  - {name: rod_tip, body: rod, position: [0.5, 0, 0]}
+joints:
+  - {name: hinge, type: revolute, i: rod_top, j: pivot}
+forces:
+  - {name: spring, type: spring-damper, i: rod_tip, j: anchor, stiffness: 50, damping: 0.5}
+  - {name: mount, type: bushing, i: rod_tip, j: anchor,
+     stiffness: [10, 10, 10, 1, 1, 1], damping_factor: 0.01}
+sensors:
+  - {name: tip, i: rod_tip, j: pivot}
+analysis: {type: dynamic, t_end: 0.2, output_step: 0.01}
+output: {csv: pend.csv, channels: [tip.dx, tip.rz, mount.F.x, mount.T.z, hinge.F.y]}
+""")
+    r = run([EMB, "run", "pend.yaml", "-q", "-o", "pend.h5"], work)
+    if r.returncode != 0:
+        sys.exit("emb run failed: " + r.stderr)
+    sys.path.insert(0, os.path.dirname(ENGINE_PLOTS))
+    import engine_plots  # noqa: E402
+    with open(os.path.join(work, "pend.csv")) as f:
+        header = f.readline().strip().split(",")
+    table = np.loadtxt(os.path.join(work, "pend.csv"), delimiter=",", skiprows=1)
+    with h5py.File(os.path.join(work, "pend.h5"), "r") as f:
+        for name in ("tip.dx", "tip.rz", "mount.F.x", "mount.T.z", "hinge.F.y"):
+            check(name in header, "CSV column of %s (%s)" % (name, header))
+            if name not in header:
+                continue
+            got = engine_plots.channel(f, name)
+            want = table[:, header.index(name)]
+            # The CSV prints 10 significant digits.
+            check(np.allclose(got, want, rtol=1e-8, atol=1e-10 * np.abs(want).max()),
+                  "engine_plots channel %s equals emb's CSV" % name)
+            check(np.abs(want).max() > 0, "channel %s is not trivially zero" % name)
+    r = run(["/usr/bin/python3", ENGINE_PLOTS, "pend.h5", "--time", "--traces", "spring.F.x",
+             "--out", "plots", "--emb", EMB], work)
+    check(r.returncode != 0 and "spring" in r.stderr,
+          "a force element without loads: non-zero exit naming it (%s)" % r.stderr.strip()[-200:])
+
+
 def main():
     work = tempfile.mkdtemp(prefix="emb_animate_")
+    check_sensor_and_force_channels(work)
     geo = os.path.join(SOURCE, "meshes", "tube.geo")
     coarse = ["--set", "n_wall=1", "--set", "n_circ=8", "--set", "h=0.1", "--set", "L=0.6",
               "-n", "4", "--no-reference", "--no-xdmf", "-q"]

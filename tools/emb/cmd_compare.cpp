@@ -17,6 +17,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/compare/comparison_report.h"
+#include "libemb/common/number_check.h"
 #include "libemb/compare/part_comparison.h"
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
@@ -57,9 +58,17 @@ struct CompareCommand {
     o.web_width = web_width;
     o.beam_element_length = element_length;
     o.shear_deformable = !euler_bernoulli;
+    CheckNumber("--web-width", web_width, NumberRange::NonNegative("m"));
+    CheckNumber("--element-length", element_length, NumberRange::Positive("m"));
+    CheckInteger("--scan-intervals", scan_intervals, 1, 100000000);
+    CheckInteger("--stations", stations, 2, 100000);
+    CheckNumber("--shell-threshold", shell_threshold, NumberRange::Open(0.0, 1.0));
+    CheckInteger("--modes", num_modes, 1, 100000);
+    for (int n : cms_modes) CheckInteger("--cms", n, 0, 100000);
     if (!tmm_band.empty()) {
       EMB_THROW_IF(tmm_band.size() != 2,
                    "--tmm-band: expected LO,HI [Hz], got " << tmm_band.size() << " values");
+      for (double f : tmm_band) CheckNumber("--tmm-band", f, NumberRange::NonNegative("Hz"));
       o.tmm_min_hz = tmm_band[0];
       o.tmm_max_hz = tmm_band[1];
       EMB_THROW_IF(!(o.tmm_max_hz > o.tmm_min_hz && o.tmm_min_hz >= 0.0),
@@ -74,12 +83,23 @@ struct CompareCommand {
 
   void Run() const {
     const ComparisonOptions o = Options();
-    std::string stem;
     if (!report_dir.empty()) {
       std::error_code ec;
       EMB_THROW_IF(!std::filesystem::is_directory(report_dir, ec),
                    "--report-dir '" << report_dir << "': directory does not exist");
     }
+    // The report's names are known now: check and lock them before any work.
+    const std::string base =
+        report_dir.empty()
+            ? ""
+            : (std::filesystem::path(report_dir) /
+               (std::filesystem::path(part.file).stem().string() + "_" + Name(o.support) +
+                "_compare"))
+                  .string();
+    const PreparedOutputs outputs({{base.empty() ? "" : base + ".csv", "--report-dir"},
+                                   {base.empty() ? "" : base + ".md", "--report-dir"},
+                                   {part.save_mesh, "--save-mesh"}},
+                                  {part.file, beam_geometry});
     const PartComparison c = RunPartComparison(o, MakeProgressDisplay(out.quiet));
     FinishProgressLine();
 
@@ -137,8 +157,6 @@ struct CompareCommand {
                        c.reference[j].section_deformation});
 
     if (!report_dir.empty()) {
-      const std::string base =
-          (std::filesystem::path(report_dir) / (c.part + "_" + Name(c.support) + "_compare")).string();
       const std::string name = std::filesystem::path(base).filename().string();
       WriteComparisonCsv(c, base + ".csv");
       WriteComparisonMarkdown(c, base + ".md",

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "libemb/common/error.h"
+#include "libemb/common/number_check.h"
 #include "libemb/mbs/constraints/assembly.h"
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/scene/scene.h"
@@ -19,9 +20,13 @@ struct DofCommand {
   std::string scene_file;
   OutputOptions out;
   double rank_tolerance{mbs::kRankTolerance};
+  bool trust_geo{false};
 
   void Run() const {
-    const scene::Scene sc = scene::LoadScene(scene_file);
+    CheckNumber("--rank-tol", rank_tolerance, NumberRange::Open(0.0, 1.0));
+    scene::SceneOptions options;
+    options.trust_geo_scripts = trust_geo;
+    const scene::Scene sc = scene::LoadScene(scene_file, options);
     const mbs::System& sys = sc.system;
     mbs::ConstraintWorkspace ws(sys);
     const mbs::AssemblyResult a = mbs::AssemblePositions(
@@ -77,6 +82,9 @@ void RegisterDofCommand(CLI::App& app) {
   cmd->add_option("--rank-tol", st->rank_tolerance,
                   "Relative singular-value tolerance for the rank of the constraint Jacobian")
       ->capture_default_str();
+  cmd->add_flag("--trust-geo", st->trust_geo,
+                "Give the geometry of `model: beam` parts to gmsh without checking it first: "
+                "only for files you trust (README: Files from others)");
   st->out.Register(*cmd);
   cmd->callback([st] { st->Run(); });
 }

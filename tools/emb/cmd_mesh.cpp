@@ -19,6 +19,7 @@ struct MeshCommand {
   OutputOptions out;
 
   void Run() const {
+    const PreparedOutputs outputs({{part.save_mesh, "--save-mesh"}}, {part.file});
     Stopwatch sw;
     const Mesh mesh = ReadMesh(part.file, part.Meshing(), MakeProgressDisplay(out.quiet));
     const double t_mesh = sw.seconds();

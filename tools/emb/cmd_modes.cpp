@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "libemb/common/error.h"
+#include "libemb/common/number_check.h"
 #include "libemb/common/timer.h"
 #include "libemb/fe/assembly.h"
 #include "libemb/fe/modal_analysis.h"
@@ -42,6 +43,16 @@ struct ModesCommand {
   void Run() const {
     part.material.Validate();
     EMB_THROW_IF(num_modes < 1, "--modes: expected at least 1, got " << num_modes);
+    CheckSolverOptions(tolerance, subspace, max_restarts, shift_hz);
+    // Every output checked and locked before any work.
+    const std::string h5_path = no_output ? "" : OutputPath();
+    const std::string xdmf_path =
+        h5_path.empty() || no_xdmf
+            ? ""
+            : std::filesystem::path(h5_path).replace_extension(".xdmf").string();
+    const PreparedOutputs outputs(
+        {{h5_path, "-o"}, {xdmf_path, "the .xdmf beside -o"}, {part.save_mesh, "--save-mesh"}},
+        {part.file});
     const ProgressFn progress = MakeProgressDisplay(out.quiet);
     PhaseTimes times;
     Stopwatch sw;
@@ -62,14 +73,6 @@ struct ModesCommand {
       const auto dofs = GroupDofs(mesh, g);
       mo.fixed_dofs.insert(mo.fixed_dofs.end(), dofs.begin(), dofs.end());
     }
-    // Check the output location before the expensive part.
-    const std::string h5_path = no_output ? "" : OutputPath();
-    if (!h5_path.empty()) {
-      const auto dir = std::filesystem::path(h5_path).parent_path();
-      std::error_code ec;
-      EMB_THROW_IF(!dir.empty() && !std::filesystem::is_directory(dir, ec),
-                   "-o '" << h5_path << "': directory '" << dir.string() << "' does not exist");
-    }
 
     sw.Restart();
     const SystemMatrices sys = AssembleSystem(mesh, part.material, progress);
@@ -84,14 +87,14 @@ struct ModesCommand {
                 {"mode", "frequency [Hz]", "kind", "backward error"});
     const int m = static_cast<int>(modes.frequencies_hz.size());
     for (int k = 0; k < m; ++k) {
-      const bool rigid = std::abs(modes.eig.eigenvalues[k]) < modes.rigid_threshold;
+      const bool rigid = k < modes.num_rigid_modes;
       table.AddRow({static_cast<long long>(k + 1), modes.frequencies_hz[k],
                     std::string(rigid ? "rigid" : "elastic"), modes.eig.backward_errors[k]});
     }
     Summary s("Modal analysis of " + mesh.source);
     s.Add("mesh", "mesh", mesh.Summary());
     s.Add("dofs", "degrees of freedom", sys.num_dofs());
-    s.Add("fixed_dofs", "fixed unknowns", static_cast<long long>(mo.fixed_dofs.size()));
+    s.Add("fixed_dofs", "fixed unknowns", static_cast<long long>(modes.num_fixed_dofs));
     s.Add("mass_kg", "mass [kg]", sys.mass);
     s.Add("status", "status", std::string(Name(modes.eig.status)));
     if (!modes.eig.message.empty()) s.Add("message", "message", modes.eig.message);
@@ -116,10 +119,7 @@ struct ModesCommand {
     s.Add("seconds_total", "time total [s]", times.Total());
     s.Add("peak_memory_mb", "peak memory [MB]", PeakResidentBytes() / 1e6);
 
-    std::string xdmf_path;
     if (!h5_path.empty() && modes.eig.ok()) {
-      if (!no_xdmf)
-        xdmf_path = (std::filesystem::path(h5_path).replace_extension(".xdmf")).string();
       Provenance prov{CommandLine(), part.file, sys.mesh_hash, part.Describe()};
       WriteModesFile(h5_path, xdmf_path, mesh, part.material, modes, prov);
       s.Add("output", "written", h5_path + (xdmf_path.empty() ? "" : " and " + xdmf_path));

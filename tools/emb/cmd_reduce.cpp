@@ -4,10 +4,12 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "libemb/cms/body_file.h"
 #include "libemb/cms/reduction.h"
 #include "libemb/common/error.h"
+#include "libemb/common/number_check.h"
 #include "libemb/common/timer.h"
 #include "libemb/fe/assembly.h"
 #include "libemb/mesh/gmsh_reader.h"
@@ -23,12 +25,10 @@ struct ReduceCommand {
   OutputOptions out;
   std::vector<std::string> interfaces;
   bool free_free{false};
-  int num_modes{-1};
-  double fmax_hz{0.0};
-  double band_hz{0.0};
+  std::optional<int> num_modes;
+  std::optional<double> fmax_hz, band_hz, check_fmax_hz;
   double band_factor{2.0};
   double shift_hz{-1.0};
-  double check_fmax_hz{0.0};
   double tolerance{1e-10};
   int subspace{0};
   int max_restarts{1000};
@@ -50,19 +50,19 @@ struct ReduceCommand {
 
   ReductionJob Job(const Mesh& mesh) const {
     ReductionJob job;
-    const int selections = (num_modes >= 0) + (fmax_hz > 0) + (band_hz > 0);
+    const int selections = num_modes.has_value() + fmax_hz.has_value() + band_hz.has_value();
     EMB_THROW_IF(selections > 1, "give one of --modes, --fmax, --band, got " << selections);
     ModeSelection& sel = job.reduction.selection;
-    if (fmax_hz > 0) {
+    if (fmax_hz) {
       sel.kind = ModeSelection::Kind::kCutoff;
-      sel.fmax_hz = fmax_hz;
-    } else if (band_hz > 0) {
+      sel.fmax_hz = *fmax_hz;
+    } else if (band_hz) {
       sel.kind = ModeSelection::Kind::kBand;
-      sel.fmax_hz = band_hz;
+      sel.fmax_hz = *band_hz;
       sel.band_factor = band_factor;
     } else {
       sel.kind = ModeSelection::Kind::kCount;
-      sel.count = num_modes >= 0 ? num_modes : ModeSelection().count;
+      sel.count = num_modes ? *num_modes : ModeSelection().count;
     }
     job.reduction.shift_hz = shift_hz;
     job.reduction.solver.tolerance = tolerance;
@@ -72,15 +72,15 @@ struct ReduceCommand {
     job.certificate.reference = !no_reference;
     job.certificate.static_check = !no_static_check;
     if (sel.kind != ModeSelection::Kind::kCount) job.certificate.fmax_hz = sel.fmax_hz;
-    if (check_fmax_hz > 0) job.certificate.fmax_hz = check_fmax_hz;
+    if (check_fmax_hz) job.certificate.fmax_hz = *check_fmax_hz;
     if (!rayleigh.empty()) {
       EMB_THROW_IF(rayleigh.size() != 2, "--rayleigh: expected ALPHA,BETA, got "
                                              << rayleigh.size() << " values");
       job.damping.kind = DampingModel::Kind::kRayleigh;
-      job.damping.alpha = rayleigh[0];
-      job.damping.beta = rayleigh[1];
+      job.damping.alpha = CheckNumber("--rayleigh ALPHA", rayleigh[0], NumberRange::NonNegative("1/s"));
+      job.damping.beta = CheckNumber("--rayleigh BETA", rayleigh[1], NumberRange::NonNegative("s"));
     } else {
-      job.damping.ratio = damping_ratio;
+      job.damping.ratio = CheckNumber("--damping-ratio (the modal damping ratio)", damping_ratio, NumberRange::Closed(0.0, 1.0));
     }
     job.keep_mesh_shapes = !no_mesh_shapes;
     job.geometric_stiffness = !no_geometric_stiffness;
@@ -97,15 +97,21 @@ struct ReduceCommand {
 
   void Run() const {
     part.material.Validate();
-    EMB_THROW_IF(fmax_hz < 0 || band_hz < 0 || check_fmax_hz < 0,
-                 "--fmax/--band/--check-fmax: expected a positive frequency");
+    if (num_modes) CheckInteger("--modes", *num_modes, 0, 1000000);
+    if (fmax_hz) CheckNumber("--fmax", *fmax_hz, NumberRange::Positive("Hz"));
+    if (band_hz) CheckNumber("--band", *band_hz, NumberRange::Positive("Hz"));
+    if (check_fmax_hz) CheckNumber("--check-fmax", *check_fmax_hz, NumberRange::Positive("Hz"));
+    CheckNumber("--band-factor", band_factor, NumberRange::Closed(1.0, 100.0));
+    CheckSolverOptions(tolerance, subspace, max_restarts, shift_hz);
+    // Every output checked and locked before any work.
     const std::string h5_path = OutputPath();
-    {
-      const auto dir = std::filesystem::path(h5_path).parent_path();
-      std::error_code ec;
-      EMB_THROW_IF(!dir.empty() && !std::filesystem::is_directory(dir, ec),
-                   "-o '" << h5_path << "': directory '" << dir.string() << "' does not exist");
-    }
+    const std::string xdmf_path =
+        no_xdmf || no_mesh_shapes
+            ? ""
+            : std::filesystem::path(h5_path).replace_extension(".xdmf").string();
+    const PreparedOutputs outputs(
+        {{h5_path, "-o"}, {xdmf_path, "the .xdmf beside -o"}, {part.save_mesh, "--save-mesh"}},
+        {part.file});
     const ProgressFn progress = MakeProgressDisplay(out.quiet);
     PhaseTimes times;
     Stopwatch sw;
@@ -205,8 +211,7 @@ struct ReduceCommand {
 
     const bool write = ct.passed() || allow_failed_certificate;
     if (write) {
-      const std::string xdmf =
-          no_xdmf || no_mesh_shapes ? "" : std::filesystem::path(h5_path).replace_extension(".xdmf").string();
+      const std::string& xdmf = xdmf_path;
       BodyFileInfo info;
       info.provenance = {CommandLine(), part.file, sys.mesh_hash, part.Describe()};
       info.material = part.material;

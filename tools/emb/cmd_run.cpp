@@ -6,18 +6,23 @@
 // output.csv, relative to the scene file's directory; -o/--csv paths are relative to the
 // working directory; without either, SCENE-stem.h5 in the working directory.
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
 
 #include "libemb/common/error.h"
+#include "libemb/common/number_check.h"
 #include "libemb/common/timer.h"
+#include "libemb/io/output_lock.h"
+#include "libemb/io/output_path.h"
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/results/results_writer.h"
 #include "libemb/scene/scene.h"
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
+#include "tools/emb/interrupt.h"
 #include "tools/emb/progress_display.h"
 
 namespace emb::cli {
@@ -30,28 +35,72 @@ struct RunCommand {
   std::string csv;
   std::string analysis;
   std::string linear_solver;
-  double t_end{-1.0};
-  double rtol{-1.0};
-  double atol{-1.0};
-  double output_step{-1.0};
+  std::optional<double> t_end, rtol, atol, output_step;
   bool no_output{false};
   bool remove_redundant{false};
+  bool trust_geo{false};
+  bool force{false};
 
-  void Run() const {
-    scene::Scene sc = scene::LoadScene(scene_file);
-    mbs::AnalysisSettings& st = sc.analysis;
+  // The analysis settings with the command line's overrides, each checked.
+  void Override(mbs::AnalysisSettings& st) const {
     if (!analysis.empty()) st.type = mbs::ParseAnalysisType(analysis);
-    if (t_end >= 0) st.t_end = t_end;
-    if (rtol > 0) st.ida.rtol = rtol;
-    if (atol > 0) st.ida.atol = atol;
-    if (output_step > 0) st.output_step = output_step;
+    if (t_end) {
+      st.t_end = CheckNumber("--t-end", *t_end, NumberRange::Finite("s"));
+      EMB_THROW_IF(st.t_end < st.t_start, "--t-end: expected >= the scene's t_start = "
+                                              << st.t_start << " s, got " << st.t_end << " s");
+    }
+    if (rtol) st.ida.rtol = CheckNumber("--rtol", *rtol, NumberRange::Open(0.0, 1.0));
+    if (atol) st.ida.atol = CheckNumber("--atol", *atol, NumberRange::Positive());
+    if (output_step) st.output_step = CheckNumber("--dt", *output_step, NumberRange::Positive("s"));
     if (remove_redundant) st.remove_redundant = true;
     if (!linear_solver.empty()) st.ida.linear_solver = ParseLinearSolverKind(linear_solver);
+  }
+
+  // Refuses a run whose output would be unreasonably long or large, unless --force.
+  void CheckOutputSize(const scene::Scene& sc, const mbs::AnalysisSettings& st) const {
+    const bool series = st.type == mbs::AnalysisType::kKinematic ||
+                        st.type == mbs::AnalysisType::kQuasiStatic ||
+                        st.type == mbs::AnalysisType::kDynamic;
+    if (!series || force) return;
+    const double samples = std::floor((st.t_end - st.t_start) / st.output_step) + 2.0;
+    const double bytes = samples * static_cast<double>(scene::ResultsWriter::BytesPerSample(sc.system));
+    EMB_THROW_IF(samples > scene::kMaxOutputSamples,
+                 "the run would write " << samples << " samples (t from " << st.t_start
+                                        << " to " << st.t_end << " s every " << st.output_step
+                                        << " s); the limit is " << scene::kMaxOutputSamples
+                                        << ": use a larger output step (--dt), or --force");
+    EMB_THROW_IF(!no_output && bytes > scene::kMaxOutputBytes,
+                 "the results file would grow to about " << bytes / 1e9 << " GB (" << samples
+                                                          << " samples); the limit is "
+                                                          << scene::kMaxOutputBytes / 1e9
+                                                          << " GB: use a larger output step "
+                                                             "(--dt), or --force");
+  }
+
+  void Run() const {
+    scene::SceneOptions options;
+    options.trust_geo_scripts = trust_geo;
+    scene::Scene sc = scene::LoadScene(scene_file, options);
+    mbs::AnalysisSettings& st = sc.analysis;
+    Override(st);
+    EMB_THROW_IF(t_end && sc.steady_state.enabled() && st.type == mbs::AnalysisType::kDynamic,
+                 "--t-end: the scene runs to steady state (analysis.steady_state); its "
+                 "max_cycles sets the end");
     // Output paths: -o beats the scene; the scene's were made relative to its directory by
-    // LoadScene, the command line's are relative to the working directory.
+    // LoadScene (and confined to it), the command line's are relative to the working
+    // directory.
     std::string h5 = no_output ? "" : (!output.empty() ? output : sc.output.file);
     if (!no_output && h5.empty()) h5 = std::filesystem::path(scene_file).stem().string() + ".h5";
     const std::string csv_path = !csv.empty() ? csv : (no_output ? "" : sc.output.csv);
+    // Every output checked and locked before any work (and before any file is truncated).
+    CheckWritableOutput(h5, output.empty() ? scene_file + ": output.file" : "-o");
+    CheckWritableOutput(csv_path, csv.empty() ? scene_file + ": output.csv" : "--csv");
+    CheckDistinctFiles({h5, csv_path}, sc.inputs);
+    if (!csv_path.empty()) (void)scene::ChannelSet(sc.system, sc.output.channels);  // names
+    CheckOutputSize(sc, st);
+    OutputLock h5_lock, csv_lock;
+    if (!h5.empty()) h5_lock = OutputLock(h5);
+    if (!csv_path.empty()) csv_lock = OutputLock(csv_path);
 
     const ProgressFn progress = MakeProgressDisplay(out.quiet);
     Stopwatch sw;
@@ -64,26 +113,56 @@ struct RunCommand {
     if (!csv_path.empty()) csv_writer.emplace(csv_path, run.system, sc.output.channels);
     std::optional<scene::SteadyStateMonitor> steady;
     if (sc.steady_state.enabled() && st.type == mbs::AnalysisType::kDynamic) {
-      EMB_THROW_IF(t_end >= 0, "--t-end: the scene runs to steady state (analysis.steady_state); "
-                          "its max_cycles sets the end");
       steady.emplace(run.system, sc.steady_state, st.t_start, st.output_step);
       st.t_end = steady->t_end();
     }
     mbs::Sample last;
-    bool at_steady_state = false;
+    bool any = false, at_steady_state = false;
     sw.Restart();
-    const mbs::RunResult r = mbs::RunAnalysis(
-        run, st,
-        [&](const mbs::Sample& s) {
-          if (writer) writer->Write(s);
-          if (csv_writer) csv_writer->Write(s);
-          if (steady) at_steady_state = steady->Add(s);
-          last = s;
-        },
-        progress, [&] { return at_steady_state; });
+    mbs::RunResult r;
+    {
+      // The first SIGINT/SIGTERM stops the run at the next sample (interrupt.h).
+      const GracefulStop graceful;
+      try {
+        r = mbs::RunAnalysis(
+            run, st,
+            [&](const mbs::Sample& s) {
+              if (writer) writer->Write(s);
+              if (csv_writer) csv_writer->Write(s);
+              if (steady) at_steady_state = steady->Add(s);
+              last = s;
+              any = true;
+              if (const int sig = StopSignal())
+                throw Interrupted(sig, std::string("interrupted by ") + SignalName(sig) +
+                                           " at t = " + std::to_string(s.t) + " s" +
+                                           (h5.empty() ? "" : "; the results up to it are in " +
+                                                                  h5 + " (status 'interrupted')"));
+            },
+            progress, [&] { return at_steady_state; });
+      } catch (const std::exception& e) {
+        // Whatever stopped the run, the file says so (if it still can be written).
+        const bool interrupted = dynamic_cast<const Interrupted*>(&e) != nullptr;
+        try {
+          if (writer) {
+            writer->MarkStopped(interrupted ? "interrupted" : "failed",
+                                interrupted ? std::string(SignalName(StopSignal()))
+                                            : std::string(e.what()),
+                                any ? last.t : st.t_start);
+            writer->Close();
+          }
+          if (csv_writer) csv_writer->Close();
+        } catch (const std::exception&) {
+        }
+        throw;
+      }
+    }
     const double t_run = sw.seconds();
-    if (writer) writer->Finish(r);
-    if (writer && steady) writer->RecordSteadyState(steady->report(), sc.steady_state);
+    if (writer) {
+      writer->Finish(r);
+      if (steady) writer->RecordSteadyState(steady->report(), sc.steady_state);
+      writer->Close();
+    }
+    if (csv_writer) csv_writer->Close();
     FinishProgressLine();
     for (const auto& w : run.warnings) std::cerr << "emb: warning: " << w << "\n";
     for (const auto& w : r.warnings) std::cerr << "emb: warning: " << w << "\n";
@@ -180,9 +259,9 @@ void RegisterRunCommand(CLI::App& app) {
   cmd->add_flag("--no-output", st->no_output, "Do not write result files (summary only)");
   cmd->add_option("--analysis", st->analysis,
                   "Override the analysis type: assemble, kinematic, static, quasi-static, dynamic");
-  cmd->add_option("--t-end", st->t_end, "Override the end time [s]");
-  cmd->add_option("--dt", st->output_step, "Override the output step [s]");
-  cmd->add_option("--rtol", st->rtol, "Override IDA's relative tolerance");
+  cmd->add_option("--t-end", st->t_end, "Override the end time [s] (>= t_start)");
+  cmd->add_option("--dt", st->output_step, "Override the output step [s] (> 0)");
+  cmd->add_option("--rtol", st->rtol, "Override IDA's relative tolerance, in (0, 1)");
   cmd->add_option("--atol", st->atol,
                   "Override IDA's absolute tolerance (raised to the model's round-off floor, "
                   "analysis atol_floor_relative, with a warning)");
@@ -190,6 +269,12 @@ void RegisterRunCommand(CLI::App& app) {
                   "IDA's linear solver: auto (KLU from 50 unknowns), dense or klu");
   cmd->add_flag("--remove-redundant", st->remove_redundant,
                 "Remove redundant constraint equations (they are listed) instead of failing");
+  cmd->add_flag("--trust-geo", st->trust_geo,
+                "Give the geometry of `model: beam` parts to gmsh without checking it first: "
+                "only for files you trust (README: Files from others)");
+  cmd->add_flag("--force", st->force,
+                "Run even when the output would exceed the sample or size limit (2 million "
+                "samples, 4 GB)");
   st->out.Register(*cmd);
   cmd->callback([st] { st->Run(); });
 }

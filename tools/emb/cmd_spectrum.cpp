@@ -2,11 +2,13 @@
 // over whole 720-degree cycles (libemb/results/order_spectrum.h), with the crank angle from a
 // body's rotation (--angle BODY [--axis x]) or a constant speed (--rpm N).
 
-#include <fstream>
+#include <sstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "libemb/common/error.h"
+#include "libemb/common/number_check.h"
 #include "libemb/io/atomic_file.h"
 #include "libemb/results/order_spectrum.h"
 #include "libemb/results/results_reader.h"
@@ -18,22 +20,30 @@ namespace {
 
 struct SpectrumCommand {
   std::string file, channel, angle_body, axis{"x"}, csv;
-  double rpm{0.0}, angle_start{0.0};
+  std::optional<double> rpm;
+  double angle_start{0.0};
   scene::OrderSpectrumSettings settings;
   OutputOptions out;
 
   void Run() const {
-    EMB_THROW_IF(angle_body.empty() == (rpm <= 0.0),
+    EMB_THROW_IF(angle_body.empty() == !rpm.has_value(),
                  "emb spectrum: expected exactly one of --angle BODY and --rpm N");
+    if (rpm) CheckNumber("--rpm", *rpm, NumberRange::Positive("rpm"));
+    CheckNumber("--angle-start", angle_start, NumberRange::Finite("deg"));
+    CheckInteger("--samples-per-cycle", settings.samples_per_cycle, 8, 10000000);
+    CheckInteger("--cycles", settings.cycles, 0, 100000000);
+    CheckNumber("--orders", settings.max_order, NumberRange::NonNegative());
+    const PreparedOutputs outputs({{csv, "--csv"}}, {file});
     const scene::ResultsChannel y = scene::ReadResultsChannel(file, channel);
+    if (!y.warning.empty()) std::cerr << "emb: warning: " << y.warning << "\n";
     std::vector<double> angle;
     std::string angle_source;
     if (!angle_body.empty()) {
       angle = scene::ReadBodyRotationAngle(file, angle_body, axis, angle_start).values;
       angle_source = "rotation of '" + angle_body + "' about world " + axis;
     } else {
-      for (double t : y.time) angle.push_back(angle_start + 6.0 * rpm * (t - y.time.front()));
-      angle_source = "constant speed " + std::to_string(rpm) + " rpm";
+      for (double t : y.time) angle.push_back(angle_start + 6.0 * *rpm * (t - y.time.front()));
+      angle_source = "constant speed " + std::to_string(*rpm) + " rpm";
     }
     // A run that searched for its periodic steady state ended with the steady cycle: by
     // default that cycle alone is analysed (the earlier ones hold the start-up).
@@ -69,16 +79,11 @@ struct SpectrumCommand {
     s.Add("samples_per_cycle", "resampling points per cycle", settings.samples_per_cycle);
     s.Add("mean", "mean", sp.mean);
     if (!csv.empty()) {
-      AtomicFile af(csv);
-      {
-        std::ofstream os(af.temp_path());
-        EMB_THROW_IF(!os, "cannot write '" << csv << "'");
-        os.precision(10);
-        os << "order,amplitude,phase_deg\n";
-        for (const auto& l : sp.lines) os << l.order << "," << l.amplitude << "," << l.phase_deg << "\n";
-        EMB_THROW_IF(!os, "cannot write '" << csv << "'");
-      }
-      af.Commit();
+      std::ostringstream os;
+      os.precision(10);
+      os << "order,amplitude,phase_deg\n";
+      for (const auto& l : sp.lines) os << l.order << "," << l.amplitude << "," << l.phase_deg << "\n";
+      WriteTextFileAtomic(csv, os.str());
     }
     if (out.json) {
       PrintJson({{"summary", s.ToJson()}, {"orders", t.ToJson()}});

@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/common/number_check.h"
+#include "libemb/io/output_path.h"
 
 namespace emb::cli {
 namespace {
@@ -28,6 +30,14 @@ void PartOptions::Register(CLI::App& cmd) {
                  "e.g. --set stroke=0.09");
   cmd.add_option("--save-mesh", save_mesh,
                  "Also save the mesh gmsh made (format by extension, e.g. part.msh)");
+  cmd.add_flag("--trust-geo", trust_geo,
+               "Give the part to gmsh without checking it first: only for files you trust. "
+               "By default emb refuses a .geo script (or anything gmsh reads as one) that would "
+               "run a command, write or delete files or stop the process (README: Files from "
+               "others)");
+  cmd.add_flag("--force", force,
+               "Mesh even when the estimated element count for --size exceeds the limit "
+               "(1.5 million)");
   cmd.add_option("--E", material.youngs_modulus, "Young's modulus [Pa]")->capture_default_str();
   cmd.add_option("--nu", material.poisson_ratio, "Poisson's ratio [-]")->capture_default_str();
   cmd.add_option("--rho", material.density, "Density [kg/m^3]")->capture_default_str();
@@ -36,8 +46,10 @@ void PartOptions::Register(CLI::App& cmd) {
 MeshingOptions PartOptions::Meshing() const {
   MeshingOptions m;
   m.order = order;
-  m.size = size;
+  m.size = CheckNumber("--size", size, NumberRange::NonNegative("m"));
   m.save_as = save_mesh;
+  m.trust_scripts = trust_geo;
+  m.force = force;
   for (const auto& kv : set) {
     const auto eq = kv.find('=');
     EMB_THROW_IF(eq == std::string::npos || eq == 0,
@@ -53,6 +65,7 @@ MeshingOptions PartOptions::Meshing() const {
     }
     EMB_THROW_IF(used == 0 || used != value.size(),
                  "--set '" << kv << "': expected a number after '=', got '" << value << "'");
+    CheckNumber("--set " + name, v, NumberRange::Finite());
     m.parameters.emplace_back(name, v);
   }
   return m;
@@ -66,6 +79,25 @@ std::string PartOptions::Describe() const {
   o << "; E=" << material.youngs_modulus << "; nu=" << material.poisson_ratio
     << "; rho=" << material.density;
   return o.str();
+}
+
+PreparedOutputs::PreparedOutputs(const std::vector<std::pair<std::string, std::string>>& outputs,
+                                 const std::vector<std::string>& inputs) {
+  std::vector<std::string> paths;
+  for (const auto& [path, what] : outputs) {
+    CheckWritableOutput(path, what);
+    paths.push_back(path);
+  }
+  CheckDistinctFiles(paths, inputs);
+  for (const auto& path : paths)
+    if (!path.empty()) locks_.emplace_back(path);
+}
+
+void CheckSolverOptions(double tolerance, int subspace, int max_restarts, double shift_hz) {
+  CheckNumber("--tol", tolerance, NumberRange::Open(0.0, 1.0));
+  CheckInteger("--ncv", subspace, 0, 1000000);
+  CheckInteger("--max-restarts", max_restarts, 1, 1000000000);
+  CheckNumber("--shift-hz", shift_hz, NumberRange::Finite("Hz"));
 }
 
 void OutputOptions::Register(CLI::App& cmd) {

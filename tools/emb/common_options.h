@@ -4,9 +4,11 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "libemb/fe/material.h"
+#include "libemb/io/output_lock.h"
 #include "libemb/mesh/gmsh_reader.h"
 #include "tools/emb/table.h"
 
@@ -19,6 +21,8 @@ struct PartOptions {
   std::vector<std::string> set;  ///< "name=value"
   std::string save_mesh;
   IsotropicMaterial material;
+  bool trust_geo{false};  ///< --trust-geo: give the file to gmsh without the audit
+  bool force{false};      ///< --force: mesh beyond the element-count estimate limit
 
   /// Adds FILE, --order, --size, --set, --save-mesh, --E, --nu, --rho to `cmd`.
   void Register(CLI::App& cmd);
@@ -27,6 +31,25 @@ struct PartOptions {
   /// "order=2; size=0.005; stroke=0.09; E=2.1e11; ..." for provenance records.
   std::string Describe() const;
 };
+
+/// The outputs of a command, checked before any work (the directory exists and is writable,
+/// no output is an input or another output, none is being written by another emb) and
+/// locked while the object lives. Empty paths are skipped.
+class PreparedOutputs {
+ public:
+  /// `outputs`: {path, what names it in messages ("-o", "--save-mesh")}.
+  /// @throws InputError for the first output that cannot be written.
+  PreparedOutputs(const std::vector<std::pair<std::string, std::string>>& outputs,
+                  const std::vector<std::string>& inputs);
+
+ private:
+  std::vector<OutputLock> locks_;
+};
+
+/// Checks the eigen-solver options shared by modes and reduce (exit 1, not a numerical
+/// failure, for a bad value): --tol in (0, 1), --ncv >= 0, --max-restarts >= 1, --shift-hz
+/// finite.
+void CheckSolverOptions(double tolerance, int subspace, int max_restarts, double shift_hz);
 
 /// Output options every subcommand has.
 struct OutputOptions {

@@ -13,18 +13,43 @@
 // Inputs: a gmsh geometry (.geo with parameters, .step, .brep) or a mesh (.msh, .unv, .bdf).
 // Outputs: tables on stdout (or JSON with --json), progress on stderr, HDF5 result files
 // written atomically with an XDMF companion for ParaView.
-// Exit codes: 0 ok, 1 bad input, 2 usage, 3 numerical failure, 4 internal error.
+// Exit codes: 0 ok, 1 bad input, 2 usage, 3 numerical failure, 4 internal error; stopped by
+// SIGINT/SIGTERM: the signal (the shell shows 130/143).
 
 #include <CLI/CLI.hpp>
+#include <cstring>
 #include <iostream>
+#include <new>
+#include <stdexcept>
 
 #include "libemb/common/error.h"
+#include "libemb/io/hdf5_file.h"
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
+#include "tools/emb/interrupt.h"
+#include "tools/emb/no_exec.h"
 #include "tools/emb/progress_display.h"
+
+namespace {
+// A name for a standard exception that says what kind of failure it was.
+const char* ExceptionKind(const std::exception& e) {
+  if (dynamic_cast<const std::invalid_argument*>(&e)) return "invalid argument";
+  if (dynamic_cast<const std::out_of_range*>(&e)) return "index out of range";
+  if (dynamic_cast<const std::logic_error*>(&e)) return "logic error";
+  if (dynamic_cast<const std::runtime_error*>(&e)) return "run-time error";
+  return "exception";
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace emb::cli;
+  emb::DisableHdf5ExitCleanup();
+  InstallInterruptHandlers();
+  // emb never starts programs; forbid it unless the user trusts a geometry script (whose
+  // SystemCall would then run, as asked).
+  bool trust_geo = false;
+  for (int i = 1; i < argc; ++i) trust_geo |= std::strcmp(argv[i], "--trust-geo") == 0;
+  if (!trust_geo) ForbidProgramExecution();
   SetCommandLine(argc, argv);
   CLI::App app{"emb: elasto-multibody dynamics of engines and drivelines with component mode "
                "synthesis"};
@@ -65,9 +90,35 @@ int main(int argc, char** argv) {
     FinishProgressLine();
     std::cerr << "emb: numerical failure: " << e.what() << "\n";
     return kExitNumerical;
-  } catch (const std::exception& e) {
+  } catch (const Interrupted& e) {
+    FinishProgressLine();
+    std::cerr << "emb: " << e.what() << "\n";
+    EndBySignal(e.signal());
+  } catch (const std::bad_alloc&) {
+    FinishProgressLine();
+    std::cerr << "emb: error: not enough memory for this problem; make it smaller (a coarser "
+                 "mesh, fewer modes or output samples)\n";
+    return kExitInput;
+  } catch (const std::length_error&) {
+    FinishProgressLine();
+    std::cerr << "emb: error: the problem is too large to hold in memory; make it smaller (a "
+                 "coarser mesh, fewer modes or output samples)\n";
+    return kExitInput;
+  } catch (const emb::InternalError& e) {
     FinishProgressLine();
     std::cerr << "emb: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    // A standard-library failure the code did not expect (its text, e.g. "stod" or
+    // "vector::_M_range_check", means nothing to a user): an emb bug.
+    FinishProgressLine();
+    std::cerr << "emb: internal error: an unexpected failure (" << ExceptionKind(e)
+              << ") in emb " << EMB_VERSION << "; please report it with the command line\n";
+    return kExitInternal;
+  } catch (...) {
+    FinishProgressLine();
+    std::cerr << "emb: internal error: an unexpected failure in emb " << EMB_VERSION
+              << "; please report it with the command line\n";
     return kExitInternal;
   }
   return 0;

@@ -17,6 +17,7 @@ import sys
 
 import h5py
 import numpy as np
+from results_status import warn_if_unfinished  # tools/plots/results_status.py
 
 TOPOLOGY = {"Tet4": ("Tetrahedron", 4), "Tet10": ("Tet_10", 10),
             "Hex8": ("Hexahedron", 8), "Hex20": ("Hex_20", 20),
@@ -37,6 +38,7 @@ def main():
     p.add_argument("-o", "--output", required=True, help="XDMF file to write")
     a = p.parse_args()
     with h5py.File(a.results, "r") as r:
+        warn_if_unfinished(r, a.results)
         if "model/flexible_bodies" not in r:
             sys.exit(f"{a.results}: no flexible bodies in this run")
         flex = names(r["model/flexible_bodies"])

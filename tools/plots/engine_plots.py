@@ -22,6 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy.spatial.transform import Rotation  # noqa: E402
+from results_status import warn_if_unfinished  # noqa: E402  (tools/plots/results_status.py)
 
 ENERGY = ["kinetic", "gravity", "elastic", "total", "dissipated"]
 
@@ -49,10 +50,23 @@ def channel(f, name):
     owner, _, comp = name.rpartition(".")
     if name.startswith("energy."):
         return f["energy"][:, ENERGY.index(name[7:])]
+    sensors = names(f, "model/sensors") if "model/sensors" in f else []
+    if owner in sensors:  # <sensor>.dx .. .rz
+        k = sensors.index(owner)
+        return f["sensors"][:, 6 * k + ["dx", "dy", "dz", "rx", "ry", "rz"].index(comp)]
     owner, _, quantity = owner.rpartition(".")
     c = "xyz".index(comp)
+    ports = names(f, "model/reaction_ports")
+    forces = names(f, "model/force_elements") if "model/force_elements" in f else []
+    if quantity in ("F", "T") and owner not in ports and owner in forces:  # /forces/load
+        k = forces.index(owner)
+        values = f["forces/load"][:, 6 * k + c + (3 if quantity == "T" else 0)]
+        if np.isnan(values).any():
+            raise SystemExit(f"engine_plots: channel '{name}': force element '{owner}' reports "
+                             "no load (F/T channels exist for bushings and journal bearings)")
+        return values
     if quantity in ("F", "T"):
-        p = names(f, "model/reaction_ports").index(owner)
+        p = ports.index(owner)
         key = "reactions/force" if quantity == "F" else "reactions/torque"
         return f[key][:].reshape(len(f["time"]), -1)[:, 3 * p + c]
     b = names(f, "model/bodies").index(owner)
@@ -91,6 +105,7 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     written = []
     with h5py.File(args.results, "r") as f:
+        warn_if_unfinished(f, args.results)
         traces = [c for c in args.traces.split(",") if c]
         if traces:
             x = f["time"][:] if args.time else crank_angle(f, args.angle, args.axis)

@@ -335,12 +335,13 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
                "initial_step_fraction >= 0, got "
                    << settings.atol_floor_relative << ", " << settings.multiplier_atol_relative
                    << " and " << settings.initial_step_fraction);
-  const double atol_floor = settings.atol_floor_relative * std::max(1.0, ModelSize(sys, run.q0));
+  const double model_size = ModelSize(sys, run.q0);
+  const double atol_floor = settings.atol_floor_relative * std::max(1.0, model_size);
   if (options.atol < atol_floor) {
     std::ostringstream o;
     o << "atol " << options.atol << " is below the round-off floor of this model and was "
-      << "raised to " << atol_floor << " (atol_floor_relative " << settings.atol_floor_relative
-      << " x the model size)";
+      << "raised to " << atol_floor << " = atol_floor_relative x max(1 m, model size "
+      << model_size << " m)";
     r.warnings.push_back(o.str());
     options.atol = atol_floor;
   }
@@ -380,10 +381,15 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
       r.status = RunStatus::kIntegratorFailure;
       std::ostringstream o;
       o << (settings.integrator == DynamicIntegrator::kIda ? "IDA " : "generalized-alpha ")
-        << Name(rep.status) << " at t = " << rep.t << " s with step size "
+        << Name(rep.status) << " at t = " << rep.t << " s after a last accepted step size of "
         << rep.last_step << " s; largest weighted local error " << rep.worst_weighted_error
         << " in " << rep.worst_component_name;
+      // IDA's own message quotes the step it last tried ("h = ..."), not the accepted one.
       if (!rep.message.empty()) o << " (" << rep.message << ")";
+      if (rep.status == IntegratorStatus::kTooMuchWork)
+        o << "; analysis max_steps = " << options.max_num_steps
+          << " steps between two output times were not enough: raise max_steps or look for "
+             "what makes the steps short";
       // The joint equation that is furthest from closing at the last accepted state.
       const Eigen::VectorXd yq = ida.y().segment(G.q(), G.nq());
       const ConstraintEval ce =

@@ -55,6 +55,8 @@ class ForceElement {
   bool CalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const {
     return DoCalcLoad(ctx, load);
   }
+  /// True if CalcLoad() reports a load (then the results have F/T channels for it).
+  bool reports_load() const { return DoReportsLoad(); }
 
  protected:
   virtual void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const = 0;
@@ -66,6 +68,7 @@ class ForceElement {
   virtual bool DoCalcLoad(const ForceContext&, Eigen::Matrix<double, 6, 1>*) const {
     return false;
   }
+  virtual bool DoReportsLoad() const { return false; }
 
  private:
   std::string name_;

@@ -46,6 +46,7 @@ class Bushing : public ForceElement {
   double DoCalcDissipatedPower(const ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override { return {i_, j_}; }
   bool DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const override;
+  bool DoReportsLoad() const override { return true; }
 
  private:
   struct State {

@@ -184,12 +184,16 @@ RunResult RunPendulum(double mass, double rtol, double atol, double initial_step
 }
 
 TEST(DynamicTolerances, AtolBelowTheModelsFloorIsRaisedWithAWarning) {
-  // The pendulum is 1 m long: floor = 1e-13 x max(1, 1 m).
+  // The pendulum is 1 m long, its largest position or marker offset 0.5 m:
+  // floor = 1e-13 x max(1 m, 0.5 m).
   const RunResult r = RunPendulum(kMass, 1e-8, 1e-16, 1e-3);
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_DOUBLE_EQ(r.atol, 1e-13);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_NE(r.warnings[0].find("raised to 1e-13"), std::string::npos) << r.warnings[0];
+  // The floor is explained by the model size, not by quoting 1e-13 a second time (issue 14).
+  EXPECT_NE(r.warnings[0].find("model size 0.5 m"), std::string::npos) << r.warnings[0];
+  EXPECT_EQ(r.warnings[0].find("1e-13"), r.warnings[0].rfind("1e-13")) << r.warnings[0];
   EXPECT_TRUE(RunPendulum(kMass, 1e-8, 1e-10, 1e-3).warnings.empty());
 }
 

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Runs emb's libFuzzer targets (tests/fuzz) for a while each, from their seeds (issue 14):
+#   tools/fuzz.sh [BUILD_DIR] [SECONDS_PER_TARGET]     defaults: build-asan, 60
+# BUILD_DIR is a clang build with -DEMB_BUILD_FUZZERS=ON -DEMB_SANITIZE=ON (tools/setup.sh
+# test makes build-asan/). Each target mutates a copy of its seeds (tests/fuzz/make_seeds.py)
+# under ASan + UBSan; a crash, sanitizer report, leak, timeout (10 s per input) or an input
+# that needs more than 2 GB is a finding: the input is kept in BUILD_DIR/fuzz/findings/ and
+# the script exits 1. Add a finding to tests/fuzz/seeds/<target>/ once fixed: every seed runs
+# as a ctest (fuzz_<target>_seeds) in the sanitizer build.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${1:-$root/build-asan}
+seconds=${2:-60}
+work="$build/fuzz"
+rm -rf "$work"
+mkdir -p "$work/findings"
+/usr/bin/python3 "$root/tests/fuzz/make_seeds.py" --emb "$build/tools/emb/emb" --out "$work/seeds"
+status=0
+for target in geo_script scene body_file results_file mesh; do
+  exe="$build/tests/fuzz/fuzz_$target"
+  mkdir -p "$work/corpus/$target" "$work/findings/$target"
+  cp "$work/seeds/$target"/* "$work/corpus/$target/"
+  echo "fuzz_$target: ${seconds} s"
+  # Inputs are written to a per-process directory under TMPDIR (fuzz_support.h).
+  if ! (cd "$work" && TMPDIR="$work" "$exe" -max_total_time="$seconds" -timeout=10 \
+          -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/findings/$target/" \
+          "$work/corpus/$target" > "$work/$target.log" 2>&1); then
+    echo "fuzz_$target: FINDING (see $work/$target.log and $work/findings/$target/)"
+    tail -40 "$work/$target.log"
+    status=1
+  else
+    grep -E "stat::number_of_executed_units|cov:" "$work/$target.log" | tail -2
+  fi
+done
+exit $status
