@@ -45,7 +45,7 @@ InertiaInvariants CalcInertiaInvariants(const Eigen::Matrix3Xd& nodes, const Spa
   for (int k = 0; k < 3; ++k)
     for (int l = k; l < 3; ++l) {
       inv.Sbar[3 * k + l] = F.middleCols(4 + k * ne, ne).transpose() * mF.middleCols(4 + l * ne, ne);
-      inv.Sbar[3 * l + k] = inv.Sbar[3 * k + l].transpose();
+      if (l != k) inv.Sbar[3 * l + k] = inv.Sbar[3 * k + l].transpose();  // (no self-aliasing)
     }
   return inv;
 }
