@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "libemb/common/error.h"
@@ -151,6 +153,9 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
                                                               << options.atol);
   EMB_THROW_IF(options.max_order < 1 || options.max_order > 5,
                "IDA: expected max order 1..5, got " << options.max_order);
+  EMB_THROW_IF(!(options.newton_convergence_factor > 0.0 && options.newton_convergence_factor <= 1.0),
+               "IDA: expected a Newton convergence factor in (0, 1], got "
+                   << options.newton_convergence_factor);
   Impl& m = *impl_;
   m.problem = &problem;
   CheckSetup(SUNContext_Create(nullptr, &m.ctx), "SUNContext_Create");
@@ -188,6 +193,8 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
              "IDASetSuppressAlg");
   CheckSetup(IDASetMaxNumSteps(m.mem, options.max_num_steps), "IDASetMaxNumSteps");
   CheckSetup(IDASetMaxOrd(m.mem, options.max_order), "IDASetMaxOrd");
+  CheckSetup(IDASetNonlinConvCoef(m.mem, options.newton_convergence_factor),
+             "IDASetNonlinConvCoef");
   if (options.initial_step > 0.0)
     CheckSetup(IDASetInitStep(m.mem, options.initial_step), "IDASetInitStep");
   if (options.max_step > 0.0) CheckSetup(IDASetMaxStep(m.mem, options.max_step), "IDASetMaxStep");
@@ -331,6 +338,14 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
 
 void IdaSolver::RecordStepLimiter() {
   Impl& m = *impl_;
+  if (std::getenv("EMB_EXP_STEPLOG")) {  // EXPERIMENT
+    long etf = 0, nje = 0; realtype h = 0, tc = 0; int k = 0;
+    IDAGetNumErrTestFails(m.mem, &etf); IDAGetNumJacEvals(m.mem, &nje); IDAGetLastStep(m.mem, &h); IDAGetCurrentTime(m.mem, &tc); IDAGetLastOrder(m.mem, &k);
+    N_Vector ew = m.scratch; N_Vector ee = N_VClone(m.scratch);
+    IDAGetErrWeights(m.mem, ew); IDAGetEstLocalErrors(m.mem, ee);
+    Eigen::VectorXd wv = View(ee).cwiseAbs().cwiseProduct(View(ew)).cwiseProduct(View(m.id)); Eigen::Index wi; double wm = wv.maxCoeff(&wi); N_VDestroy(ee);
+    std::fprintf(stderr, "STEP %.9f %.3e %d %ld %ld %s %g\n", tc, h, k, etf, nje, problem_.ComponentName(wi).c_str(), wm);
+  }
   N_Vector w = m.scratch;
   if (m.error == nullptr) m.error = CheckPtr(N_VClone(m.scratch), "N_VClone");
   if (IDAGetErrWeights(m.mem, w) < 0 || IDAGetEstLocalErrors(m.mem, m.error) < 0) return;
