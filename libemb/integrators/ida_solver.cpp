@@ -9,8 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 #include "libemb/common/error.h"
@@ -338,14 +336,6 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
 
 void IdaSolver::RecordStepLimiter() {
   Impl& m = *impl_;
-  if (std::getenv("EMB_EXP_STEPLOG")) {  // EXPERIMENT
-    long etf = 0, nje = 0; realtype h = 0, tc = 0; int k = 0;
-    IDAGetNumErrTestFails(m.mem, &etf); IDAGetNumJacEvals(m.mem, &nje); IDAGetLastStep(m.mem, &h); IDAGetCurrentTime(m.mem, &tc); IDAGetLastOrder(m.mem, &k);
-    N_Vector ew = m.scratch; N_Vector ee = N_VClone(m.scratch);
-    IDAGetErrWeights(m.mem, ew); IDAGetEstLocalErrors(m.mem, ee);
-    Eigen::VectorXd wv = View(ee).cwiseAbs().cwiseProduct(View(ew)).cwiseProduct(View(m.id)); Eigen::Index wi; double wm = wv.maxCoeff(&wi); N_VDestroy(ee);
-    std::fprintf(stderr, "STEP %.9f %.3e %d %ld %ld %s %g\n", tc, h, k, etf, nje, problem_.ComponentName(wi).c_str(), wm);
-  }
   N_Vector w = m.scratch;
   if (m.error == nullptr) m.error = CheckPtr(N_VClone(m.scratch), "N_VClone");
   if (IDAGetErrWeights(m.mem, w) < 0 || IDAGetEstLocalErrors(m.mem, m.error) < 0) return;
