@@ -12,6 +12,8 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-$root/build-asan}
 seconds=${2:-60}
 work="$build/fuzz"
+# LeakSanitizer: leaks inside libgmsh are not emb's (tests/sanitize/lsan_suppressions.txt).
+export LSAN_OPTIONS="suppressions=$root/tests/sanitize/lsan_suppressions.txt:print_suppressions=0"
 rm -rf "$work"
 mkdir -p "$work/findings"
 /usr/bin/python3 "$root/tests/fuzz/make_seeds.py" --emb "$build/tools/emb/emb" --out "$work/seeds"

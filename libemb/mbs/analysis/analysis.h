@@ -79,14 +79,20 @@ struct AnalysisSettings {
   /// solution) are not error-tested, but IDA's Newton test weighs them with
   /// 1/(rtol |y| + atol). Index-2 multipliers are only determined to O(eps/h) of the
   /// model's forces, so too tight an atol on them makes the corrector fail at t0 for every
-  /// h. Their atol follows the force scale of the model:
-  ///   multiplier_atol_relative * F_ref,  F_ref = max(1, max |lambda(t0)|, max |f(t0)|)
-  /// (N or N m: the largest reaction or applied/gravity load at the start), so that the
-  /// reactions converge to 1e-4 of the model's own forces, whatever its size. Measured over
-  /// rtol 1e-3 .. 1e-10 on the slider-crank (F_ref = 543 N), engine (c) and double-pendulum
-  /// scenes: factors 1e-5 .. 1e-3 all run, with no trend in steps or error.
-  double multiplier_atol_relative{1e-4};
-  /// If > 0, the multipliers' atol as given [N, N m], instead of the relative rule.
+  /// h; too loose a one lets the Newton iteration stop with multipliers (and so
+  /// accelerations) less accurate than rtol asks for, which costs digits and steps at tight
+  /// rtol. Their atol follows rtol and the force scale of the model:
+  ///   multiplier_atol_rtol_factor * rtol * F_ref,
+  ///   F_ref = max(1, max |lambda(t0)|, max |f(t0)|)
+  /// (N or N m: the largest reaction or applied/gravity load at the start). The factor 100
+  /// keeps the 1e-4 F_ref of earlier versions at the default rtol 1e-6; measured on the
+  /// work-precision benchmark (benchmarks/README.md, "multiplier atol"): at rtol 1e-7..1e-10
+  /// it gains accuracy over the fixed fraction at equal or fewer steps, and it runs down to
+  /// rtol 1e-10 (atol 1e-8 F_ref, far above eps/h).
+  double multiplier_atol_rtol_factor{100.0};
+  /// If > 0, the earlier fixed rule instead: multiplier_atol_relative * F_ref, whatever rtol.
+  double multiplier_atol_relative{0.0};
+  /// If > 0, the multipliers' atol as given [N, N m], instead of either rule.
   double multiplier_atol{0.0};
   /// Flexible bodies: the absolute tolerance of modal velocity j is atol * max(1, w_j)
   /// (w_j = 2 pi f_j of the kept mode, rad/s) instead of atol, so that the error test weighs
@@ -108,6 +114,12 @@ struct AnalysisSettings {
   AssemblyOptions assembly;
   /// Remove redundant equations (and report them) instead of failing.
   bool remove_redundant{false};
+  /// A planar mechanism: the unit normal n_W of its plane (zero: not planar). Redundant
+  /// equations that act only out of that plane (constraints/out_of_plane.h), which a
+  /// planar closed loop always has in 3-D, are removed without a warning (they are still
+  /// listed in PreparedRun::planar_removed and the results file); a redundant equation
+  /// with an in-plane part is an error as without it, unless remove_redundant.
+  Eigen::Vector3d plane_normal{Eigen::Vector3d::Zero()};
   /// Relative kinetic-energy-norm change of the initial velocities above which the
   /// projection is reported as a warning (a user's v0 that was already consistent changes
   /// only by round-off).
@@ -128,11 +140,14 @@ struct PreparedRun {
   Eigen::VectorXd q0, v0;
   std::vector<std::string> warnings;
   std::string start_note;  ///< the quasi-static elastic start, when asked for
+  /// The out-of-plane equations a planar model dropped (AnalysisSettings::plane_normal).
+  std::vector<std::string> planar_removed;
 };
 
 /// Assembles and checks the model. @throws InputError if the assembly does not close
 /// (residual and joint named), or if redundant equations remain and
-/// settings.remove_redundant is false (all of them named).
+/// settings.remove_redundant is false (all of them named; with a plane_normal, those with
+/// an in-plane part).
 PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings);
 
 /// One output sample.
@@ -147,6 +162,10 @@ struct Sample {
   Eigen::MatrixXd force_loads;
   /// Per sensor (System::sensors) [R_JW (p_I - p_J), rotation vector of R_J^T R_I].
   Eigen::MatrixXd sensors;
+  /// Per constraint element [angle rad, angle rate rad/s, travel m, travel rate m/s]
+  /// (joint_coordinates.h), NaN where the element has no such coordinate; RunAnalysis
+  /// unwraps the angles from sample to sample.
+  Eigen::MatrixXd joints;
   Energies energies;
   double position_residual{0.0};  ///< max |Phi|
   double velocity_residual{0.0};  ///< max |C v + Phi_t|

@@ -7,6 +7,7 @@
 #include <Eigen/Sparse>
 
 #include "libemb/common/error.h"
+#include "libemb/mbs/core/expression_function.h"
 
 namespace emb::mbs {
 
@@ -80,9 +81,20 @@ TimeFunction TimeFunction::PeriodicSpline(std::vector<double> x, std::vector<dou
   return f;
 }
 
+TimeFunction TimeFunction::Expression(const std::string& text,
+                                      const std::map<std::string, double>& constants,
+                                      double scale) {
+  TimeFunction f;
+  f.kind_ = Kind::kExpression;
+  f.expression_ = std::make_shared<const ExpressionFunction>(text, constants, scale);
+  return f;
+}
+
 FunctionValue TimeFunction::Eval(double x) const {
   FunctionValue v;
   switch (kind_) {
+    case Kind::kExpression:
+      return expression_->Eval(x);
     case Kind::kPolynomial: {
       // Horner for f, f', f''.
       for (std::size_t k = c_.size(); k-- > 0;) {
@@ -135,6 +147,10 @@ FunctionValue TimeFunction::Eval(double x) const {
 std::string TimeFunction::Describe() const {
   std::ostringstream o;
   o.precision(10);
+  if (kind_ == Kind::kExpression) {
+    o << "expression[" << expression_->text() << "]";
+    return o.str();
+  }
   if (kind_ == Kind::kTable || kind_ == Kind::kSpline) {
     o << (kind_ == Kind::kSpline ? "periodic spline[" : "table[") << x_.size() << " points"
       << (periodic_ && kind_ == Kind::kTable ? ", periodic" : "") << "]";

@@ -1,0 +1,137 @@
+// Expressions of t (muParser) as motion and load functions: values, and the derivatives that
+// the velocity- and acceleration-level constraints use (Richardson-extrapolated differences),
+// against closed forms; a second route (TimeFunction::Polynomial's Horner derivatives); the
+// guard against a function faster than its scale; and every malformed text refused.
+
+#include "libemb/mbs/core/expression_function.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <string>
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/core/time_function.h"
+
+namespace emb::mbs {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The smooth spin-up of issue 14 to Omega over T seconds, then constant speed (C3 at T):
+//   theta = Omega (t^2/2 + (T/2pi)^2 (cos(2 pi t/T) - 1)) / T           (t < T)
+//         = Omega (t - T/2)                                             (t >= T)
+//   theta'  = Omega (t - (T/2pi) sin(2 pi t/T)) / T,  theta'' = Omega (1 - cos(2 pi t/T)) / T.
+constexpr double kOmega = 100 * kPi;  // [rad/s] 3000 rpm
+constexpr double kRampTime = 0.1;     // [s]
+const char* kSpinUp =
+    "t < T ? Omega*(t^2/2 + (T/(2*pi))^2*(cos(2*pi*t/T) - 1))/T : Omega*(t - T/2)";
+
+FunctionValue SpinUp(double t) {
+  const double T = kRampTime, W = kOmega;
+  if (t >= T) return {W * (t - T / 2), W, 0.0};
+  const double a = 2 * kPi * t / T, c = T / (2 * kPi);
+  return {W * (t * t / 2 + c * c * (std::cos(a) - 1)) / T, W * (t - c * std::sin(a)) / T,
+          W * (1 - std::cos(a)) / T};
+}
+
+TEST(ExpressionFunction, SpinUpDerivativesMatchTheClosedForm) {
+  const TimeFunction f =
+      TimeFunction::Expression(kSpinUp, {{"Omega", kOmega}, {"T", kRampTime}});
+  // Relative to the scales of the motion: Omega T (angle), Omega (speed), Omega / T
+  // (acceleration). Ridders' extrapolation delivers ~1e-11 here; 1e-9 leaves margin and is
+  // far below any IDA tolerance.
+  constexpr double kRelative = 1e-9;
+  double worst1 = 0.0, worst2 = 0.0;
+  for (int k = 0; k <= 400; ++k) {
+    const double t = 2 * kRampTime * k / 400.0;  // through the ramp, its end and the hold
+    const FunctionValue got = f.Eval(t), want = SpinUp(t);
+    EXPECT_NEAR(got.f, want.f, 1e-13 * kOmega * kRampTime * 10) << "t = " << t;
+    worst1 = std::max(worst1, std::abs(got.df - want.df) / kOmega);
+    worst2 = std::max(worst2, std::abs(got.d2f - want.d2f) / (kOmega / kRampTime));
+  }
+  EXPECT_LT(worst1, kRelative);
+  EXPECT_LT(worst2, kRelative);
+  std::printf("spin-up: worst relative error of f' %.2e, of f'' %.2e\n", worst1, worst2);
+}
+
+TEST(ExpressionFunction, PolynomialAgreesWithHorner) {
+  // The same cubic by the two routes; far from the origin too (t = 50: x + h rounds).
+  const TimeFunction horner = TimeFunction::Polynomial({1.0, -2.0, 0.5, 3.0});
+  const TimeFunction parsed = TimeFunction::Expression("1 - 2*t + 0.5*t^2 + 3*t^3");
+  for (double t : {-1.3, 0.0, 0.7, 5.0, 50.0}) {
+    const FunctionValue a = horner.Eval(t), b = parsed.Eval(t);
+    EXPECT_NEAR(b.f, a.f, 1e-14 * std::max(1.0, std::abs(a.f)));
+    EXPECT_NEAR(b.df, a.df, 1e-9 * std::max(1.0, std::abs(a.df))) << "t = " << t;
+    EXPECT_NEAR(b.d2f, a.d2f, 1e-9 * std::max(1.0, std::abs(a.d2f))) << "t = " << t;
+  }
+}
+
+TEST(ExpressionFunction, FastFunctionNeedsItsScale) {
+  // 1 kHz: with the scale set to 0.1 ms the derivatives are right; with the default 1 ms the
+  // first difference step is one whole period (f(t +- h) = f(t)), which the error estimate
+  // catches instead of returning f' = 0.
+  const double w = 2 * kPi * 1000;
+  const TimeFunction fine = TimeFunction::Expression("sin(w*t)", {{"w", w}}, 1e-4);
+  for (double t : {0.0, 1.234e-4, 0.01}) {
+    const FunctionValue v = fine.Eval(t);
+    EXPECT_NEAR(v.df, w * std::cos(w * t), 1e-9 * w);
+    EXPECT_NEAR(v.d2f, -w * w * std::sin(w * t), 1e-9 * w * w);
+  }
+  const TimeFunction coarse = TimeFunction::Expression("sin(w*t)", {{"w", w}});
+  EXPECT_THROW(coarse.Eval(1.234e-4), NumericalError);
+}
+
+TEST(ExpressionFunction, KinkIsNotDifferentiable) {
+  // |t - 1| has no derivative at 1: an error, not a made-up slope.
+  const TimeFunction f = TimeFunction::Expression("abs(t - 1)");
+  EXPECT_NEAR(f.Eval(2.0).df, 1.0, 1e-12);
+  EXPECT_THROW(f.Eval(1.0), NumericalError);
+}
+
+TEST(ExpressionFunction, NonFiniteValueIsANumericalError) {
+  const TimeFunction f = TimeFunction::Expression("sqrt(t)");
+  EXPECT_THROW(f.Eval(-1.0), NumericalError);
+}
+
+TEST(ExpressionFunction, CopiesShareOneParser) {
+  const TimeFunction f = TimeFunction::Expression("2*t");
+  const TimeFunction g = f;  // TimeFunction is a value; the parsed formula is shared
+  EXPECT_DOUBLE_EQ(g(3.0), 6.0);
+  EXPECT_DOUBLE_EQ(f(4.0), 8.0);
+  EXPECT_EQ(g.Describe(), "expression[2*t]");
+}
+
+void ExpectRefused(const std::string& text, const std::string& word,
+                   std::map<std::string, double> constants = {}, double scale = 1e-3) {
+  try {
+    TimeFunction::Expression(text, constants, scale);
+    ADD_FAILURE() << "accepted: " << text;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << e.what();
+  }
+}
+
+TEST(ExpressionFunction, MalformedTextIsRefused) {
+  ExpectRefused("sin(t", "expression 'sin(t'");
+  ExpectRefused("2*t +", "expression");
+  ExpectRefused("omega*t", "omega");  // unknown name
+  ExpectRefused("t = 3", "assigns");
+  ExpectRefused("t, 2*t", "one formula");
+  ExpectRefused("", "empty");
+  ExpectRefused("  \n", "empty");
+  ExpectRefused(std::string(5000, '1'), "at most");
+  ExpectRefused("a*t", "finite", {{"a", std::nan("")}});
+  ExpectRefused("t", "taken", {{"pi", 3.0}});
+  ExpectRefused("t", "name", {{"2a", 3.0}});
+  ExpectRefused("t", "scale", {}, 0.0);
+  ExpectRefused("t", "scale", {}, std::nan(""));
+  // Comparisons are no assignments.
+  EXPECT_DOUBLE_EQ(TimeFunction::Expression("t <= 1 ? 1 : (t == 2 ? 5 : 0)")(2.0), 5.0);
+}
+
+}  // namespace
+}  // namespace emb::mbs
