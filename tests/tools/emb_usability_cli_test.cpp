@@ -77,7 +77,7 @@ TEST_F(EmbUsabilityCli, PlanarFourBarRunsWithoutWarnings) {
 
 // A disc spun up by an expression (the smooth ramp of issue 14) to 3000 rpm over 0.04 s,
 // then held: four cycles of 720 degrees at speed for the spectrum.
-const char* kDisc = R"(name: disc
+const char* kDisc = R"yaml(name: disc
 bodies:
   - {name: disc, mass: 2.0, inertia: [0.01, 0.005, 0.005]}
 markers:
@@ -93,7 +93,7 @@ motions:
       constants: {W: 314.1592653589793, T: 0.04}
 analysis: {type: kinematic, t_end: 0.2, output_step: 2.0e-4}
 output: {csv: disc.csv, channels: [bearing.angle, bearing.angle_rate, disc.omega.x]}
-)";
+)yaml";
 
 TEST_F(EmbUsabilityCli, JointCoordinatesInCsvHdf5AndSpectrum) {
   std::ofstream(dir_ / "disc.yaml") << kDisc;

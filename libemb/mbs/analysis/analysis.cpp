@@ -265,8 +265,10 @@ RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
 namespace internal {
 
 IntegratorMessage SplitIntegratorMessage(const std::string& message) {
-  // "IDA/IDASolve: At t = 0.01 and h = 1e-12, the corrector ..." (SUNDIALS 6 wording).
-  static const std::regex kPrefix(R"(^(.*?)At t = [^,]*?(?: and h = ([-+0-9.eE]+))?, (.*)$)");
+  // "IDA/IDASolve: At t = 0.01 and h = 1e-12, the corrector ..." (SUNDIALS 6 wording; its
+  // too-much-work message has a second comma: "At t = 0.25, , mxstep steps ...").
+  static const std::regex kPrefix(
+      R"(^(.*?)At t = [^,]*?(?: and h = ([-+0-9.eE]+))?,(?: ,)? (.*)$)");
   IntegratorMessage m;
   std::smatch match;
   if (!std::regex_match(message, match, kPrefix)) {

@@ -76,16 +76,17 @@ double ExpressionFunction::Value(double x) const {
   }
 }
 
-FunctionValue ExpressionFunction::Eval(double x) const {
+FunctionValue ExpressionFunction::Eval(double x, int order) const {
   constexpr double kShrink = 1.4, kShrink2 = kShrink * kShrink;
   constexpr double kSafe = 2.0;  // stop once a row's diagonal moves this much past the best
   FunctionValue v;
   v.f = Value(x);
   if (!std::isfinite(v.f))
     EMB_THROW(NumericalError, "expression '" << text_ << "' is " << v.f << " at " << x);
+  if (order <= 0) return v;
   double a1[kMaxRows][kMaxRows], a2[kMaxRows][kMaxRows];
   double err1 = HUGE_VAL, err2 = HUGE_VAL, change = 0.0;
-  bool done1 = false, done2 = false;
+  bool done1 = false, done2 = order < 2;
   double h = scale_;
   for (int k = 0; k < kMaxRows && !(done1 && done2); ++k, h /= kShrink) {
     const double fp = Value(x + h), fm = Value(x - h);
@@ -113,6 +114,7 @@ FunctionValue ExpressionFunction::Eval(double x) const {
   // Where a derivative vanishes its error counts against the change of f over the scale.
   const double ref1 = std::max(std::abs(v.df), change / scale_);
   const double ref2 = std::max(std::abs(v.d2f), change / (scale_ * scale_));
+  if (order < 2) v.d2f = 0.0, err2 = 0.0;
   if (!(err1 <= kDerivativeTolerance * ref1) || !(err2 <= kDerivativeTolerance * ref2))
     EMB_THROW(NumericalError,
                   "expression '" << text_ << "': its derivatives at " << x

@@ -45,10 +45,12 @@ class ExpressionFunction {
 
   /// f(x). Thread-safe (one evaluation at a time). Cost: one muParser evaluation.
   double Value(double x) const;
-  /// f, f', f'' at x (Ridders extrapolation, see above). Cost: at most 2 kMaxRows + 1
-  /// evaluations. @throws NumericalError if f is not finite at x or the derivatives cannot
-  /// be resolved at this scale (error estimate above kDerivativeTolerance).
-  FunctionValue Eval(double x) const;
+  /// f and its derivatives up to `order` (0: f; 1: f, f'; 2: f, f', f'') at x (Ridders
+  /// extrapolation, see above; the derivatives not asked for are 0). Cost: at most
+  /// 2 kMaxRows + 1 evaluations. @throws NumericalError if f is not finite at x or a
+  /// derivative asked for cannot be resolved at this scale (error estimate above
+  /// kDerivativeTolerance).
+  FunctionValue Eval(double x, int order = 2) const;
 
   const std::string& text() const { return text_; }
   double scale() const { return scale_; }

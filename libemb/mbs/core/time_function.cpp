@@ -90,11 +90,15 @@ TimeFunction TimeFunction::Expression(const std::string& text,
   return f;
 }
 
-FunctionValue TimeFunction::Eval(double x) const {
+double TimeFunction::operator()(double x) const {
+  return kind_ == Kind::kExpression ? expression_->Value(x) : Eval(x, 0).f;
+}
+
+FunctionValue TimeFunction::Eval(double x, int order) const {
   FunctionValue v;
   switch (kind_) {
     case Kind::kExpression:
-      return expression_->Eval(x);
+      return expression_->Eval(x, order);
     case Kind::kPolynomial: {
       // Horner for f, f', f''.
       for (std::size_t k = c_.size(); k-- > 0;) {

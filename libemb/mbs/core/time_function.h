@@ -49,8 +49,12 @@ class TimeFunction {
                                  const std::map<std::string, double>& constants = {},
                                  double scale = 1e-3);
 
-  FunctionValue Eval(double x) const;
-  double operator()(double x) const { return Eval(x).f; }
+  /// f and its derivatives up to `order` (0, 1 or 2) at x; the others may be left 0. Only
+  /// an expression computes less for a lower order (and only it can fail: @throws
+  /// NumericalError where its derivatives cannot be resolved, ExpressionFunction::Eval).
+  FunctionValue Eval(double x, int order = 2) const;
+  /// f(x) alone (an expression needs no derivative, so a kink is no error here).
+  double operator()(double x) const;
   /// "polynomial[0, 6.28]" etc. for reports.
   std::string Describe() const;
 

@@ -12,6 +12,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/core/time_function.h"
@@ -41,32 +42,43 @@ FunctionValue SpinUp(double t) {
 TEST(ExpressionFunction, SpinUpDerivativesMatchTheClosedForm) {
   const TimeFunction f =
       TimeFunction::Expression(kSpinUp, {{"Omega", kOmega}, {"T", kRampTime}});
-  // Relative to the scales of the motion: Omega T (angle), Omega (speed), Omega / T
-  // (acceleration). Ridders' extrapolation delivers ~1e-11 here; 1e-9 leaves margin and is
-  // far below any IDA tolerance.
-  constexpr double kRelative = 1e-9;
-  double worst1 = 0.0, worst2 = 0.0;
+  // Relative to the scales of the motion: Omega (speed) and Omega / T (acceleration).
+  // Measured: f' within 2.5e-9, f'' within 7e-7 — at the end of the ramp, where the fourth
+  // derivative jumps and no extrapolation of differences that straddle it converges
+  // further; elsewhere f'' within 1e-8. The bounds leave a factor 2..4.
+  constexpr double kSpeedRelative = 1e-8, kAccelerationRelative = 2e-6;
+  constexpr double kSmoothAccelerationRelative = 4e-8;  // more than 5 ms from the joint
+  double worst1 = 0.0, worst2 = 0.0, worst2_smooth = 0.0;
   for (int k = 0; k <= 400; ++k) {
     const double t = 2 * kRampTime * k / 400.0;  // through the ramp, its end and the hold
     const FunctionValue got = f.Eval(t), want = SpinUp(t);
-    EXPECT_NEAR(got.f, want.f, 1e-13 * kOmega * kRampTime * 10) << "t = " << t;
+    // Values: the same formula evaluated twice, to round-off of an angle of ~50 rad.
+    EXPECT_NEAR(got.f, want.f, 1e-12 * kOmega * kRampTime) << "t = " << t;
     worst1 = std::max(worst1, std::abs(got.df - want.df) / kOmega);
-    worst2 = std::max(worst2, std::abs(got.d2f - want.d2f) / (kOmega / kRampTime));
+    const double e2 = std::abs(got.d2f - want.d2f) / (kOmega / kRampTime);
+    worst2 = std::max(worst2, e2);
+    if (std::abs(t - kRampTime) > 5e-3) worst2_smooth = std::max(worst2_smooth, e2);
   }
-  EXPECT_LT(worst1, kRelative);
-  EXPECT_LT(worst2, kRelative);
-  std::printf("spin-up: worst relative error of f' %.2e, of f'' %.2e\n", worst1, worst2);
+  EXPECT_LT(worst1, kSpeedRelative);
+  EXPECT_LT(worst2, kAccelerationRelative);
+  EXPECT_LT(worst2_smooth, kSmoothAccelerationRelative);
+  std::printf("spin-up: worst relative error of f' %.2e, of f'' %.2e (%.2e away from t = T)\n",
+              worst1, worst2, worst2_smooth);
 }
 
 TEST(ExpressionFunction, PolynomialAgreesWithHorner) {
-  // The same cubic by the two routes; far from the origin too (t = 50: x + h rounds).
+  // The same cubic by the two routes. Round-off of f(x +- h) over h^2 bounds f'':
+  // eps |f| / h^2 relative to |f''| is ~1e-9 at t = 5 with the default scale; at t = 50
+  // (f = 3.75e5) a larger scale (0.1) gives the digits back.
   const TimeFunction horner = TimeFunction::Polynomial({1.0, -2.0, 0.5, 3.0});
   const TimeFunction parsed = TimeFunction::Expression("1 - 2*t + 0.5*t^2 + 3*t^3");
-  for (double t : {-1.3, 0.0, 0.7, 5.0, 50.0}) {
-    const FunctionValue a = horner.Eval(t), b = parsed.Eval(t);
+  const TimeFunction coarse = TimeFunction::Expression("1 - 2*t + 0.5*t^2 + 3*t^3", {}, 0.1);
+  for (auto [t, f] : {std::pair{-1.3, &parsed}, std::pair{0.0, &parsed}, std::pair{0.7, &parsed},
+                      std::pair{5.0, &parsed}, std::pair{50.0, &coarse}}) {
+    const FunctionValue a = horner.Eval(t), b = f->Eval(t);
     EXPECT_NEAR(b.f, a.f, 1e-14 * std::max(1.0, std::abs(a.f)));
     EXPECT_NEAR(b.df, a.df, 1e-9 * std::max(1.0, std::abs(a.df))) << "t = " << t;
-    EXPECT_NEAR(b.d2f, a.d2f, 1e-9 * std::max(1.0, std::abs(a.d2f))) << "t = " << t;
+    EXPECT_NEAR(b.d2f, a.d2f, 1e-8 * std::max(1.0, std::abs(a.d2f))) << "t = " << t;
   }
 }
 
