@@ -27,7 +27,7 @@ NAMES = set()
 
 def case(name, category, cmd, exit, stderr=(), setup=(), absent=(), unchanged=(), exists=(),
          h5_attr=(), timeout=60, signal=None, keep_temporaries=False, stderr_absent=(),
-         then=None):
+         then=None, env=None):
     """`then`: a second command run in the same directory after the first (and its checks
     of files) with its own expected exit code: {"cmd": [...], "exit": N}."""
     assert name not in NAMES, name
@@ -38,6 +38,8 @@ def case(name, category, cmd, exit, stderr=(), setup=(), absent=(), unchanged=()
         c["stderr_absent"] = list(stderr_absent)
     if then:
         c["then"] = {"cmd": ["{emb}", *then["cmd"]], "exit": then["exit"]}
+    if env:
+        c["env"] = dict(env)
     for key, value in (("absent", absent), ("unchanged", unchanged), ("exists", exists),
                        ("h5_attr", h5_attr)):
         if value:
@@ -174,6 +176,32 @@ for key, setting in {"unknown": "nope=1", "nan": "h=nan", "inf": "h=inf", "neg_i
                      "trailing": "h=1x", "huge": "h=1e400"}.items():
     case(f"geo_set_{key}", "geo", ["mesh", "{fix}/bar.geo", "-q", "--set", setting], 1,
          ["--set" if key not in ("unknown",) else "no parameter"], timeout=20)
+# Scripts that never finish while gmsh reads them (gmsh cannot be stopped): emb refuses them
+# after EMB_GEO_SECONDS (here 3 s; 120 s by default), naming the file.
+ENDLESS_GEO = {
+    "loop_1e12": "For i In {1:1e12}\nEndFor\n",
+    "nested_loops": "For i In {1:1e6}\nFor j In {1:1e6}\nEndFor\nEndFor\n",
+    "macro_calls_itself": "Macro M\n  Call M;\nReturn\nCall M;\n",
+    "point_flood": "For i In {1:5e7}\n  Point(1000 + i) = {i, 0, 0};\nEndFor\n",
+}
+FAST_DEADLINE = {"EMB_GEO_SECONDS": "3"}
+for key, script in ENDLESS_GEO.items():
+    case(f"geo_endless_{key}", "geo", ["mesh", "part.geo", "-q"], 1,
+         ["refusing", "part.geo", "still reading"], [("write", "part.geo", script + BOX)],
+         timeout=40, env=FAST_DEADLINE)
+case("geo_endless_reduce", "geo", ["reduce", "part.geo", "-q", "-o", "b.h5"], 1,
+     ["refusing", "still reading"],
+     [("write", "part.geo", ENDLESS_GEO["loop_1e12"] + BOX)], absent=["b.h5"], timeout=40,
+     env=FAST_DEADLINE)
+case("geo_endless_beam_part", "geo", ["run", "s.yaml", "-q", "-o", "r.h5"], 1,
+     ["refusing", "part.geo", "still reading"],
+     [("write", "part.geo", ENDLESS_GEO["macro_calls_itself"] + BOX),
+      ("write", "s.yaml", "bodies:\n  - {name: crank, model: beam, geometry: part.geo}\n"
+                          "analysis: {type: assemble}\n")], absent=["r.h5"], timeout=40,
+     env=FAST_DEADLINE)
+for key, value in {"text": "soon", "zero": "0", "negative": "-5", "nan": "nan"}.items():
+    case(f"geo_deadline_env_{key}", "geo", ["mesh", "{fix}/bar.geo", "-q"], 1,
+         ["EMB_GEO_SECONDS"], env={"EMB_GEO_SECONDS": value})
 case("geo_set_on_mesh_file", "geo", ["mesh", "{fix}/bar.msh", "-q", "--set", "h=1"], 1,
      ["parameters can only be set"])
 case("geo_beam_parts_for_mesh", "geo", ["mesh", "{src}/meshes/tube.geo", "-q", "--set",

@@ -250,8 +250,10 @@ def run_case(case, ctx):
             cmd = ["bash", "-c", f'trap "" XFSZ; ulimit -f {env["fsize"] // 1024}; exec "$@"',
                    "bash", *cmd]
         start = time.monotonic()
+        proc_env = dict(os.environ, **case.get("env", {}))
         proc = subprocess.Popen(cmd, cwd=case_dir, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                stdin=subprocess.DEVNULL, text=True, errors="replace")
+                                stdin=subprocess.DEVNULL, text=True, errors="replace",
+                                env=proc_env)
         sent = None
         sig = case.get("signal")
         timeout = case.get("timeout", 60)
