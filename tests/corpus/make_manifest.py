@@ -927,16 +927,17 @@ case("results_joint_channel_unknown_coordinate", "results",
      ["spectrum", "{fix}/disc.h5", "-q", "--channel", "bearing.twist", "--angle", "bearing"], 1,
      ["bearing.twist"])
 
-# Expressions that are valid text but no usable motion: a numerical outcome (exit 3), the
-# results file marked so.
-for key, expression, frags in (
-        ("kink", "abs(t - 0.05)", ["expression", "kink"]),
-        ("nan_midrun", "sqrt(0.05 - t)", ["expression"]),
-        ("too_fast_for_scale", "0.1*sin(2*pi*1000*t)", ["expression", "scale"])):
-    case(f"numerical_expression_{key}", "numerical", ["run", "s.yaml", "-q", "-o", "r.h5"], 3,
+# Expressions that are valid text but no usable motion (no derivative where the run needs
+# one): the input's fault, exit 1, found at once (not after the integrator's step budget),
+# the results file marked failed when the run had started.
+for key, expression, frags, attrs in (
+        ("kink", "abs(t - 0.05)", ["expression", "kink"], [("r.h5", "status", "failed")]),
+        ("nan_midrun", "sqrt(0.05 - t)", ["expression"], [("r.h5", "status", "failed")]),
+        ("too_fast_for_scale", "0.1*sin(2*pi*1000*t)", ["expression", "scale"], [])):
+    case(f"numerical_expression_{key}", "numerical", ["run", "s.yaml", "-q", "-o", "r.h5"], 1,
          frags, [("write", "s.yaml", replaced(
              "analysis:", 'motions:\n  - {name: m, joint: hinge, function: {expression: "'
-             + expression + '"}}\nanalysis:'))], timeout=30)
+             + expression + '"}}\nanalysis:'))], h5_attr=attrs, timeout=20)
 
 # --- I/O faults ---------------------------------------------------------------------------
 

@@ -115,8 +115,10 @@ FunctionValue ExpressionFunction::Eval(double x, int order) const {
   const double ref1 = std::max(std::abs(v.df), change / scale_);
   const double ref2 = std::max(std::abs(v.d2f), change / (scale_ * scale_));
   if (order < 2) v.d2f = 0.0, err2 = 0.0;
+  // The function, not the step, is at fault: an InputError (a smaller integrator step
+  // cannot help), where a non-finite value above may be an iterate outside its domain.
   if (!(err1 <= kDerivativeTolerance * ref1) || !(err2 <= kDerivativeTolerance * ref2))
-    EMB_THROW(NumericalError,
+    EMB_THROW(InputError,
                   "expression '" << text_ << "': its derivatives at " << x
                                  << " cannot be resolved from the scale " << scale_
                                  << " (error estimates " << err1 << " of f' = " << v.df << ", "

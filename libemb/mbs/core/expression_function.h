@@ -19,7 +19,7 @@
 /// smallest; rows stop once the diagonal grows again (round-off takes over). h_0 is the
 /// function's `scale`: the shortest interval of the argument over which it changes
 /// appreciably (default 1e-3 s); a function much faster than its scale aliases, which the
-/// error estimate catches (Eval throws NumericalError naming the expression).
+/// error estimate catches (Eval throws InputError naming the expression).
 /// Measured (tests/mbs/core/expression_function_test.cpp): on the spin-up above (Omega =
 /// 100 pi rad/s, T = 0.1 s, then held) f' within 3e-9 of Omega, f'' within 4e-11 of
 /// Omega/T except at the end of the ramp, where the fourth derivative jumps and f'' is
@@ -49,9 +49,11 @@ class ExpressionFunction {
   double Value(double x) const;
   /// f and its derivatives up to `order` (0: f; 1: f, f'; 2: f, f', f'') at x (Ridders
   /// extrapolation, see above; the derivatives not asked for are 0). Cost: at most
-  /// 2 kMaxRows + 1 evaluations. @throws NumericalError if f is not finite at x or a
+  /// 2 kMaxRows + 1 evaluations. @throws NumericalError if f is not finite at x (an
+  /// iterate outside the function's domain: recoverable in a residual), InputError if a
   /// derivative asked for cannot be resolved at this scale (error estimate above
-  /// kDerivativeTolerance).
+  /// kDerivativeTolerance: a kink, a jump or a function too fast for its scale; no smaller
+  /// step helps).
   FunctionValue Eval(double x, int order = 2) const;
 
   const std::string& text() const { return text_; }

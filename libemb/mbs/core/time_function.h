@@ -51,7 +51,7 @@ class TimeFunction {
 
   /// f and its derivatives up to `order` (0, 1 or 2) at x; the others may be left 0. Only
   /// an expression computes less for a lower order (and only it can fail: @throws
-  /// NumericalError where its derivatives cannot be resolved, ExpressionFunction::Eval).
+  /// ExpressionFunction::Eval's errors).
   FunctionValue Eval(double x, int order = 2) const;
   /// f(x) alone (an expression needs no derivative, so a kink is no error here).
   double operator()(double x) const;
