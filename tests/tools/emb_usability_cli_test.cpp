@@ -77,26 +77,11 @@ TEST_F(EmbUsabilityCli, PlanarFourBarRunsWithoutWarnings) {
 
 // A disc spun up by an expression (the smooth ramp of issue 14) to 3000 rpm over 0.04 s,
 // then held: four cycles of 720 degrees at speed for the spectrum.
-const char* kDisc = R"yaml(name: disc
-bodies:
-  - {name: disc, mass: 2.0, inertia: [0.01, 0.005, 0.005]}
-markers:
-  - {name: hub, body: ground, orientation: {z_axis: [1, 0, 0]}}
-  - {name: disc_hub, body: disc, orientation: {z_axis: [1, 0, 0]}}
-joints:
-  - {name: bearing, type: revolute, i: disc_hub, j: hub}
-motions:
-  - name: drive
-    joint: bearing
-    function:
-      expression: "t < T ? W*(t^2/2 + (T/(2*pi))^2*(cos(2*pi*t/T) - 1))/T : W*(t - T/2)"
-      constants: {W: 314.1592653589793, T: 0.04}
-analysis: {type: kinematic, t_end: 0.2, output_step: 2.0e-4}
-output: {csv: disc.csv, channels: [bearing.angle, bearing.angle_rate, disc.omega.x]}
-)yaml";
+const std::string kDiscFile = std::string(EMB_SOURCE_DIR) + "/tests/scene/data/disc_spin_up.yaml";
 
 TEST_F(EmbUsabilityCli, JointCoordinatesInCsvHdf5AndSpectrum) {
-  std::ofstream(dir_ / "disc.yaml") << kDisc;
+  const std::string disc = Slurp(kDiscFile);
+  std::ofstream(dir_ / "disc.yaml") << disc;
   const CliResult r = Run("run -q disc.yaml -o disc.h5");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // At t = 0.2 s: theta = W (t - T/2), unwrapped (over 29 rad), theta' = W.
@@ -130,7 +115,8 @@ TEST_F(EmbUsabilityCli, JointCoordinatesInCsvHdf5AndSpectrum) {
 }
 
 TEST_F(EmbUsabilityCli, ExpressionErrorsNameTheSceneLine) {
-  std::ofstream(dir_ / "bad.yaml") << Replace(kDisc, "W*(t - T/2)\"", "W*(t - T/2\"");
+  const std::string disc = Slurp(kDiscFile);
+  std::ofstream(dir_ / "bad.yaml") << Replace(disc, "W*(t - T/2)\"", "W*(t - T/2\"");
   const CliResult r = Run("run -q bad.yaml --no-output");
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("bad.yaml:"), std::string::npos) << r.err;
@@ -138,7 +124,7 @@ TEST_F(EmbUsabilityCli, ExpressionErrorsNameTheSceneLine) {
   // A kink in a motion has no acceleration: refused (exit 1) where the run meets it, not a
   // made-up derivative and not after the integrator's whole step budget.
   std::ofstream(dir_ / "kink.yaml")
-      << Replace(kDisc, "t < T ? W*(t^2/2 + (T/(2*pi))^2*(cos(2*pi*t/T) - 1))/T : W*(t - T/2)",
+      << Replace(disc, "t < T ? W*(t^2/2 + (T/(2*pi))^2*(cos(2*pi*t/T) - 1))/T : W*(t - T/2)",
                  "W*abs(t - 0.1)");
   const CliResult k = Run("run -q kink.yaml --no-output --dt 0.01");
   EXPECT_EQ(k.exit_code, 1) << k.err;

@@ -1,6 +1,6 @@
 // Joint coordinates as results (issue 14): a revolute's unwrapped angle and a translational
 // joint's travel, with their rates, against the closed forms of the motions that drive
-// them (an expression spin-up over ten turns, a harmonic slide), across output steps longer
+// them (an expression spin-up over nine turns, a harmonic slide), across output steps longer
 // than half a turn, and as named channels.
 
 #include "libemb/mbs/analysis/joint_coordinates.h"
@@ -9,7 +9,9 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -31,36 +33,27 @@ std::vector<Sample> RunScene(const scene::Scene& sc) {
   return out;
 }
 
-// A disc on a revolute about x, driven by the smooth spin-up of issue 14 to 3000 rpm over
-// 0.1 s (tests/mbs/core/expression_function_test.cpp has its closed form), for 0.2 s: seven
-// and a half turns in all.
-const char* kDisc = R"yaml(bodies:
-  - {name: disc, mass: 2.0, inertia: [0.01, 0.005, 0.005]}
-markers:
-  - {name: hub, body: ground, orientation: {z_axis: [1, 0, 0]}}
-  - {name: disc_hub, body: disc, orientation: {z_axis: [1, 0, 0]}}
-joints:
-  - {name: bearing, type: revolute, i: disc_hub, j: hub}
-motions:
-  - name: drive
-    joint: bearing
-    function:
-      expression: "t < T ? W*(t^2/2 + (T/(2*pi))^2*(cos(2*pi*t/T) - 1))/T : W*(t - T/2)"
-      constants: {W: 314.1592653589793, T: 0.1}
-analysis: {type: kinematic, t_end: 0.2, output_step: OUTPUT_STEP}
-)yaml";
+// The disc spun up by an expression to 3000 rpm over T = 0.04 s, for 0.2 s (the file has the
+// closed form).
+const std::string kDiscFile = std::string(EMB_SOURCE_DIR) + "/tests/scene/data/disc_spin_up.yaml";
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 std::string Replace(std::string s, const std::string& old, const std::string& by) {
   const auto at = s.find(old);
   EXPECT_NE(at, std::string::npos) << old;
   return at == std::string::npos ? s : s.replace(at, old.size(), by);
 }
-std::string WithStep(const char* text, const std::string& step) {
-  return Replace(text, "OUTPUT_STEP", step);
+std::string WithStep(const std::string& step) {
+  return Replace(Slurp(kDiscFile), "output_step: 2.0e-4", "output_step: " + step);
 }
 
 TEST(JointCoordinates, RevoluteAngleFollowsTheSpinUpAcrossTurns) {
-  const double W = 100 * kPi, T = 0.1;
+  const double W = 100 * kPi, T = 0.04;
   auto closed = [&](double t) {
     if (t >= T) return std::array<double, 3>{W * (t - T / 2), W, 0.0};
     const double a = 2 * kPi * t / T, c = T / (2 * kPi);
@@ -72,13 +65,13 @@ TEST(JointCoordinates, RevoluteAngleFollowsTheSpinUpAcrossTurns) {
   // (236 degrees per sample: only the rate-based prediction gets the turns right, and the
   // kinematic analysis crosses such a step in sub-steps of at most a quarter turn).
   for (const char* step : {"1.0e-3", "7.3e-3", "13.1e-3"}) {
-    const scene::Scene sc = scene::ParseScene(WithStep(kDisc, step), "disc.yaml");
+    const scene::Scene sc = scene::ParseScene(WithStep(step), "disc.yaml");
     const int bearing = sc.system.FindElement("bearing");
     const std::vector<Sample> samples = RunScene(sc);
     ASSERT_GE(samples.size(), 10u);
     // The kinematic solve closes the motion equation to the assembly tolerance (1e-10
     // rad); the expression's derivatives are good to ~1e-11 relative (velocities, rad/s).
-    constexpr double kAngleTolerance = 1e-8;          // [rad] over 10 turns
+    constexpr double kAngleTolerance = 1e-8;          // [rad] over 9 turns
     constexpr double kRateTolerance = 1e-8 * 100 * kPi;  // [rad/s]
     for (const Sample& s : samples) {
       const auto want = closed(s.t);
@@ -90,18 +83,19 @@ TEST(JointCoordinates, RevoluteAngleFollowsTheSpinUpAcrossTurns) {
       EXPECT_NEAR(s.vdot[3], want[2], 1e-7 * W / T) << "t = " << s.t;
       EXPECT_TRUE(std::isnan(s.joints(bearing, kJointTravel)));  // a revolute has no travel
     }
-    // W (0.2 s - T/2) = 47.1 rad: seven and a half turns, not wrapped.
-    EXPECT_NEAR(samples.back().joints(bearing, kJointAngle), W * 0.15, kAngleTolerance);
+    // W (0.2 s - T/2) = 56.5 rad: nine turns, not wrapped.
+    EXPECT_NEAR(samples.back().joints(bearing, kJointAngle), W * (0.2 - T / 2), kAngleTolerance);
   }
 }
 
 TEST(JointCoordinates, FreeSpinAtCoarseOutputStep) {
   // A dynamic run: the disc spins freely at 20 rad/s; outputs every 0.25 s are 5 rad apart
   // (more than pi), and the angle still grows by exactly 5 rad per sample.
-  std::string text = kDisc;
+  std::string text = Slurp(kDiscFile);
   text.erase(text.find("motions:"), text.find("analysis:") - text.find("motions:"));
+  text.erase(text.find("output:"));
   text = Replace(text, "mass: 2.0,", "mass: 2.0, angular_velocity: [20, 0, 0],");
-  text = Replace(text, "type: kinematic, t_end: 0.2, output_step: OUTPUT_STEP",
+  text = Replace(text, "type: kinematic, t_end: 0.2, output_step: 2.0e-4",
                  "type: dynamic, t_end: 2.0, output_step: 0.25, rtol: 1.0e-9, atol: 1.0e-11");
   const scene::Scene sc = scene::ParseScene(text, "spin.yaml");
   const std::vector<Sample> samples = RunScene(sc);

@@ -15,6 +15,7 @@
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/mbs/core/system.h"
 #include "libemb/scene/scene.h"
+#include "tests/support/test_models.h"
 
 namespace emb::mbs {
 namespace {
@@ -54,18 +55,7 @@ TEST(OutOfPlane, FourBarRedundancyIsOutOfItsPlaneOnly) {
 TEST(OutOfPlane, RepeatedHingeHasInPlaneRepeats) {
   // A second revolute on the same hinge repeats all 5 equations; its at-point x and y act in
   // the xy-plane, the other three out of it.
-  System s;
-  RigidBody b;
-  b.name = "door";
-  b.mass = 10;
-  b.inertia_B = Eigen::Vector3d(1, 1, 1).asDiagonal();
-  b.p_WB = Eigen::Vector3d(0.3, 0.2, 0.0);
-  s.AddBody(b);
-  s.AddMarker("frame", "ground", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  s.AddMarker("hinge", "door", Eigen::Vector3d(-0.3, -0.2, 0.0), Eigen::Matrix3d::Identity());
-  s.AddJoint("upper", JointType::kRevolute, "hinge", "frame");
-  s.AddJoint("lower", JointType::kRevolute, "hinge", "frame");
-  s.Finalize();
+  const System s = testing::RepeatedHinge(Eigen::Vector3d(0.3, 0.2, 0.0));
   ConstraintWorkspace ws(s);
   const Assembled a = Assemble(s, &ws);
   ASSERT_EQ(a.dof.redundant.size(), 5u);
