@@ -348,6 +348,18 @@ case("cli_run_huge_output_refused", "cli", [*RUN, "--t-end", "1e3", "--dt", "1e-
      ["--force"], absent=["out.h5"])
 case("cli_run_tiny_dt_refused", "cli", [*RUN, "--dt", "1e-300"], 1, ["--force"],
      absent=["out.h5"])
+# Forced, the output times are made as the run goes (not all up front: 10^12 of them would
+# not fit in memory): the run starts at once and stops on SIGINT with its file marked.
+case("cli_run_forced_huge_samples_runs", "cli",
+     ["run", "{fix}/pendulum.yaml", "-q", "-o", "r.h5", "--t-end", "1e9", "--dt", "1e-3",
+      "--force"], "signal", [], signal={"sig": "INT", "when": "exists:r.h5", "delay": 1.0},
+     h5_attr=[("r.h5", "status", "interrupted")], timeout=30)
+case("cli_run_forced_dt_below_resolution", "cli",
+     ["run", "{fix}/pendulum.yaml", "-q", "-o", "r.h5", "--t-end", "1e15", "--dt", "1e-300",
+      "--force"], 1, ["output_step", "output times"], absent=["r.h5"], timeout=30)
+case("cli_run_forced_too_many_times", "cli",
+     ["run", "{fix}/pendulum.yaml", "-q", "--no-output", "--t-end", "1e300", "--dt", "1e-3",
+      "--force"], 1, ["2^53"], timeout=30)
 case("cli_run_no_output_samples_refused", "cli",
      ["run", "{fix}/pendulum.yaml", "-q", "--no-output", "--t-end", "1e9"], 1, ["samples"])
 DOF = ["dof", "{fix}/pendulum.yaml", "-q"]

@@ -104,6 +104,7 @@ PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
                                                           << settings.t_start);
   EMB_THROW_IF(!(settings.output_step > 0.0),
                "analysis: expected a positive output step, got " << settings.output_step);
+  (void)internal::OutputTimes{settings};  // throws for times the output step cannot resolve
   PreparedRun run{system, {}, {}, {}, {}, {}, {}};
   ConstraintWorkspace ws(system);
   const AssemblyResult a = AssemblePositions(system, system.InitialPositions(), settings.t_start,
@@ -296,15 +297,27 @@ double ModelSize(const System& system, const Eigen::VectorXd& q) {
   return size;
 }
 
-std::vector<double> OutputTimes(const AnalysisSettings& s) {
-  std::vector<double> t;
-  const double span = s.t_end - s.t_start;
+OutputTimes::OutputTimes(const AnalysisSettings& s, bool single)
+    : t_start_(s.t_start), t_end_(single ? s.t_start : s.t_end), step_(s.output_step) {
+  EMB_THROW_IF(!(step_ > 0.0) || !std::isfinite(t_start_) || !(t_end_ >= t_start_),
+               "analysis: expected finite times t_end >= t_start and output_step > 0, got "
+                   << t_start_ << ", " << t_end_ << " and " << step_ << " s");
   // Number of whole output steps; a remainder below 1e-9 steps is round-off of t_end / dt.
-  const long n = static_cast<long>(std::floor(span / s.output_step + 1e-9));
-  for (long k = 0; k <= n; ++k) t.push_back(s.t_start + static_cast<double>(k) * s.output_step);
-  if (t.back() < s.t_end - 1e-9 * s.output_step) t.push_back(s.t_end);
-  t.back() = std::min(t.back(), s.t_end);
-  return t;
+  const double n = std::floor((t_end_ - t_start_) / step_ + 1e-9);
+  constexpr double kMaxTimes = 9007199254740992.0;  // 2^53: k dt exact for every k below
+  EMB_THROW_IF(!(n < kMaxTimes), "analysis: (t_end - t_start) / output_step = "
+                                     << n << " output times; expected at most 2^53");
+  EMB_THROW_IF(n > 0 && !(t_end_ - step_ < t_end_ && t_start_ + step_ > t_start_),
+               "analysis: output_step " << step_ << " s is below the resolution of the "
+                                        << "times around t = " << t_end_ << " s");
+  whole_ = static_cast<long long>(n) + 1;
+  const double last = t_start_ + static_cast<double>(whole_ - 1) * step_;
+  size_ = last < t_end_ - 1e-9 * step_ ? whole_ + 1 : whole_;
+}
+
+double OutputTimes::operator[](long long k) const {
+  if (k >= whole_) return t_end_;
+  return std::min(t_start_ + static_cast<double>(k) * step_, t_end_);
 }
 
 // IDA's absolute tolerances per unknown: atol on q and v, algebraic_atol on lambda and mu,
@@ -442,11 +455,11 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
   DaeIntegrator& ida = *integrator;
   r.linear_solver = ida.linear_solver();
   r.jacobian_nonzeros = ida.jacobian_nonzeros();
-  const std::vector<double> times = OutputTimes(settings);
+  const OutputTimes times(settings);
   sink(MakeSample(sys, times[0], run.q0, run.v0, acc.vdot, acc.lambda, &ws));
   r.num_samples = 1;
   r.t_reached = times[0];
-  for (std::size_t k = 1; k < times.size(); ++k) {
+  for (long long k = 1; k < times.size(); ++k) {
     const IntegratorReport rep = ida.AdvanceTo(times[k]);
     const Eigen::VectorXd& yk = ida.y();
     const Eigen::VectorXd& ypk = ida.yp();

@@ -182,9 +182,9 @@ RunResult RunKinematic(const PreparedRun& run, const AnalysisSettings& settings,
   const Eigen::MatrixXd M =
       CalcMassMatrix(sys, CalcBodyKinematics(sys, run.q0, Eigen::VectorXd()));
   Eigen::VectorXd q = run.q0, v = Eigen::VectorXd::Zero(sys.layout().nv());
-  const std::vector<double> times = OutputTimes(settings);
+  const OutputTimes times(settings);
   const StateLayout& L = sys.layout();
-  for (std::size_t k = 0; k < times.size(); ++k) {
+  for (long long k = 0; k < times.size(); ++k) {
     const double t = times[k];
     // Predictor: move along the previous velocity, then close the loop by Newton. The angle
     // kernels follow a turn only within +-pi of their last value (ConstraintWorkspace), so
@@ -239,9 +239,8 @@ RunResult RunStatic(const PreparedRun& run, const AnalysisSettings& settings,
   Eigen::VectorXd q = run.q0;
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(sys.num_equations());
   const Eigen::VectorXd zero_v = Eigen::VectorXd::Zero(sys.layout().nv());
-  const std::vector<double> times =
-      sequence ? OutputTimes(settings) : std::vector<double>{settings.t_start};
-  for (std::size_t k = 0; k < times.size(); ++k) {
+  const OutputTimes times(settings, /*single=*/!sequence);
+  for (long long k = 0; k < times.size(); ++k) {
     const double t = times[k];
     r.static_report = SolveStatic(sys, t, settings, &ws, &q, &lambda);
     r.newton_iterations += r.static_report.iterations;
