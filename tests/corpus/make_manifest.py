@@ -402,6 +402,16 @@ case("cli_compare_report_dir_missing", "cli", [*COMPARE, "--report-dir", "nowher
 case("cli_inspect_missing", "cli", ["inspect", "nowhere.h5", "-q"], 1, ["nowhere.h5"])
 case("cli_inspect_wrong_hash", "cli",
      ["inspect", "{fix}/body.h5", "-q", "--expect-mesh-hash", "0123"], 1, ["stale"])
+# An empty path (an unset shell variable) is no path: refused, not "no option".
+for key, cmd in {"run_o": ["run", "{fix}/pendulum.yaml", "-q", "-o", ""],
+                 "run_csv": ["run", "{fix}/pendulum.yaml", "-q", "--no-output", "--csv", ""],
+                 "modes_o": ["modes", "{fix}/bar.geo", "-q", "-o", ""],
+                 "reduce_o": ["reduce", "{fix}/bar.geo", "-q", "-i", "x0", "-o", ""],
+                 "save_mesh": ["mesh", "{fix}/bar.geo", "-q", "--save-mesh", ""],
+                 "spectrum_csv": ["spectrum", "{fix}/disc.h5", "-q", "--channel", "disc.omega.x",
+                                  "--angle", "disc", "--csv", ""],
+                 "report_dir": ["compare", "{fix}/bar.geo", "-q", "--report-dir", ""]}.items():
+    case(f"cli_empty_path_{key}", "cli", cmd, 2, ["empty"], timeout=30)
 case("cli_unknown_subcommand", "cli", ["nonsense"], 2, ["unknown subcommand"])
 case("cli_no_subcommand", "cli", [], 2, [])
 case("cli_unknown_option", "cli", ["modes", "{fix}/bar.geo", "--frobnicate"], 2, [])
@@ -648,6 +658,20 @@ TOP_BAD = {
 }
 for key, (text, frags) in TOP_BAD.items():
     scene(f"top_{key}", text, 1, frags, timeout=30)
+
+# Names that would make ambiguous channels ("<name>.<quantity>") or garbled lists.
+for key, (old_text, new_text, frags) in {
+        "body_with_dot": ("name: rod,", "name: rod.x,", ["rod.x", "'.'"]),
+        "joint_with_dot": ("name: hinge,", "name: hinge.F,", ["hinge.F", "'.'"]),
+        "body_with_space": ("name: rod,", "name: rod x,", ["rod x", "spaces"]),
+        "body_with_newline": ("name: rod,", 'name: "ro\\nd",', ["spaces"]),
+        "body_empty_name": ("name: rod,", 'name: "",', ["non-empty"]),
+        "sensor_with_dot": ("analysis:", "sensors:\n  - {name: s.t, i: rod_top, j: pivot}\nanalysis:",
+                            ["s.t"]),
+        "force_with_dot": ("analysis:", "forces:\n  - {name: k.1, type: spring-damper, i: rod_top, "
+                                        "j: pivot, stiffness: 10}\nanalysis:", ["k.1"]),
+}.items():
+    scene(f"name_{key}", replaced(old_text, new_text), 1, frags)
 
 # Outputs named by the scene.
 case("scene_output_absolute_outside", "scene", ["run", "s.yaml", "-q"], 1, ["outside"],

@@ -131,7 +131,8 @@ void RegisterSpectrumCommand(CLI::App& app) {
   cmd->add_option("--samples-per-cycle", st->settings.samples_per_cycle,
                   "Resampling points per 720 degrees")
       ->capture_default_str();
-  cmd->add_option("--csv", st->csv, "Also write order,amplitude,phase_deg to this CSV file");
+  cmd->add_option("--csv", st->csv, "Also write order,amplitude,phase_deg to this CSV file")
+      ->check(NonEmptyPath());
   st->out.Register(*cmd);
   cmd->callback([st] { st->Run(); });
 }
