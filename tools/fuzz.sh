@@ -16,7 +16,9 @@ work="$build/fuzz"
 export LSAN_OPTIONS="suppressions=$root/tests/sanitize/lsan_suppressions.txt:print_suppressions=0"
 rm -rf "$work"
 mkdir -p "$work/findings"
-/usr/bin/python3 "$root/tests/fuzz/make_seeds.py" --emb "$build/tools/emb/emb" --out "$work/seeds"
+# The emb command forbids starting programs, llvm-symbolizer included (tests/CMakeLists.txt).
+ASAN_OPTIONS=symbolize=0 /usr/bin/python3 "$root/tests/fuzz/make_seeds.py" \
+  --emb "$build/tools/emb/emb" --out "$work/seeds"
 status=0
 for target in geo_script scene body_file results_file mesh; do
   exe="$build/tests/fuzz/fuzz_$target"
