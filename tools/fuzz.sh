@@ -9,7 +9,7 @@
 # as a ctest (fuzz_<target>_seeds) in the sanitizer build.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build=${1:-$root/build-asan}
+build=$(cd "${1:-$root/build-asan}" && pwd)  # absolute: the seeds are made in another directory
 seconds=${2:-60}
 work="$build/fuzz"
 # LeakSanitizer: leaks inside libgmsh are not emb's (tests/sanitize/lsan_suppressions.txt).
