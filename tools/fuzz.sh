@@ -36,7 +36,7 @@ for target in geo_script scene body_file results_file mesh; do
     # paths) is a bug of that library on a crafted file, not emb's: listed, kept, not failing.
     first=$(grep -m1 -E '^ +#1 0x' "$work/$target.log" || true)
     if [[ "$first" == *"/lib/x86_64-linux-gnu/"* ]]; then
-      echo "fuzz_$target: THIRD-PARTY FINDING, not failing: ${first##* (}"
+      echo "fuzz_$target: THIRD-PARTY FINDING, not failing:$first"
       echo "  (input kept in $work/findings/$target/, report in $work/$target.log)"
     else
       echo "fuzz_$target: FINDING (see $work/$target.log and $work/findings/$target/)"
