@@ -37,8 +37,8 @@ struct Outcome {
   double seconds{0};
 };
 
-// The multipliers' Newton atol (AnalysisSettings): the default follows rtol
-// (multiplier_atol_rtol_factor * rtol * F_ref); kFixed is the earlier 1e-4 F_ref.
+// The multipliers' Newton atol (AnalysisSettings): the default follows rtol below rtol 1e-6
+// (min(1e-4, 100 rtol) F_ref); kFixed is the earlier 1e-4 F_ref at every rtol.
 enum class MultiplierRule { kFollowsRtol, kFixed };
 constexpr double kEarlierFixedFraction = 1e-4;
 

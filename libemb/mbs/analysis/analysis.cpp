@@ -440,7 +440,8 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     options.algebraic_atol =
         (settings.multiplier_atol_relative > 0.0
              ? settings.multiplier_atol_relative
-             : settings.multiplier_atol_rtol_factor * options.rtol) *
+             : std::min(settings.multiplier_atol_max_relative,
+                        settings.multiplier_atol_rtol_factor * options.rtol)) *
         force_scale;
   }
   if (settings.modal_velocity_atol_by_frequency && options.component_atol.size() == 0)
