@@ -1,7 +1,8 @@
 // Work-precision of the multibody DAE (GGL index-2 on IDA): error against a reference vs
 // wall time over a tolerance sweep, for the slider-crank (reference: closed form of the
 // piston position) and the seed's single-cylinder engine, variant (c) (reference: the same
-// run at rtol 1e-10).
+// run at rtol 1e-11); each also with the earlier fixed multiplier atol (1e-4 of the model's
+// forces) against the default that follows rtol (AnalysisSettings).
 //   build/benchmarks/mbs_work_precision [repeats] [--json]
 // Prints one line per (model, rtol): IDA steps, residual and Jacobian evaluations, the
 // linear solver the automatic choice took, wall time per run (best of `repeats`), and the
@@ -36,8 +37,15 @@ struct Outcome {
   double seconds{0};
 };
 
-Outcome Run(const emb::scene::Scene& sc, AnalysisSettings s, double rtol, int repeats) {
+// The multipliers' Newton atol (AnalysisSettings): the default follows rtol below rtol 1e-6
+// (min(1e-4, 100 rtol) F_ref); kFixed is the earlier 1e-4 F_ref at every rtol.
+enum class MultiplierRule { kFollowsRtol, kFixed };
+constexpr double kEarlierFixedFraction = 1e-4;
+
+Outcome Run(const emb::scene::Scene& sc, AnalysisSettings s, double rtol, int repeats,
+            MultiplierRule rule = MultiplierRule::kFollowsRtol) {
   s.type = emb::mbs::AnalysisType::kDynamic;
+  if (rule == MultiplierRule::kFixed) s.multiplier_atol_relative = kEarlierFixedFraction;
   s.ida.rtol = rtol;
   s.ida.atol = rtol * 1e-2;  // the analysis raises it to the model's floor if needed
   Outcome best;
@@ -85,6 +93,26 @@ void PrintRow(const char* model, double rtol, const Outcome& o, double error, bo
               error, o.result.ok() ? "" : o.result.message.c_str());
 }
 
+// One row of the multiplier-rule comparison: the earlier fixed atol against the default.
+void CompareRules(const char* model, double rtol, const Outcome& fixed, double fixed_error,
+                  const Outcome& follows, double follows_error, bool json, nlohmann::json* rows) {
+  if (json) {
+    rows->push_back({{"model", model},
+                     {"rtol", rtol},
+                     {"fixed", Counters(fixed)},
+                     {"fixed_multiplier_atol", fixed.result.multiplier_atol},
+                     {"fixed_max_error_m", fixed_error},
+                     {"follows_rtol", Counters(follows)},
+                     {"follows_rtol_multiplier_atol", follows.result.multiplier_atol},
+                     {"follows_rtol_max_error_m", follows_error}});
+    return;
+  }
+  std::printf("%-14s %8.0e  fixed: %6ld steps, error %10.3e   follows rtol: %6ld steps, "
+              "error %10.3e\n",
+              model, rtol, fixed.result.ida_stats.steps, fixed_error,
+              follows.result.ida_stats.steps, follows_error);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -96,7 +124,8 @@ int main(int argc, char** argv) {
     else
       repeats = std::atoi(argv[k]);
   }
-  nlohmann::json work_precision = nlohmann::json::array(), chains = nlohmann::json::array();
+  nlohmann::json work_precision = nlohmann::json::array(), chains = nlohmann::json::array(),
+                 rules = nlohmann::json::array();
   const std::string dir = std::string(EMB_SOURCE_DIR) + "/tools/scenes/";
   if (!json)
     std::printf("%-14s %8s %8s %9s %7s %6s %10s %12s\n", "model", "rtol", "steps", "residuals",
@@ -107,23 +136,29 @@ int main(int argc, char** argv) {
     const emb::scene::Scene sc = emb::scene::LoadScene(dir + "slider_crank.yaml");
     const int piston = sc.system.FindBody("piston");
     const double r = 0.05, l = 0.2, w = 2 * std::numbers::pi * 10;
-    for (double rtol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
-      const Outcome o = Run(sc, sc.analysis, rtol, repeats);
+    auto error = [&](const Outcome& o) {
       double err = 0;
       for (std::size_t k = 0; k < o.t.size(); ++k) {
         const double a = w * o.t[k];
         const double x = r * std::cos(a) + std::sqrt(l * l - r * r * std::sin(a) * std::sin(a));
         err = std::max(err, std::abs(o.q[k][sc.system.layout().position(piston)] - x));
       }
-      PrintRow("slider-crank", rtol, o, err, json, &work_precision);
+      return err;
+    };
+    for (double rtol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
+      const Outcome o = Run(sc, sc.analysis, rtol, repeats);
+      PrintRow("slider-crank", rtol, o, error(o), json, &work_precision);
+      const Outcome fixed = Run(sc, sc.analysis, rtol, repeats, MultiplierRule::kFixed);
+      CompareRules("slider-crank", rtol, fixed, error(fixed), o, error(o), json, &rules);
     }
   }
   // Single-cylinder engine (c): 2 DOF, bushing big end, gas force; one 4-stroke cycle.
   {
     const emb::scene::Scene sc = emb::scene::LoadScene(dir + "engine_c.yaml");
-    const Outcome ref = Run(sc, sc.analysis, 1e-10, 1);
-    for (double rtol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9}) {
-      const Outcome o = Run(sc, sc.analysis, rtol, repeats);
+    // The reference with the tighter of the two multiplier rules at rtol 1e-11 (its
+    // multipliers' atol 1e-9 F_ref), so that neither rule is its own reference.
+    const Outcome ref = Run(sc, sc.analysis, 1e-11, 1);
+    auto error = [&](const Outcome& o) {
       double err = 0;
       // Positions only (p_WB of every body), quaternion parts excluded to keep units [m].
       for (std::size_t k = 0; k < std::min(o.q.size(), ref.q.size()); ++k)
@@ -132,7 +167,13 @@ int main(int argc, char** argv) {
                                ref.q[k].segment<3>(sc.system.layout().position(b)))
                                   .cwiseAbs()
                                   .maxCoeff());
-      PrintRow("engine (c)", rtol, o, err, json, &work_precision);
+      return err;
+    };
+    for (double rtol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9}) {
+      const Outcome o = Run(sc, sc.analysis, rtol, repeats);
+      PrintRow("engine (c)", rtol, o, error(o), json, &work_precision);
+      const Outcome fixed = Run(sc, sc.analysis, rtol, repeats, MultiplierRule::kFixed);
+      CompareRules("engine (c)", rtol, fixed, error(fixed), o, error(o), json, &rules);
     }
   }
   // Linear solver: a chain of N rods (planar, revolute joints), 1 s, rtol 1e-6, dense vs KLU
@@ -187,6 +228,7 @@ int main(int argc, char** argv) {
   if (json)
     std::cout << nlohmann::json{{"repeats", repeats},
                                 {"work_precision", work_precision},
+                                {"multiplier_rule", rules},
                                 {"chains", chains}}
                      .dump(1)
               << std::endl;

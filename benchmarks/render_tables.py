@@ -291,6 +291,17 @@ def mbs_work_precision(res):
                   f"wall s (best of {doc['data']['repeats']})", "max error m"], rows), [doc]
 
 
+def mbs_multiplier_rule(res):
+    doc = res("mbs_work_precision")
+    rows = [[r["model"], f"{r['rtol']:.0e}", f"{r['fixed_multiplier_atol']:.1e}",
+             r["fixed"]["steps"], num(r["fixed_max_error_m"], ".1e"),
+             f"{r['follows_rtol_multiplier_atol']:.1e}", r["follows_rtol"]["steps"],
+             num(r["follows_rtol_max_error_m"], ".1e")]
+            for r in doc["data"]["multiplier_rule"]]
+    return table(["model", "rtol", "fixed: atol λ", "steps", "max error m",
+                  "follows rtol: atol λ", "steps", "max error m"], rows), [doc]
+
+
 def mbs_chains(res):
     doc = res("mbs_work_precision")
     rows = [[r["bodies"], r["unknowns"], r["linear_solver"], r["status"], r["steps"], r["jacobian_evals"],
@@ -319,7 +330,7 @@ def mbs_residual(res):
 TABLES = {f.__name__: f for f in [
     crank_modes, block_solve, crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
-    inline4_profile, mbs_work_precision, mbs_chains, mbs_residual]}
+    inline4_profile, mbs_work_precision, mbs_multiplier_rule, mbs_chains, mbs_residual]}
 
 
 def render_table(name, res):

@@ -7,7 +7,7 @@
 #
 # The libraries are static: CMake exports their PRIVATE dependencies as $<LINK_ONLY:...>, so
 # the consumer needs every one of those imported targets (SUNDIALS, KLU, CHOLMOD, METIS, gmsh,
-# HDF5, Spectra, Threads) as well as the PUBLIC ones (Eigen3, yaml-cpp): embConfig.cmake finds
+# HDF5, Spectra, muParser, Threads) as well as the PUBLIC ones (Eigen3, yaml-cpp): embConfig.cmake finds
 # them with find_dependency, using the Find modules of cmake/ installed next to it.
 # tests/consumer/ builds a small project against a staged install (the ctest
 # tools_install_consumer_test).

@@ -224,7 +224,7 @@ GeneratedBeamModel MakeBeamModelFromGeometry(const std::string& path,
   std::vector<Integrals> integrals;
   {
     GmshSession session(args);
-    GmshOpen(path, /*trusted=*/true);  // audited above unless trusted
+    GmshOpen(path, /*trusted=*/true, /*time_limited=*/!o.trust_scripts);  // audited above
     gmsh::vectorpair groups;
     GmshCall("read physical groups of", path, [&] { gmsh::model::getPhysicalGroups(groups, 3); });
     std::string found;

@@ -1,6 +1,7 @@
 #include "libemb/io/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -11,6 +12,32 @@
 #include "libemb/common/error.h"
 
 namespace emb {
+namespace {
+
+// Removes ".<name>.tmp.<pid>" files in `dir` whose process is gone: temporaries of an
+// earlier run of the same output that was killed outright (SIGKILL, power loss), which no
+// handler could remove. A temporary of a live process (another emb writing the same name,
+// which its lock refuses anyway) is left alone.
+void RemoveStaleTemporaries(const std::filesystem::path& dir, const std::string& name) {
+  namespace fs = std::filesystem;
+  const std::string prefix = "." + name + ".tmp.";
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string file = it->path().filename().string();
+    if (file.size() <= prefix.size() || file.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string pid_text = file.substr(prefix.size());
+    if (pid_text.size() > 9 || pid_text.find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
+    if (pid <= 0 || pid == ::getpid()) continue;
+    if (::kill(pid, 0) != 0 && errno == ESRCH) {
+      std::error_code rm;
+      fs::remove(it->path(), rm);
+    }
+  }
+}
+
+}  // namespace
 
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   namespace fs = std::filesystem;
@@ -20,6 +47,7 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   EMB_THROW_IF(!fs::is_directory(dir, ec),
                "output '" << path_ << "': directory '" << dir.string() << "' does not exist");
   EMB_THROW_IF(fs::is_directory(p, ec), "output '" << path_ << "' is a directory; expected a file name");
+  RemoveStaleTemporaries(dir, p.filename().string());
   temp_ = (dir / ("." + p.filename().string() + ".tmp." + std::to_string(::getpid()))).string();
   cleanup_ = CleanupOnSignal(temp_);
 }

@@ -5,7 +5,8 @@
 /// previous file (if any) untouched and removes the temporary; so does an interruption by
 /// SIGINT or SIGTERM when the tool's handler runs RemoveCleanupFilesNow() (signal_cleanup.h).
 /// A SIGKILL can leave the hidden temporary ".<name>.tmp.<pid>" behind, never a partial file
-/// under the target's name.
+/// under the target's name; the next AtomicFile for the same target removes such
+/// temporaries of processes that no longer run.
 
 #include <string>
 

@@ -31,7 +31,8 @@
 ///                        (gmsh's lexer would read part of them as script).
 /// The check is conservative: it looks at every token, also in macros and branches that never
 /// run, and at names that happen to equal a command. It does not bound what a script may
-/// compute (a loop may run long); the element-count estimate covers --size.
+/// compute (a loop may run long): GmshOpen reads an untrusted script under the tool's time
+/// limit (common/script_deadline.h); the element-count estimate covers --size.
 
 #include <string>
 #include <vector>

@@ -221,7 +221,7 @@ Mesh ReadMesh(const std::string& path, const MeshingOptions& options, const Prog
   {
   GmshSession session(args);
   ReportProgress(progress, geometry ? "meshing" : "reading mesh", 0.0);
-  GmshOpen(path, /*trusted=*/true);  // audited above unless trusted
+  GmshOpen(path, /*trusted=*/true, /*time_limited=*/!options.trust_scripts);  // audited above
   if (geometry && options.size > 0.0 && !options.force) CheckElementEstimate(path, options.size);
   if (geometry) {
     GmshCall("mesh", path, [&] {

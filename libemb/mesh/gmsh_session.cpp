@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/common/script_deadline.h"
 #include "libemb/mesh/gmsh_input_audit.h"
 #include "libemb/mesh/gmsh_reader.h"
 
@@ -69,8 +71,11 @@ void ThrowGmshError(const std::string& what, const std::string& path, const std:
 }
 }  // namespace internal
 
-void GmshOpen(const std::string& path, bool trusted) {
+void GmshOpen(const std::string& path, bool trusted, bool time_limited) {
   if (!trusted) AuditGmshInput(path);
+  // A script's loops and macros run while gmsh reads it: bounded by the tool's deadline.
+  std::optional<ScriptDeadline> deadline;
+  if (time_limited && GmshReadsAsScript(path)) deadline.emplace(path);
   GmshCall("open", path, [&] { gmsh::open(path); });
 }
 

@@ -52,7 +52,9 @@ void GmshCall(const std::string& what, const std::string& path, F&& f) {
 /// gmsh would read with it are audited first (AuditGmshInput): gmsh never sees a file that
 /// would run a command, write or delete files or stop the process.
 /// @throws InputError for a refused file or when gmsh fails (GmshCall).
-void GmshOpen(const std::string& path, bool trusted);
+/// `time_limited`: a script (GmshReadsAsScript) is read under a ScriptDeadline
+/// (common/script_deadline.h): the tool's limit on untrusted scripts applies.
+void GmshOpen(const std::string& path, bool trusted, bool time_limited = false);
 
 /// The gmsh arguments {"-setnumber", name, value, ...} that set the `DefineConstant`
 /// parameters `overrides` of the .geo file `path`.

@@ -4,6 +4,7 @@
 
 #include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
+#include "libemb/mbs/analysis/joint_coordinates.h"
 #include "libemb/mbs/core/rotation.h"
 
 namespace emb::scene {
@@ -51,6 +52,12 @@ std::vector<std::string> ValidChannelNames(const mbs::System& system) {
   }
   for (const auto& s : system.sensors())
     for (const char* c : {"dx", "dy", "dz", "rx", "ry", "rz"}) n.push_back(s.name + "." + c);
+  for (const auto& e : system.elements()) {
+    if (mbs::HasJointCoordinate(e, mbs::JointCoordinate::kRotation))
+      for (const char* c : {"angle", "angle_rate"}) n.push_back(e.name + "." + c);
+    if (mbs::HasJointCoordinate(e, mbs::JointCoordinate::kTranslation))
+      for (const char* c : {"travel", "travel_rate"}) n.push_back(e.name + "." + c);
+  }
   for (const char* c : {"kinetic", "gravity", "elastic", "total"})
     n.push_back(std::string("energy.") + c);
   n.push_back("residual.position");
@@ -69,6 +76,20 @@ ChannelSet::ChannelSet(const mbs::System& system, const std::vector<std::string>
                                     << system.force_elements()[fe]->name()
                                     << "' reports no load (F/T channels exist for bushings and "
                                        "journal bearings)");
+    if (it == valid.end() && c.find('.') == c.rfind('.') &&
+        ElementIndex(system, c.substr(0, c.find('.'))) >= 0) {  // <joint>.<coordinate>
+      const mbs::ConstraintElement& e = system.elements()[ElementIndex(system, c.substr(0, c.find('.')))];
+      std::string has;
+      for (const auto& v : valid)
+        if (v.rfind(e.name + ".", 0) == 0 && v.find('.', e.name.size() + 1) == std::string::npos)
+          has += (has.empty() ? "" : ", ") + v;
+      EMB_THROW(InputError, "output channel '" << c << "': '" << e.name << "' has "
+                                               << (has.empty() ? std::string("no coordinate "
+                                                                 "channels (only revolute, "
+                                                                 "cylindrical and translational "
+                                                                 "joints have them)")
+                                                               : has));
+    }
     EMB_THROW_IF(it == valid.end(), "output channel '" << c << "' is unknown"
                                                        << DidYouMean(c, valid)
                                                        << " (channels look like crank.p.x, "
@@ -90,6 +111,9 @@ ChannelSet::ChannelSet(const mbs::System& system, const std::vector<std::string>
     } else if (SensorIndex(system, owner) >= 0) {
       ch = {Channel::Kind::kSensor, SensorIndex(system, owner),
             comp_index({"dx", "dy", "dz", "rx", "ry", "rz"})};
+    } else if (dot1 == dot2 && ElementIndex(system, owner) >= 0) {  // <joint>.angle, ...
+      ch = {Channel::Kind::kJoint, ElementIndex(system, owner),
+            comp_index({"angle", "angle_rate", "travel", "travel_rate"})};
     } else if (quantity == "F" && comp == "norm") {
       ch = {Channel::Kind::kForceElementNorm, ForceElementIndex(system, owner), 0};
     } else if ((quantity == "F" || quantity == "T") && ElementIndex(system, owner) < 0) {
@@ -141,6 +165,8 @@ double ChannelSet::Value(const mbs::Sample& s, int k) const {
       return s.force_loads.row(c.index).head<3>().norm();
     case Channel::Kind::kSensor:
       return s.sensors(c.index, c.component);
+    case Channel::Kind::kJoint:
+      return s.joints(c.index, c.component);
     case Channel::Kind::kForce:
       return s.reactions(c.index, c.component);
     case Channel::Kind::kTorque:

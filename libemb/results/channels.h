@@ -6,7 +6,10 @@
 /// <element>.F.{x,y,z} and <element>.T.{x,y,z} (reactions, joint axes; for a coupler at its
 /// first joint), <coupler>.F2.{x,y,z} and <coupler>.T2.{x,y,z} (a coupler's reaction at its
 /// second joint), <force element>.F.{x,y,z} and .T.{x,y,z} (its load, ForceElement::CalcLoad),
-/// <force element>.F.norm (|F|), <sensor>.{dx,dy,dz,rx,ry,rz},
+/// <force element>.F.norm (|F|), <sensor>.{dx,dy,dz,rx,ry,rz}, <joint>.angle (rad,
+/// unwrapped) and <joint>.angle_rate (rad/s) of revolute and cylindrical joints,
+/// <joint>.travel (m) and <joint>.travel_rate (m/s) of translational and cylindrical joints
+/// (mbs/analysis/joint_coordinates.h),
 /// energy.{kinetic,gravity,elastic,total}, residual.{position,velocity}.
 
 #include <string>
@@ -43,9 +46,10 @@ class ChannelSet {
       kResidual,
       kForceElement,
       kForceElementNorm,
-      kSensor
+      kSensor,
+      kJoint
     } kind;
-    int index;      // body, reaction port, force element or sensor
+    int index;      // body, reaction port, force element, sensor or joint element
     int component;  // 0..5
   };
   const mbs::System& system_;

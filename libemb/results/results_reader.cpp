@@ -45,7 +45,7 @@ ResultsStatus ReadStatus(const H5File& h5, const std::string& path) {
 // apart, so a reader uses the rows they all have.
 constexpr const char* kSeries[] = {"/state/q",         "/state/v",         "/reactions/force",
                                    "/reactions/torque", "/energy",          "/residuals",
-                                   "/forces/load",      "/sensors"};
+                                   "/forces/load",      "/sensors",         "/joints"};
 // Where a body's values sit in a row of /state/q and /state/v: the layout record the writer
 // stores (version 3), or for version 2 files mbs::StateLayout's, which they were written with.
 struct StateColumns {
@@ -55,7 +55,7 @@ struct StateColumns {
 
 struct ResultsFile {
   H5File h5;
-  std::vector<std::string> bodies, ports, sensors, forces;
+  std::vector<std::string> bodies, ports, sensors, forces, joints;
   std::vector<double> time;
   std::size_t n{0};
   ResultsStatus status;
@@ -74,6 +74,7 @@ struct ResultsFile {
     ports = h5.ReadStrings("/model/reaction_ports");
     if (h5.Exists("/model/sensors")) sensors = h5.ReadStrings("/model/sensors");
     if (h5.Exists("/model/force_elements")) forces = h5.ReadStrings("/model/force_elements");
+    if (h5.Exists("/model/joints")) joints = h5.ReadStrings("/model/joints");
     time = h5.ReadDoubles("/time");
     n = time.size();
     for (const char* s : kSeries)
@@ -199,11 +200,26 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
                                                        "sensor component", channel));
     return out;
   }
+  // <joint>.angle|angle_rate|travel|travel_rate (the /joints columns, version 4).
+  if (last != std::string::npos &&
+      std::find(f.joints.begin(), f.joints.end(), channel.substr(0, last)) != f.joints.end()) {
+    const std::vector<std::string> cols{"angle", "angle_rate", "travel", "travel_rate"};
+    const std::size_t k =
+        std::find(f.joints.begin(), f.joints.end(), channel.substr(0, last)) - f.joints.begin();
+    out.values = f.Column("/joints", cols.size() * k + FindName(cols, channel.substr(last + 1),
+                                                                "joint coordinate", channel));
+    EMB_THROW_IF(std::any_of(out.values.begin(), out.values.end(),
+                             [](double v) { return std::isnan(v); }),
+                 "channel '" << channel << "': joint '" << channel.substr(0, last)
+                             << "' has no such coordinate (angle: revolute and cylindrical "
+                                "joints; travel: translational and cylindrical joints)");
+    return out;
+  }
   EMB_THROW_IF(dot1 == std::string::npos || dot1 == 0,
                "channel '" << channel
                            << "': expected <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z}, "
-                              "<sensor>.dx|dy|dz|rx|ry|rz or "
-                              "energy.{kinetic,gravity,elastic,total,dissipated}");
+                              "<sensor>.dx|dy|dz|rx|ry|rz, <joint>.angle|angle_rate|travel|"
+                              "travel_rate or energy.{kinetic,gravity,elastic,total,dissipated}");
   const std::string owner = channel.substr(0, dot1);
   const std::string quantity = channel.substr(dot1 + 1, dot2 - dot1 - 1);
   const int comp = Component(channel.substr(dot2 + 1));
@@ -254,8 +270,22 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
 ResultsChannel ReadBodyRotationAngle(const std::string& path, const std::string& body,
                                      const std::string& axis, double start_deg) {
   const ResultsFile f(path);
+  if (std::find(f.bodies.begin(), f.bodies.end(), body) == f.bodies.end() &&
+      std::find(f.joints.begin(), f.joints.end(), body) != f.joints.end()) {
+    // A revolute joint's own unwrapped angle (the /joints column), in degrees.
+    ResultsChannel out = ReadResultsChannel(path, body + ".angle");
+    const double shift = out.values.empty() ? 0.0 : start_deg - out.values.front() * 180.0 /
+                                                                    std::numbers::pi;
+    for (double& x : out.values) x = x * 180.0 / std::numbers::pi + shift;
+    return out;
+  }
   const int a = Component(axis);
   EMB_THROW_IF(a < 0, "rotation angle axis: expected x, y or z, got '" << axis << "'");
+  std::vector<std::string> candidates = f.bodies;
+  candidates.insert(candidates.end(), f.joints.begin(), f.joints.end());
+  EMB_THROW_IF(std::find(f.bodies.begin(), f.bodies.end(), body) == f.bodies.end(),
+               "crank angle: '" << body << "' is neither a body nor a joint with an angle"
+                                << DidYouMean(body, candidates));
   const std::size_t b = FindName(f.bodies, body, "body", body + " (angle)");
   const Eigen::Vector3d ax = Eigen::Vector3d::Unit(a);
   const Eigen::Vector3d u = Eigen::Vector3d::Unit((a + 1) % 3), v = ax.cross(u);

@@ -30,7 +30,9 @@ struct ResultsStatus {
 ResultsStatus ReadResultsStatus(const std::string& path);
 
 /// Channels: <body>.p|v|omega.{x,y,z} (omega in W, as in the CSV), <port>.F|T.{x,y,z}
-/// (reactions in J's axes), energy.{kinetic,gravity,elastic,total,dissipated}.
+/// (reactions in J's axes), <force element>.F|T.{x,y,z}, <sensor>.dx|dy|dz|rx|ry|rz,
+/// <joint>.angle|angle_rate|travel|travel_rate (rad, rad/s, m, m/s; the angle unwrapped),
+/// energy.{kinetic,gravity,elastic,total,dissipated}.
 /// @throws InputError for a file that is not emb-mbs-results or an unknown channel (with
 /// a did-you-mean).
 ResultsChannel ReadResultsChannel(const std::string& path, const std::string& channel);
@@ -38,6 +40,8 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
 /// The rotation angle [deg] of `body` about the world axis `axis` ("x", "y" or "z"),
 /// unwrapped across turns and shifted so that it starts at `start_deg`: the angle of the
 /// body's image of a unit vector u normal to the axis, atan2((R u) . (a x u), (R u) . u).
+/// If `body` names no body but a joint with an angle (/model/joints), that joint's unwrapped
+/// angle (joint_coordinates.h) instead, and `axis` is not used.
 /// @throws InputError as ReadResultsChannel, for an unknown body or axis.
 ResultsChannel ReadBodyRotationAngle(const std::string& path, const std::string& body,
                                      const std::string& axis, double start_deg);

@@ -3,6 +3,7 @@
 #include <iomanip>
 
 #include "libemb/common/error.h"
+#include "libemb/mbs/analysis/joint_coordinates.h"
 #include "libemb/mbs/core/rotation.h"
 
 namespace emb::scene {
@@ -15,6 +16,16 @@ std::vector<std::string> ElementTypes(const mbs::System& s) {
                 : e.kind == mbs::ElementKind::kMotion ? "motion"
                                                       : "coupler");
   return t;
+}
+
+// Elements with a joint coordinate (joint_coordinates.h): their indices.
+std::vector<int> CoordinateJoints(const mbs::System& s) {
+  std::vector<int> k;
+  for (std::size_t e = 0; e < s.elements().size(); ++e)
+    if (mbs::HasJointCoordinate(s.elements()[e], mbs::JointCoordinate::kRotation) ||
+        mbs::HasJointCoordinate(s.elements()[e], mbs::JointCoordinate::kTranslation))
+      k.push_back(static_cast<int>(e));
+  return k;
 }
 
 Eigen::VectorXd Euler(const mbs::System& s, const Eigen::VectorXd& q) {
@@ -32,7 +43,7 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
                              const std::string& scene, const std::string& analysis)
     : system_(system), file_(path) {
   file_.SetAttribute("/", "format", std::string("emb-mbs-results"));
-  file_.SetAttribute("/", "version", 3LL);
+  file_.SetAttribute("/", "version", 4LL);
   file_.SetAttribute("/", "units", std::string("SI (m, kg, s, N, rad)"));
   file_.SetAttribute("/", "scene", scene);
   file_.SetAttribute("/", "analysis", analysis);
@@ -129,6 +140,18 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
                        std::string("per /model/sensors: position of I in J's axes [m], "
                                    "rotation vector of R_J^T R_I [rad]"));
   }
+  joint_elements_ = CoordinateJoints(system);
+  std::vector<std::string> joints;
+  for (int e : joint_elements_) joints.push_back(system.elements()[e].name);
+  file_.WriteStrings("/model/joints", joints);
+  if (!joints.empty()) {
+    joints_ = file_.AddSeries("/joints", mbs::kJointCoordinateColumns *
+                                             static_cast<int>(joints.size()));
+    file_.SetAttribute("/joints", "columns",
+                       std::string("per /model/joints: angle [rad] (unwrapped), angle rate "
+                                   "[rad/s], travel [m], travel rate [m/s] (NaN: the joint has "
+                                   "no such coordinate)"));
+  }
   file_.Flush();
 }
 
@@ -142,6 +165,13 @@ void ResultsWriter::Write(const mbs::Sample& s) {
   if (sensors_ >= 0) {
     const Eigen::MatrixXd rows = s.sensors.transpose();
     file_.Append(sensors_, rows.data());
+  }
+  if (joints_ >= 0) {
+    Eigen::VectorXd row(mbs::kJointCoordinateColumns * joint_elements_.size());
+    for (std::size_t k = 0; k < joint_elements_.size(); ++k)
+      row.segment<mbs::kJointCoordinateColumns>(mbs::kJointCoordinateColumns * k) =
+          s.joints.row(joint_elements_[k]).transpose();
+    file_.Append(joints_, row.data());
   }
   if (eta_ >= 0) {
     const mbs::StateLayout& L = system_.layout();
@@ -186,7 +216,8 @@ std::uint64_t ResultsWriter::BytesPerSample(const mbs::System& system) {
   const std::uint64_t np = system.reaction_ports().size();
   const std::uint64_t doubles = 1 + 7 * nb + 6 * nb + 6 * nb + 3 * nb + system.num_equations() +
                                 6 * np + 5 + 2 + 2 * system.layout().num_elastic_total() +
-                                6 * system.force_elements().size() + 6 * system.sensors().size();
+                                6 * system.force_elements().size() + 6 * system.sensors().size() +
+                                mbs::kJointCoordinateColumns * CoordinateJoints(system).size();
   return 8 * doubles;
 }
 

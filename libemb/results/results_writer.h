@@ -10,7 +10,7 @@
 /// "interrupted" (SIGINT/SIGTERM) or "failed" (an error), with `message` and `t_reached`
 /// (the last sample written). Readers warn on anything but "success" (results_reader.h).
 ///
-/// HDF5 layout (format "emb-mbs-results", version 3, SI units; N samples, nb moving bodies,
+/// HDF5 layout (format "emb-mbs-results", version 4, SI units; N samples, nb moving bodies,
 /// m equations, ne constraint elements, np >= ne reaction ports; row-major as h5py shows
 /// it):
 ///   /                   attrs format, version, units, scene, analysis, status, message,
@@ -45,6 +45,11 @@
 ///                       marker's body in its second marker's axes (NaN if not reported)
 ///   /sensors            [N, 6 ns] per sensor: position of marker I in J's axes (m) and the
 ///                       rotation vector of R_J^T R_I (rad)
+///   /model/joints       [nj] the joints with a coordinate (revolute, cylindrical,
+///                       translational) (version 4)
+///   /joints             [N, 4 nj] per joint: angle (rad, unwrapped across turns), angle
+///                       rate (rad/s), travel (m), travel rate (m/s); NaN where the joint has
+///                       no such coordinate (mbs/analysis/joint_coordinates.h) (version 4)
 ///   with flexible bodies also
 ///   /model/flexible_bodies [nf] names, /model/num_modes [nf]
 ///   /state/eta, /state/eta_dot [N, sum num_modes] modal coordinates and rates, body after
@@ -94,7 +99,8 @@ class ResultsWriter {
   const mbs::System& system_;
   TimeSeriesFile file_;
   int time_, q_, v_, vdot_, euler_, lambda_, force_, torque_, energy_, residuals_;
-  int eta_{-1}, eta_dot_{-1}, loads_{-1}, sensors_{-1};
+  int eta_{-1}, eta_dot_{-1}, loads_{-1}, sensors_{-1}, joints_{-1};
+  std::vector<int> joint_elements_;  // System::elements() index of each /model/joints entry
 };
 
 /// A CSV file with a header line "t,<channel>,..." and one line per sample; the channels

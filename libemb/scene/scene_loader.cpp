@@ -286,8 +286,12 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   s->newton_convergence_factor = r.GetDouble(
       "newton_convergence_factor", s->newton_convergence_factor, R::Open(0.0, 1.0));
   s->multiplier_atol = r.GetDouble("multiplier_atol", s->multiplier_atol, R::NonNegative("N"));
-  s->multiplier_atol_relative =
-      r.GetDouble("multiplier_atol_relative", s->multiplier_atol_relative, R::Open(0.0, 1.0));
+  if (r.Has("multiplier_atol_relative"))
+    s->multiplier_atol_relative = r.GetDouble("multiplier_atol_relative", R::Open(0.0, 1.0));
+  else
+    r.Optional("multiplier_atol_relative");
+  s->multiplier_atol_rtol_factor = r.GetDouble(
+      "multiplier_atol_rtol_factor", s->multiplier_atol_rtol_factor, R::Open(0.0, 1.0e6));
   s->modal_velocity_atol_by_frequency =
       r.GetBool("modal_velocity_atol_by_frequency", s->modal_velocity_atol_by_frequency);
   s->ida.max_step = r.GetDouble("max_step", s->ida.max_step, R::NonNegative("s"));
@@ -331,16 +335,40 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
                Where(file, node) << ": analysis: expected rtol > 0 and atol > 0, got "
                                  << s->ida.rtol << " and " << s->ida.atol);
   EMB_THROW_IF(!(s->atol_floor_relative >= 0 && s->multiplier_atol >= 0 &&
-                 s->multiplier_atol_relative > 0 && s->initial_step_fraction >= 0),
+                 s->multiplier_atol_relative >= 0 && s->multiplier_atol_rtol_factor > 0 &&
+                 s->initial_step_fraction >= 0),
                Where(file, node) << ": analysis: expected atol_floor_relative >= 0, "
-                                    "multiplier_atol >= 0, multiplier_atol_relative > 0 and "
+                                    "multiplier_atol >= 0, multiplier_atol_relative >= 0, "
+                                    "multiplier_atol_rtol_factor > 0 and "
                                     "initial_step_fraction >= 0, got "
                                  << s->atol_floor_relative << ", " << s->multiplier_atol << ", "
-                                 << s->multiplier_atol_relative << " and "
+                                 << s->multiplier_atol_relative << ", "
+                                 << s->multiplier_atol_rtol_factor << " and "
                                  << s->initial_step_fraction);
   EMB_THROW_IF(s->static_max_iterations < 1,
                Where(file, node) << ": analysis static_iterations: expected >= 1, got "
                                  << s->static_max_iterations);
+}
+
+// `planar: true` (the plane normal is the world z axis) or `planar: {normal: [x, y, z]}`
+// (mbs::AnalysisSettings::plane_normal); `planar: false` is the default, a 3-D model.
+Vector3d ReadPlanar(const YAML::Node& node, const std::string& file) {
+  if (node.IsScalar()) {
+    try {
+      return node.as<bool>() ? Vector3d(Vector3d::UnitZ()) : Vector3d(Vector3d::Zero());
+    } catch (const YAML::Exception&) {
+      EMB_THROW(InputError, Where(file, node) << ": planar: expected true, false or "
+                                                 "{normal: [x, y, z]}, got '"
+                                              << node.Scalar() << "'");
+    }
+  }
+  MapReader r(node, file, "planar");
+  const Vector3d n = r.GetVector3("normal");
+  r.Finish();
+  EMB_THROW_IF(!(n.norm() > 0.0), Where(file, node) << ": planar normal: expected a non-zero "
+                                                        "vector, got ["
+                                                     << n.transpose() << "]");
+  return n.normalized();
 }
 
 void ReadOutput(const YAML::Node& node, const std::string& file, OutputSpec* o) {
@@ -386,6 +414,8 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   YAML::Node analysis_node = r.Optional("analysis");
   if (analysis_node) ReadAnalysis(analysis_node, source, &scene.analysis, &scene.steady_state);
   scene.analysis.installed_bases = parts.installed_bases;
+  if (const YAML::Node n = r.Optional("planar"))
+    scene.analysis.plane_normal = ReadPlanar(n, source);
   if (const YAML::Node n = r.Optional("output")) ReadOutput(n, source, &scene.output);
   r.Finish();
   scene.system.Finalize();

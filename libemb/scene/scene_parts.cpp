@@ -1,12 +1,14 @@
 #include "libemb/scene/scene_parts.h"
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
 #include "libemb/mbs/forces/applied_load.h"
 #include "libemb/mbs/forces/bushing.h"
+#include "libemb/mbs/core/expression_function.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/forces/spring_damper.h"
 #include "libemb/scene/engine_parts.h"
@@ -200,9 +202,34 @@ mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
   } else {
     r.Optional("cylinder_pressure");
   }
+  if (r.Has("expression")) {
+    // expression: "formula of t", constants: {name: value}, scale: s (expression_function.h)
+    ++given;
+    const std::string text = r.GetString("expression");
+    std::map<std::string, double> constants;
+    if (const YAML::Node c = r.Optional("constants")) {
+      EMB_THROW_IF(!c.IsMap(), Where(file, c) << ": " << what
+                                              << " constants: expected a map {name: value}");
+      for (const auto& kv : c)
+        constants[kv.first.Scalar()] =
+            AsDouble(kv.second, file, what + " constant '" + kv.first.Scalar() + "'");
+    }
+    const double scale =
+        r.GetDouble("scale", mbs::ExpressionFunction::kDefaultScale, NumberRange::Positive());
+    try {
+      f = mbs::TimeFunction::Expression(text, constants, scale);
+    } catch (const InputError& e) {
+      EMB_THROW(InputError, Where(file, n) << ": " << what << " " << e.what());
+    }
+  } else {
+    for (const char* key : {"constants", "scale"})
+      EMB_THROW_IF(r.Has(key), Where(file, n) << ": " << what << " " << key
+                                              << ": only with an expression");
+    r.Optional("expression");
+  }
   r.Finish();
   CheckExactlyOne(given, n, file, what,
-                  "constant, polynomial, rpm, harmonic, table, cylinder_pressure");
+                  "constant, polynomial, rpm, harmonic, table, cylinder_pressure, expression");
   return f;
 }
 

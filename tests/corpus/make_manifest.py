@@ -1,16 +1,19 @@
 #!/usr/bin/python3
-"""Writes tests/corpus/manifest.json: emb's corpus of bad inputs and faults (issue 14).
+"""emb's corpus of bad inputs and faults (issue 14), as data: run_corpus.py imports this
+module and runs CASES with FIXTURES (nothing generated is committed).
 
-    /usr/bin/python3 tests/corpus/make_manifest.py      # then commit manifest.json
-    /usr/bin/python3 tests/corpus/make_manifest.py --check   # fails if manifest.json is stale
+    /usr/bin/python3 tests/corpus/make_manifest.py                 # counts by category
+    /usr/bin/python3 tests/corpus/make_manifest.py --check 300     # fails below 300 cases
+    /usr/bin/python3 tests/corpus/make_manifest.py --write m.json  # the cases as JSON
 
 The cases are built from reading the code — every option of every subcommand, every scene
 key, every dataset and attribute a reader uses — not only from the classes of the issue.
 Each case: a name, a category, setup steps, the command, the exit code it must end with,
-fragments its stderr must hold, and files that must not exist or not change afterwards
-(run_corpus.py says what the steps mean). Placeholders: {emb} the executable, {src} the
-repository, {fix} the fixtures (bar.geo, bar.msh, body.h5, pendulum.yaml, pendulum.h5,
-disc.yaml, disc.h5), {work} the case's directory (also the working directory).
+fragments its stderr must hold (and must not hold), and files that must not exist or not
+change afterwards (run_corpus.py says what the steps mean). Placeholders: {emb} the
+executable, {src} the repository, {fix} the fixtures (bar.geo, bar.msh, body.h5,
+pendulum.yaml, pendulum.h5, disc.yaml, disc.h5), {work} the case's directory (also the
+working directory).
 """
 
 import base64
@@ -23,11 +26,20 @@ NAMES = set()
 
 
 def case(name, category, cmd, exit, stderr=(), setup=(), absent=(), unchanged=(), exists=(),
-         h5_attr=(), timeout=60, signal=None, keep_temporaries=False):
+         h5_attr=(), timeout=60, signal=None, keep_temporaries=False, stderr_absent=(),
+         then=None, env=None):
+    """`then`: a second command run in the same directory after the first (and its checks
+    of files) with its own expected exit code: {"cmd": [...], "exit": N}."""
     assert name not in NAMES, name
     NAMES.add(name)
     c = {"name": name, "category": category, "cmd": ["{emb}", *cmd], "exit": exit,
          "stderr": list(stderr), "setup": [list(s) for s in setup]}
+    if stderr_absent:
+        c["stderr_absent"] = list(stderr_absent)
+    if then:
+        c["then"] = {"cmd": ["{emb}", *then["cmd"]], "exit": then["exit"]}
+    if env:
+        c["env"] = dict(env)
     for key, value in (("absent", absent), ("unchanged", unchanged), ("exists", exists),
                        ("h5_attr", h5_attr)):
         if value:
@@ -164,6 +176,32 @@ for key, setting in {"unknown": "nope=1", "nan": "h=nan", "inf": "h=inf", "neg_i
                      "trailing": "h=1x", "huge": "h=1e400"}.items():
     case(f"geo_set_{key}", "geo", ["mesh", "{fix}/bar.geo", "-q", "--set", setting], 1,
          ["--set" if key not in ("unknown",) else "no parameter"], timeout=20)
+# Scripts that never finish while gmsh reads them (gmsh cannot be stopped): emb refuses them
+# after EMB_GEO_SECONDS (here 3 s; 120 s by default), naming the file.
+ENDLESS_GEO = {
+    "loop_1e12": "For i In {1:1e12}\nEndFor\n",
+    "nested_loops": "For i In {1:1e6}\nFor j In {1:1e6}\nEndFor\nEndFor\n",
+    "macro_calls_itself": "Macro M\n  Call M;\nReturn\nCall M;\n",
+    "point_flood": "For i In {1:5e7}\n  Point(1000 + i) = {i, 0, 0};\nEndFor\n",
+}
+FAST_DEADLINE = {"EMB_GEO_SECONDS": "3"}
+for key, script in ENDLESS_GEO.items():
+    case(f"geo_endless_{key}", "geo", ["mesh", "part.geo", "-q"], 1,
+         ["refusing", "part.geo", "still reading"], [("write", "part.geo", script + BOX)],
+         timeout=40, env=FAST_DEADLINE)
+case("geo_endless_reduce", "geo", ["reduce", "part.geo", "-q", "-o", "b.h5"], 1,
+     ["refusing", "still reading"],
+     [("write", "part.geo", ENDLESS_GEO["loop_1e12"] + BOX)], absent=["b.h5"], timeout=40,
+     env=FAST_DEADLINE)
+case("geo_endless_beam_part", "geo", ["run", "s.yaml", "-q", "-o", "r.h5"], 1,
+     ["refusing", "part.geo", "still reading"],
+     [("write", "part.geo", ENDLESS_GEO["macro_calls_itself"] + BOX),
+      ("write", "s.yaml", "bodies:\n  - {name: crank, model: beam, geometry: part.geo}\n"
+                          "analysis: {type: assemble}\n")], absent=["r.h5"], timeout=40,
+     env=FAST_DEADLINE)
+for key, value in {"text": "soon", "zero": "0", "negative": "-5", "nan": "nan"}.items():
+    case(f"geo_deadline_env_{key}", "geo", ["mesh", "{fix}/bar.geo", "-q"], 1,
+         ["EMB_GEO_SECONDS"], env={"EMB_GEO_SECONDS": value})
 case("geo_set_on_mesh_file", "geo", ["mesh", "{fix}/bar.msh", "-q", "--set", "h=1"], 1,
      ["parameters can only be set"])
 case("geo_beam_parts_for_mesh", "geo", ["mesh", "{src}/meshes/tube.geo", "-q", "--set",
@@ -310,6 +348,18 @@ case("cli_run_huge_output_refused", "cli", [*RUN, "--t-end", "1e3", "--dt", "1e-
      ["--force"], absent=["out.h5"])
 case("cli_run_tiny_dt_refused", "cli", [*RUN, "--dt", "1e-300"], 1, ["--force"],
      absent=["out.h5"])
+# Forced, the output times are made as the run goes (not all up front: 10^12 of them would
+# not fit in memory): the run starts at once and stops on SIGINT with its file marked.
+case("cli_run_forced_huge_samples_runs", "cli",
+     ["run", "{fix}/pendulum.yaml", "-q", "-o", "r.h5", "--t-end", "1e9", "--dt", "1e-3",
+      "--force"], "signal", [], signal={"sig": "INT", "when": "exists:r.h5", "delay": 1.0},
+     h5_attr=[("r.h5", "status", "interrupted")], timeout=30)
+case("cli_run_forced_dt_below_resolution", "cli",
+     ["run", "{fix}/pendulum.yaml", "-q", "-o", "r.h5", "--t-end", "1e15", "--dt", "1e-300",
+      "--force"], 1, ["output_step", "output times"], absent=["r.h5"], timeout=30)
+case("cli_run_forced_too_many_times", "cli",
+     ["run", "{fix}/pendulum.yaml", "-q", "--no-output", "--t-end", "1e300", "--dt", "1e-3",
+      "--force"], 1, ["2^53"], timeout=30)
 case("cli_run_no_output_samples_refused", "cli",
      ["run", "{fix}/pendulum.yaml", "-q", "--no-output", "--t-end", "1e9"], 1, ["samples"])
 DOF = ["dof", "{fix}/pendulum.yaml", "-q"]
@@ -352,6 +402,16 @@ case("cli_compare_report_dir_missing", "cli", [*COMPARE, "--report-dir", "nowher
 case("cli_inspect_missing", "cli", ["inspect", "nowhere.h5", "-q"], 1, ["nowhere.h5"])
 case("cli_inspect_wrong_hash", "cli",
      ["inspect", "{fix}/body.h5", "-q", "--expect-mesh-hash", "0123"], 1, ["stale"])
+# An empty path (an unset shell variable) is no path: refused, not "no option".
+for key, cmd in {"run_o": ["run", "{fix}/pendulum.yaml", "-q", "-o", ""],
+                 "run_csv": ["run", "{fix}/pendulum.yaml", "-q", "--no-output", "--csv", ""],
+                 "modes_o": ["modes", "{fix}/bar.geo", "-q", "-o", ""],
+                 "reduce_o": ["reduce", "{fix}/bar.geo", "-q", "-i", "x0", "-o", ""],
+                 "save_mesh": ["mesh", "{fix}/bar.geo", "-q", "--save-mesh", ""],
+                 "spectrum_csv": ["spectrum", "{fix}/disc.h5", "-q", "--channel", "disc.omega.x",
+                                  "--angle", "disc", "--csv", ""],
+                 "report_dir": ["compare", "{fix}/bar.geo", "-q", "--report-dir", ""]}.items():
+    case(f"cli_empty_path_{key}", "cli", cmd, 2, ["empty"], timeout=30)
 case("cli_unknown_subcommand", "cli", ["nonsense"], 2, ["unknown subcommand"])
 case("cli_no_subcommand", "cli", [], 2, [])
 case("cli_unknown_option", "cli", ["modes", "{fix}/bar.geo", "--frobnicate"], 2, [])
@@ -425,6 +485,7 @@ ANALYSIS_BAD = {
     "initial_step_fraction": {"neg": "-1", "two": "2"},
     "multiplier_atol": {"neg": "-1", "nan": ".nan"},
     "multiplier_atol_relative": {"zero": "0", "nan": ".nan"},
+    "multiplier_atol_rtol_factor": {"zero": "0", "neg": "-1", "nan": ".nan", "huge": "1e9"},
     "max_step": {"neg": "-1", "nan": ".nan"},
     "max_steps": {"neg": "-5", "zero": "0", "huge": "1e30", "fraction": "2.5"},
     "assembly_tolerance": {"zero": "0", "nan": ".nan"},
@@ -516,6 +577,26 @@ FUNCTION_BAD = {
     "cylinder_both_targets": ("{cylinder_pressure: {heat_released: 1000, peak_pressure: 7.0e6}}", ["at most one"]),
     "cylinder_rod_short": ("{cylinder_pressure: {rod: 0.01}}", ["rod"]),
 }
+FUNCTION_BAD.update({
+    "expression_syntax": ('{expression: "sin(t"}', ["expression"]),
+    "expression_unknown_name": ('{expression: "omega*t"}', ["omega"]),
+    "expression_assignment": ('{expression: "t = 3"}', ["assigns"]),
+    "expression_two_results": ('{expression: "t, 2*t"}', ["one formula"]),
+    "expression_empty": ('{expression: ""}', ["empty"]),
+    "expression_not_text": ("{expression: [1, 2]}", ["expression"]),
+    "expression_huge": ('{expression: "' + "1+" * 3000 + 't"}', ["at most"]),
+    "expression_string_function": ('{expression: "strfun1(\\"x\\")"}', ["expression"]),
+    "expression_constant_nan": ('{expression: "a*t", constants: {a: .nan}}', ["constant 'a'"]),
+    "expression_constant_text": ('{expression: "a*t", constants: {a: fast}}', ["constant 'a'"]),
+    "expression_constants_list": ('{expression: "t", constants: [1, 2]}', ["constants"]),
+    "expression_constant_bad_name": ('{expression: "t", constants: {"2a": 1}}', ["name"]),
+    "expression_constant_pi": ('{expression: "t", constants: {pi: 3}}', ["taken"]),
+    "expression_scale_zero": ('{expression: "t", scale: 0}', ["scale"]),
+    "expression_scale_nan": ('{expression: "t", scale: .nan}', ["scale"]),
+    "constants_without_expression": ("{rpm: 60, constants: {a: 1}}", ["only with an expression"]),
+    "scale_without_expression": ("{rpm: 60, scale: 0.1}", ["only with an expression"]),
+    "expression_and_rpm": ('{expression: "t", rpm: 60}', ["exactly one"]),
+})
 for key, (func, frags) in FUNCTION_BAD.items():
     scene(f"function_{key}", replaced("analysis:", MOTION.replace("FUNC", func)), 1, frags)
 scene("motion_unknown_joint", replaced("analysis:", MOTION.replace("FUNC", "{rpm: 60}").replace("hinge", "hinj")), 1, ["hinj"])
@@ -577,6 +658,20 @@ TOP_BAD = {
 }
 for key, (text, frags) in TOP_BAD.items():
     scene(f"top_{key}", text, 1, frags, timeout=30)
+
+# Names that would make ambiguous channels ("<name>.<quantity>") or garbled lists.
+for key, (old_text, new_text, frags) in {
+        "body_with_dot": ("name: rod,", "name: rod.x,", ["rod.x", "'.'"]),
+        "joint_with_dot": ("name: hinge,", "name: hinge.F,", ["hinge.F", "'.'"]),
+        "body_with_space": ("name: rod,", "name: rod x,", ["rod x", "spaces"]),
+        "body_with_newline": ("name: rod,", 'name: "ro\\nd",', ["spaces"]),
+        "body_empty_name": ("name: rod,", 'name: "",', ["non-empty"]),
+        "sensor_with_dot": ("analysis:", "sensors:\n  - {name: s.t, i: rod_top, j: pivot}\nanalysis:",
+                            ["s.t"]),
+        "force_with_dot": ("analysis:", "forces:\n  - {name: k.1, type: spring-damper, i: rod_top, "
+                                        "j: pivot, stiffness: 10}\nanalysis:", ["k.1"]),
+}.items():
+    scene(f"name_{key}", replaced(old_text, new_text), 1, frags)
 
 # Outputs named by the scene.
 case("scene_output_absolute_outside", "scene", ["run", "s.yaml", "-q"], 1, ["outside"],
@@ -804,12 +899,81 @@ for key, y0, load, integrator, status in (
          3, ["journal bearing 'brg'", "eccentricity ratio"],
          [("write", "s.yaml", BEARING.replace("Y0", y0).replace("LOAD", load)
            .replace("INTEGRATOR", integrator))],
-         h5_attr=[("r.h5", "status", status)], timeout=30)
+         h5_attr=[("r.h5", "status", status)], timeout=30, stderr_absent=["and h ="])
 case("numerical_too_much_work", "numerical", ["run", "s.yaml", "-q", "-o", "r.h5"], 3,
      ["too-much-work", "max_steps"], [("write", "s.yaml", replaced("output_step: 0.01}",
                                                                   "output_step: 0.01, "
                                                                   "max_steps: 2}"))],
      h5_attr=[("r.h5", "status", "integrator-failure")], timeout=30)
+
+# --- usability features of issue 14: planar models, joint channels, expressions ---------
+
+FOUR_BAR = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools",
+                             "scenes", "four_bar.yaml")).read().replace(
+    "  remove_redundant: true\n", "")
+for key, (planar, code, frags) in {
+        "true": ("planar: true", 0, []),
+        "normal_z": ("planar: {normal: [0, 0, 2]}", 0, []),
+        "wrong_plane": ("planar: {normal: [1, 0, 0]}", 1, ["act in the plane", "revolute 'B'"]),
+        "tilted_plane": ("planar: {normal: [0, 0.1, 1]}", 1, ["act in the plane"]),
+        "false": ("planar: false", 1, ["redundant", "remove_redundant"]),
+        "text": ("planar: maybe", 1, ["planar", "s.yaml:"]),
+        "zero_normal": ("planar: {normal: [0, 0, 0]}", 1, ["normal"]),
+        "nan_normal": ("planar: {normal: [.nan, 0, 1]}", 1, ["normal"]),
+        "inf_normal": ("planar: {normal: [0, 0, .inf]}", 1, ["normal"]),
+        "short_normal": ("planar: {normal: [0, 1]}", 1, ["normal"]),
+        "unknown_key": ("planar: {nrmal: [0, 0, 1]}", 1, ["nrmal"]),
+        "list": ("planar: [0, 0, 1]", 1, ["planar"]),
+        "duplicate": ("planar: true\nplanar: false", 1, ["planar", "given twice"]),
+}.items():
+    case(f"scene_planar_{key}", "scene", ["run", "s.yaml", "-q", "-o", "out.h5", "--t-end", "0.02"],
+         code, frags, [("write", "s.yaml", FOUR_BAR + planar + "\n")],
+         absent=["out.h5"] if code else [], stderr_absent=["warning"] if code == 0 else [],
+         exists=["out.h5"] if code == 0 else [])
+# A repeated hinge: its redundant at-point x and y act in any plane through the hinge axis.
+scene("planar_repeated_hinge", replaced(
+    "  - {name: hinge, type: revolute, i: rod_top, j: pivot}",
+    "  - {name: hinge, type: revolute, i: rod_top, j: pivot}\n"
+    "  - {name: hinge2, type: revolute, i: rod_top, j: pivot}") + "planar: true\n", 1,
+      ["act in the plane", "revolute 'hinge2': at-point x"])
+
+# Joint coordinates as channels.
+scene("output_travel_of_revolute", PENDULUM + "output: {csv: x.csv, channels: [hinge.travel]}\n",
+      1, ["hinge.travel", "hinge.angle"], absent=("out.h5", "x.csv"))
+scene("output_angle_ok", PENDULUM + "output: {csv: x.csv, channels: [hinge.angle, hinge.angle_rate]}\n",
+      0, [])
+JSPEC = ["spectrum", "r.h5", "-q", "--channel", "bearing.angle_rate", "--angle", "bearing"]
+case("results_joint_channel_ok", "results", JSPEC, 0, [], [("copy", "{fix}/disc.h5", "r.h5")])
+for key, (mutation, frags) in {
+        "joints_dropped": (["delete", "/joints"], ["/joints"]),
+        "joints_names_dropped": (["delete", "/model/joints"], ["bearing"]),
+        "joints_narrow": (["replace", "/joints", [801, 1], "f8"], ["/joints"]),
+        "joints_1d": (["replace", "/joints", [801], "f8"], ["/joints"]),
+        "joints_short": (["replace", "/joints", [3, 4], "f8"], ["samples"]),
+        "joints_nan": (["fill", "/joints", "nan"], ["no such coordinate"]),
+        "joints_names_ints": (["replace", "/model/joints", [1], "i4"], ["/model/joints"]),
+        "joints_huge": (["huge", "/joints"], ["/joints"]),
+}.items():
+    case(f"results_{key}", "results", JSPEC, 1, frags,
+         [("h5", "{fix}/disc.h5", "r.h5", *mutation)], timeout=30)
+case("results_angle_unknown_joint", "results",
+     ["spectrum", "{fix}/disc.h5", "-q", "--channel", "disc.omega.x", "--angle", "bearng"], 1,
+     ["bearng", "bearing"])
+case("results_joint_channel_unknown_coordinate", "results",
+     ["spectrum", "{fix}/disc.h5", "-q", "--channel", "bearing.twist", "--angle", "bearing"], 1,
+     ["bearing.twist"])
+
+# Expressions that are valid text but no usable motion (no derivative where the run needs
+# one): the input's fault, exit 1, found at once (not after the integrator's step budget),
+# the results file marked failed when the run had started.
+for key, expression, frags, attrs in (
+        ("kink", "abs(t - 0.05)", ["expression", "kink"], [("r.h5", "status", "failed")]),
+        ("nan_midrun", "sqrt(0.05 - t)", ["expression"], [("r.h5", "status", "failed")]),
+        ("too_fast_for_scale", "0.1*sin(2*pi*1000*t)", ["expression", "scale"], [])):
+    case(f"numerical_expression_{key}", "numerical", ["run", "s.yaml", "-q", "-o", "r.h5"], 1,
+         frags, [("write", "s.yaml", replaced(
+             "analysis:", 'motions:\n  - {name: m, joint: hinge, function: {expression: "'
+             + expression + '"}}\nanalysis:'))], h5_attr=attrs, timeout=20)
 
 # --- I/O faults ---------------------------------------------------------------------------
 
@@ -907,29 +1071,45 @@ case("signal_run_kill", "signal", LONG_RUN, "signal", [],
 case("signal_modes_kill", "signal",
      ["modes", "{src}/meshes/tube.geo", "-q", "--modes", "30", "-o", "m.h5"], "signal", [],
      signal={"sig": "KILL", "when": "2.0"}, absent=["m.h5"], timeout=60)
+# A SIGKILL leaves the hidden temporary; the next run of the same output removes it.
+for key, cmd in (("modes", ["modes", "{src}/meshes/tube.geo", "-q", "--modes", "30", "-o", "m.h5"]),
+                 ("reduce", ["reduce", "{src}/meshes/tube.geo", "-q", "-o", "m.h5"])):
+    case(f"signal_{key}_kill_then_rerun", "signal", cmd, "signal", [],
+         signal={"sig": "KILL", "when": "3.0"}, timeout=60,
+         then={"cmd": ["modes", "{fix}/bar.geo", "-q", "-n", "2", "-o", "m.h5"], "exit": 0})
+# An unwritable output is found before the work (the crankshaft takes minutes to reduce).
+for key, cmd in (("reduce", ["reduce", "{src}/meshes/crankshaft_i4.geo", "-q", "-o", "ro/b.h5"]),
+                 ("modes", ["modes", "{src}/meshes/crankshaft_i4.geo", "-q", "-o", "ro/m.h5"]),
+                 ("run_csv", ["run", "{fix}/disc.yaml", "-q", "--t-end", "100", "--force",
+                              "--csv", "ro/r.csv", "-o", "r.h5"])):
+    case(f"io_readonly_found_before_work_{key}", "io", cmd, 1, ["cannot create files"],
+         [("readonly_dir", "ro")], absent=["r.h5"], timeout=15)
 # After a SIGKILL the reader says the file is unfinished.
 case("signal_spectrum_after_kill", "signal", SPEC, 0, ["unfinished", "running"],
      [("h5", "{fix}/disc.h5", "r.h5", "set_attr", "/", "status", "running", "str")])
 
 
 
-def main():
-    here = os.path.dirname(os.path.abspath(__file__))
+def manifest():
     counts = {}
     for c in CASES:
         counts[c["category"]] = counts.get(c["category"], 0) + 1
-    text = json.dumps({"generated_by": "tests/corpus/make_manifest.py", "counts": counts,
-                       "fixtures": FIXTURES, "cases": CASES}, indent=1) + "\n"
-    path = os.path.join(here, "manifest.json")
-    if "--check" in sys.argv[1:]:  # the committed manifest is the generated one
-        with open(path) as f:
-            if f.read() != text:
-                sys.exit(f"{path} is stale: run /usr/bin/python3 {os.path.abspath(__file__)}")
-        print(f"{path}: up to date, {len(CASES)} cases")
-        return
-    with open(path, "w") as f:
-        f.write(text)
-    print(f"{len(CASES)} cases: " + ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
+    return {"generated_by": "tests/corpus/make_manifest.py", "counts": counts,
+            "fixtures": FIXTURES, "cases": CASES}
+
+
+def main():
+    m = manifest()
+    args = sys.argv[1:]
+    if args[:1] == ["--write"] and len(args) == 2:
+        with open(args[1], "w") as f:
+            f.write(json.dumps(m, indent=1) + "\n")
+    elif args[:1] == ["--check"] and len(args) == 2:
+        if len(CASES) < int(args[1]):
+            sys.exit(f"corpus: {len(CASES)} cases, expected at least {args[1]}")
+    elif args:
+        sys.exit(__doc__)
+    print(f"{len(CASES)} cases: " + ", ".join(f"{k} {v}" for k, v in sorted(m["counts"].items())))
 
 
 if __name__ == "__main__":

@@ -17,8 +17,8 @@
 
 namespace emb::fuzz {
 
-/// Writes the input to `name` in a directory of this process (the readers under test take
-/// paths); returns the path. The directory is the same for every input of a run.
+/// Writes the input to a new file `name` in a directory of this process (the readers under
+/// test take paths); returns the path. The directory is the same for every input of a run.
 inline std::string WriteInput(const std::uint8_t* data, std::size_t size, const std::string& name) {
   static const std::filesystem::path dir = [] {
     auto d = std::filesystem::temp_directory_path() /
@@ -27,6 +27,9 @@ inline std::string WriteInput(const std::uint8_t* data, std::size_t size, const 
     return d;
   }();
   const std::string path = (dir / name).string();
+  // A new file (inode) per input: HDF5 recognises a file it still has open by its inode and
+  // would serve the previous input's cached metadata with this input's bytes.
+  std::remove(path.c_str());
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (f == nullptr) __builtin_trap();  // the harness itself is broken
   if (size > 0 && std::fwrite(data, 1, size, f) != size) __builtin_trap();

@@ -32,6 +32,25 @@ inline RigidBody Rod(const std::string& name, double m, double l, const Eigen::V
   return b;
 }
 
+// A door on two revolute joints at the same hinge (about world z through p_hinge): the second
+// repeats all 5 equations of the first. The door's CM is at p_WB.
+inline System RepeatedHinge(const Eigen::Vector3d& p_WB = Eigen::Vector3d::Zero(),
+                            const Eigen::Vector3d& p_hinge = Eigen::Vector3d::Zero()) {
+  System s;
+  RigidBody b;
+  b.name = "door";
+  b.mass = 10;
+  b.inertia_B = Eigen::Vector3d(1, 1, 1).asDiagonal();
+  b.p_WB = p_WB;
+  s.AddBody(b);
+  s.AddMarker("frame", "ground", p_hinge, Eigen::Matrix3d::Identity());
+  s.AddMarker("hinge", "door", p_hinge - p_WB, Eigen::Matrix3d::Identity());
+  s.AddJoint("upper", JointType::kRevolute, "hinge", "frame");
+  s.AddJoint("lower", JointType::kRevolute, "hinge", "frame");
+  s.Finalize();
+  return s;
+}
+
 // Planar pendulum in the xy-plane, revolute about world z at the origin, gravity -y.
 // theta0 [rad] from the downward vertical. Rod of length l along body x with the pivot at
 // its end.

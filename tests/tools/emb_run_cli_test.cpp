@@ -89,9 +89,12 @@ TEST_F(EmbMbsCli, IntegratorFailureKeepsResultsAndSaysWhere) {
   const CliResult r =
       Run("run -q " + std::string(EMB_SOURCE_DIR) + "/tests/scene/data/spin_up.yaml -o spin.h5");
   EXPECT_EQ(r.exit_code, 3) << r.err;
-  for (const char* part : {"at t = ", "step size", "body 'rod'", "revolute 'hinge'",
+  for (const char* part : {"at t = ", "last step accepted", "body 'rod'", "revolute 'hinge'",
                            "results up to t = ", "spin.h5"})
     EXPECT_NE(r.err.find(part), std::string::npos) << part << " in: " << r.err;
+  // One step size per meaning: IDA's own "At t = .. and h = .." prefix is not repeated.
+  EXPECT_EQ(r.err.find("and h ="), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("At t ="), std::string::npos) << r.err;
   emb::H5File f((dir_ / "spin.h5").string(), emb::H5File::Mode::kRead);
   EXPECT_EQ(f.ReadStringAttribute("/", "status"), "integrator-failure");
   EXPECT_GE(f.Shape("/time")[0], 6u);  // t = 0 .. 0.25 s at least

@@ -112,8 +112,65 @@ output: {csv: pend.csv, channels: [tip.dx, tip.rz, mount.F.x, mount.T.z, hinge.F
           "a force element without loads: non-zero exit naming it (%s)" % r.stderr.strip()[-200:])
 
 
+# A small stand-in for the inline-4 engine with the channel names of the README's example:
+# a crank driven at 3000 rpm (motion crank_speed), a flywheel on a torsional coupling
+# (sensor nose_torsion across it) and a bushing main_bearing3 carrying its weight.
+MINI_ENGINE = """name: mini_engine
+gravity: [0, -9.81, 0]
+bodies:
+  - {name: crank, mass: 10.0, inertia: [0.02, 0.05, 0.05], angular_velocity: [314.159265, 0, 0]}
+  - {name: flywheel, mass: 8.0, inertia: [0.1, 0.06, 0.06], position: [0.3, 0, 0],
+     angular_velocity: [314.159265, 0, 0]}
+markers:
+  - {name: block_main, body: ground, orientation: {z_axis: [1, 0, 0]}}
+  - {name: crank_main, body: crank, orientation: {z_axis: [1, 0, 0]}}
+  - {name: crank_nose, body: crank, frame: world, position: [0.3, 0, 0], orientation: {z_axis: [1, 0, 0]}}
+  - {name: flywheel_hub, body: flywheel, frame: world, position: [0.3, 0, 0], orientation: {z_axis: [1, 0, 0]}}
+  - {name: block_mj3, body: ground, frame: world, position: [0.3, 0, 0], orientation: {z_axis: [1, 0, 0]}}
+joints:
+  - {name: main, type: revolute, i: crank_main, j: block_main}
+motions:
+  - {name: crank_speed, joint: main, function: {rpm: 3000}}
+forces:
+  - {name: coupling, type: bushing, i: flywheel_hub, j: crank_nose,
+     stiffness: [1.0e8, 1.0e8, 1.0e8, 1.0e4, 1.0e5, 1.0e5], damping_factor: 1.0e-4}
+  - {name: main_bearing3, type: bushing, i: flywheel_hub, j: block_mj3,
+     stiffness: [1.0e7, 1.0e7, 1.0e7, 0, 0, 0], damping_factor: 1.0e-4}
+sensors:
+  - {name: nose_torsion, i: crank_nose, j: flywheel_hub}
+analysis: {type: dynamic, t_end: 0.08, output_step: 2.0e-4}
+"""
+
+
+def check_readme_example(work):
+    """The engine_plots.py command line the README gives for the inline-4 run plots, as
+    written, on a small model with the same channel names (issue 14: it could not)."""
+    import re
+    with open(os.path.join(SOURCE, "README.md")) as f:
+        readme = f.read()
+    m = re.search(r"/usr/bin/python3 tools/plots/engine_plots\.py out/inline4\.h5 ([^`]*)`", readme)
+    check(m is not None, "README.md gives an engine_plots.py example for out/inline4.h5")
+    if m is None:
+        return
+    args = m.group(1).split()
+    with open(os.path.join(work, "mini.yaml"), "w") as f:
+        f.write(MINI_ENGINE)
+    r = run([EMB, "run", "mini.yaml", "-q", "-o", "mini.h5"], work)
+    if r.returncode != 0:
+        sys.exit("emb run failed: " + r.stderr)
+    args = [a.replace("out/plots", "readme_plots") for a in args]
+    r = run(["/usr/bin/python3", ENGINE_PLOTS, "mini.h5", *args, "--emb", EMB], work)
+    check(r.returncode == 0, "the README's engine_plots.py example plots: " + r.stderr)
+    written = [w.split(" ", 1)[1] for w in r.stdout.splitlines() if w.startswith("wrote ")]
+    check(len(written) == 2, "traces and spectrum written (%s)" % written)
+    for path in written:
+        with open(os.path.join(work, path), "rb") as f:
+            check(f.read(8) == PNG_MAGIC, "%s is a PNG" % path)
+
+
 def main():
     work = tempfile.mkdtemp(prefix="emb_animate_")
+    check_readme_example(work)
     check_sensor_and_force_channels(work)
     geo = os.path.join(SOURCE, "meshes", "tube.geo")
     coarse = ["--set", "n_wall=1", "--set", "n_circ=8", "--set", "h=0.1", "--set", "L=0.6",

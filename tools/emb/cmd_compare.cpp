@@ -243,7 +243,8 @@ void RegisterCompareCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--report-dir", st->report_dir,
                   "Write <part>_<support>_compare.md and .csv there (plots: "
-                  "benchmarks/compare_plots.py on the .csv)");
+                  "benchmarks/compare_plots.py on the .csv)")
+      ->check(NonEmptyPath());
   st->out.Register(*cmd);
   cmd->callback([st] { st->Run(); });
 }

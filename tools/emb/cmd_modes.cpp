@@ -174,7 +174,8 @@ void RegisterModesCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"cholmod", "eigen"}));
   cmd->add_option("-o,--output", st->output,
-                  "HDF5 output file (default: <part name>_modes.h5 in the current directory)");
+                  "HDF5 output file (default: <part name>_modes.h5 in the current directory)")
+      ->check(NonEmptyPath());
   cmd->add_flag("--no-output", st->no_output, "Write no file, only print");
   cmd->add_flag("--no-xdmf", st->no_xdmf, "Do not write the .xdmf file next to the .h5");
   st->out.Register(*cmd);

@@ -308,7 +308,8 @@ void RegisterReduceCommand(CLI::App& app) {
   cmd->add_flag("--allow-failed-certificate", st->allow_failed_certificate,
                 "Write the body file even if the certificate fails (the exit code is still 3)");
   cmd->add_option("-o,--output", st->output,
-                  "Body file (default: <part name>_body.h5 in the current directory)");
+                  "Body file (default: <part name>_body.h5 in the current directory)")
+      ->check(NonEmptyPath());
   st->out.Register(*cmd);
   cmd->callback([st] { st->Run(); });
 }

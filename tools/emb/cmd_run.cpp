@@ -268,8 +268,10 @@ void RegisterRunCommand(CLI::App& app) {
       ->required();
   cmd->add_option("-o,--output", st->output,
                   "HDF5 results file, relative to the working directory (default: the scene's "
-                  "output.file, relative to the scene's directory, else SCENE-stem.h5 here)");
-  cmd->add_option("--csv", st->csv, "Also write the scene's output.channels to this CSV file");
+                  "output.file, relative to the scene's directory, else SCENE-stem.h5 here)")
+      ->check(NonEmptyPath());
+  cmd->add_option("--csv", st->csv, "Also write the scene's output.channels to this CSV file")
+      ->check(NonEmptyPath());
   cmd->add_flag("--no-output", st->no_output, "Do not write result files (summary only)");
   cmd->add_option("--analysis", st->analysis,
                   "Override the analysis type: assemble, kinematic, static, quasi-static, dynamic");

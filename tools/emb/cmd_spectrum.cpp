@@ -1,6 +1,7 @@
 // emb spectrum RESULTS.h5 --channel NAME: the engine-order spectrum of a results channel
 // over whole 720-degree cycles (libemb/results/order_spectrum.h), with the crank angle from a
-// body's rotation (--angle BODY [--axis x]) or a constant speed (--rpm N).
+// body's rotation (--angle BODY [--axis x]), a revolute joint's angle (--angle JOINT) or a
+// constant speed (--rpm N).
 
 #include <sstream>
 #include <iostream>
@@ -40,7 +41,8 @@ struct SpectrumCommand {
     std::string angle_source;
     if (!angle_body.empty()) {
       angle = scene::ReadBodyRotationAngle(file, angle_body, axis, angle_start).values;
-      angle_source = "rotation of '" + angle_body + "' about world " + axis;
+      angle_source = "rotation of '" + angle_body + "' about world " + axis + " (or its angle, "
+                     "for a joint)";
     } else {
       for (double t : y.time) angle.push_back(angle_start + 6.0 * *rpm * (t - y.time.front()));
       angle_source = "constant speed " + std::to_string(*rpm) + " rpm";
@@ -106,11 +108,14 @@ void RegisterSpectrumCommand(CLI::App& app) {
       "orders 0, 0.5, 1, ... (per crank revolution)");
   cmd->add_option("results", st->file, "Results file (.h5) of emb run")->required();
   cmd->add_option("--channel", st->channel,
-                  "Channel: <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z}, "
+                  "Channel: <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z} (reactions and "
+                  "force elements' loads), <sensor>.dx|dy|dz|rx|ry|rz, "
+                  "<joint>.angle|angle_rate|travel|travel_rate, "
                   "energy.{kinetic,gravity,elastic,total,dissipated}")
       ->required();
   cmd->add_option("--angle", st->angle_body,
-                  "Body whose rotation about --axis is the crank angle (e.g. crank)");
+                  "Body whose rotation about --axis is the crank angle (e.g. crank), or a "
+                  "revolute joint whose angle is (e.g. main_bearing)");
   cmd->add_option("--axis", st->axis, "World axis of the crank rotation: x, y or z")
       ->capture_default_str();
   cmd->add_option("--rpm", st->rpm, "Instead of --angle: a constant speed [rpm] from the first sample");
@@ -126,7 +131,8 @@ void RegisterSpectrumCommand(CLI::App& app) {
   cmd->add_option("--samples-per-cycle", st->settings.samples_per_cycle,
                   "Resampling points per 720 degrees")
       ->capture_default_str();
-  cmd->add_option("--csv", st->csv, "Also write order,amplitude,phase_deg to this CSV file");
+  cmd->add_option("--csv", st->csv, "Also write order,amplitude,phase_deg to this CSV file")
+      ->check(NonEmptyPath());
   st->out.Register(*cmd);
   cmd->callback([st] { st->Run(); });
 }

@@ -8,6 +8,17 @@
 #include "libemb/io/output_path.h"
 
 namespace emb::cli {
+
+const CLI::Validator& NonEmptyPath() {
+  static const CLI::Validator check(
+      [](std::string& value) {
+        return value.empty() ? std::string("expected a file name, got an empty string")
+                             : std::string();
+      },
+      "PATH");
+  return check;
+}
+
 namespace {
 std::string g_command_line;
 }
@@ -29,7 +40,8 @@ void PartOptions::Register(CLI::App& cmd) {
                  "Override a .geo DefineConstant parameter, NAME=VALUE (SI units), repeatable; "
                  "e.g. --set stroke=0.09");
   cmd.add_option("--save-mesh", save_mesh,
-                 "Also save the mesh gmsh made (format by extension, e.g. part.msh)");
+                 "Also save the mesh gmsh made (format by extension, e.g. part.msh)")
+      ->check(NonEmptyPath());
   cmd.add_flag("--trust-geo", trust_geo,
                "Give the part to gmsh without checking it first: only for files you trust. "
                "By default emb refuses a .geo script (or anything gmsh reads as one) that would "

@@ -14,6 +14,10 @@
 
 namespace emb::cli {
 
+/// CLI11 check of a path option: refuses an empty value (`-o ""`, an unset shell variable),
+/// which would otherwise mean "no option" and write somewhere the user did not say.
+const CLI::Validator& NonEmptyPath();
+
 struct PartOptions {
   std::string file;
   int order{2};

@@ -17,12 +17,16 @@
 // SIGINT/SIGTERM: the signal (the shell shows 130/143).
 
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <new>
 #include <stdexcept>
 
 #include "libemb/common/error.h"
+#include "libemb/common/script_deadline.h"
+#include "libemb/common/signal_cleanup.h"
 #include "libemb/io/hdf5_file.h"
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
@@ -31,6 +35,31 @@
 #include "tools/emb/progress_display.h"
 
 namespace {
+// The limit on reading an untrusted geometry script: kGeoScriptSeconds, or EMB_GEO_SECONDS.
+constexpr double kGeoScriptSeconds = 120.0;
+
+bool InstallGeoScriptDeadline() {
+  double seconds = kGeoScriptSeconds;
+  if (const char* env = std::getenv("EMB_GEO_SECONDS")) {
+    char* end = nullptr;
+    seconds = std::strtod(env, &end);
+    if (end == env || *end != '\0' || !std::isfinite(seconds) || !(seconds > 0.0)) {
+      std::cerr << "emb: error: EMB_GEO_SECONDS: expected a positive number of seconds, got '"
+                << env << "'\n";
+      return false;
+    }
+  }
+  emb::SetScriptDeadlineHandler(seconds, [](const std::string& what, double limit) {
+    std::cerr << "emb: error: refusing '" << what << "': gmsh was still reading it after "
+              << limit << " s (a loop or macro call that does not end?); if the file is yours "
+              << "and only slow, run again with --trust-geo, or set EMB_GEO_SECONDS\n";
+    std::cerr.flush();
+    emb::RemoveCleanupFilesNow();
+    std::_Exit(emb::cli::kExitInput);
+  });
+  return true;
+}
+
 // A name for a standard exception that says what kind of failure it was.
 const char* ExceptionKind(const std::exception& e) {
   if (dynamic_cast<const std::invalid_argument*>(&e)) return "invalid argument";
@@ -50,6 +79,9 @@ int main(int argc, char** argv) {
   bool trust_geo = false;
   for (int i = 1; i < argc; ++i) trust_geo |= std::strcmp(argv[i], "--trust-geo") == 0;
   if (!trust_geo) ForbidProgramExecution();
+  // A geometry script from someone else may loop without end while gmsh reads it (gmsh
+  // cannot be stopped): after the limit emb says which file and exits (issue 14).
+  if (!trust_geo && !InstallGeoScriptDeadline()) return kExitInput;
   SetCommandLine(argc, argv);
   CLI::App app{"emb: elasto-multibody dynamics of engines and drivelines with component mode "
                "synthesis"};

@@ -3,12 +3,15 @@
 
     /usr/bin/python3 tools/plots/engine_plots.py RESULTS.h5 \
         --traces crank.omega.x,dyno_speed.T.z --spectrum dyno_speed.T.z --angle crank \
-        [--orders 12] [--out DIR] [--emb build/tools/emb/emb]
+        [--rpm N] [--orders 12] [--out DIR] [--emb build/tools/emb/emb]
 
 Writes DIR/<results stem>_traces.png (one panel per channel against the crank angle, or the
 time with --time) and DIR/<results stem>_spectrum_<channel>.png (amplitude vs engine order,
 computed by `emb spectrum --json`, so the numbers are the CLI's). Channel names as in
-`emb spectrum --help`: <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z}, energy.<column>.
+`emb spectrum --help`: <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z} (reactions and force
+elements' loads), <sensor>.dx|dy|dz|rx|ry|rz, <joint>.angle|angle_rate|travel|travel_rate,
+energy.<column>. The crank angle: --angle BODY (its rotation about --axis), --angle JOINT (a
+revolute joint's angle) or --rpm N (constant speed).
 """
 import argparse
 import json
@@ -50,6 +53,15 @@ def channel(f, name):
     owner, _, comp = name.rpartition(".")
     if name.startswith("energy."):
         return f["energy"][:, ENERGY.index(name[7:])]
+    joints = names(f, "model/joints") if "model/joints" in f else []
+    if owner in joints:  # <joint>.angle, .angle_rate, .travel, .travel_rate
+        k = joints.index(owner)
+        values = f["joints"][:, 4 * k + ["angle", "angle_rate", "travel", "travel_rate"].index(comp)]
+        if np.isnan(values).any():
+            raise SystemExit(f"engine_plots: channel '{name}': joint '{owner}' has no such "
+                             "coordinate (angle: revolute and cylindrical joints; travel: "
+                             "translational and cylindrical joints)")
+        return values
     sensors = names(f, "model/sensors") if "model/sensors" in f else []
     if owner in sensors:  # <sensor>.dx .. .rz
         k = sensors.index(owner)
@@ -80,8 +92,16 @@ def channel(f, name):
     raise SystemExit(f"engine_plots: unknown channel '{name}'")
 
 
-def crank_angle(f, body, axis):
-    """Unwrapped rotation angle [deg] of `body` about a world axis, 0 at the first sample."""
+def crank_angle(f, body, axis, rpm=None):
+    """Crank angle [deg], 0 at the first sample: the constant speed `rpm` if given, else the
+    unwrapped angle of the revolute joint `body` if it names one, else the unwrapped rotation
+    of the body `body` about a world axis."""
+    t = f["time"][:]
+    if rpm is not None:
+        return 6.0 * rpm * (t - t[0])
+    if "model/joints" in f and body in names(f, "model/joints"):
+        ang = channel(f, body + ".angle")
+        return np.degrees(ang - ang[0])
     a = "xyz".index(axis)
     u, ax = np.eye(3)[(a + 1) % 3], np.eye(3)[a]
     r = rotations(f, names(f, "model/bodies").index(body)).apply(u)
@@ -94,8 +114,11 @@ def main():
     ap.add_argument("results")
     ap.add_argument("--traces", default="", help="comma-separated channels to plot")
     ap.add_argument("--spectrum", default="", help="channel for the order spectrum")
-    ap.add_argument("--angle", default="crank", help="body whose rotation is the crank angle")
+    ap.add_argument("--angle", default="crank",
+                    help="body whose rotation is the crank angle, or a revolute joint")
     ap.add_argument("--axis", default="x", help="world axis of the crank rotation")
+    ap.add_argument("--rpm", type=float, default=None,
+                    help="instead of --angle: a constant crank speed [rpm] from the first sample")
     ap.add_argument("--time", action="store_true", help="traces against time instead of angle")
     ap.add_argument("--orders", default="12")
     ap.add_argument("--out", default=".")
@@ -108,7 +131,7 @@ def main():
         warn_if_unfinished(f, args.results)
         traces = [c for c in args.traces.split(",") if c]
         if traces:
-            x = f["time"][:] if args.time else crank_angle(f, args.angle, args.axis)
+            x = f["time"][:] if args.time else crank_angle(f, args.angle, args.axis, args.rpm)
             fig, axes = plt.subplots(len(traces), 1, sharex=True, figsize=(9, 2.4 * len(traces)),
                                      squeeze=False)
             for ax, name in zip(axes[:, 0], traces):
@@ -125,8 +148,10 @@ def main():
             fig.savefig(path, dpi=120)
             written.append(path)
     if args.spectrum:
-        cmd = [args.emb, "spectrum", args.results, "--channel", args.spectrum, "--angle", args.angle,
-               "--axis", args.axis, "--orders", args.orders, "--json"]
+        crank = (["--rpm", repr(args.rpm)] if args.rpm is not None
+                 else ["--angle", args.angle, "--axis", args.axis])
+        cmd = [args.emb, "spectrum", args.results, "--channel", args.spectrum, *crank,
+               "--orders", args.orders, "--json"]
         run = subprocess.run(cmd, capture_output=True, text=True)
         if run.returncode != 0:
             sys.exit(f"engine_plots: {' '.join(cmd)} failed:\n{run.stderr}")

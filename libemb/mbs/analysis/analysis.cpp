@@ -5,13 +5,16 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <regex>
 #include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/analysis/analysis_internal.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
+#include "libemb/mbs/constraints/out_of_plane.h"
 #include "libemb/integrators/generalized_alpha.h"
 #include "libemb/mbs/analysis/ggl_dae.h"
+#include "libemb/mbs/analysis/joint_coordinates.h"
 #include "libemb/mbs/constraints/reactions.h"
 #include "libemb/mbs/core/rotation.h"
 
@@ -101,12 +104,37 @@ PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
                                                           << settings.t_start);
   EMB_THROW_IF(!(settings.output_step > 0.0),
                "analysis: expected a positive output step, got " << settings.output_step);
-  PreparedRun run{system, {}, {}, {}, {}};
+  (void)internal::OutputTimes{settings};  // throws for times the output step cannot resolve
+  PreparedRun run{system, {}, {}, {}, {}, {}, {}};
   ConstraintWorkspace ws(system);
   const AssemblyResult a = AssemblePositions(system, system.InitialPositions(), settings.t_start,
                                              &ws, settings.assembly);
   if (!a.converged) EMB_THROW(InputError, "the model cannot be assembled: " << a.message);
   run.dof = AnalyzeDof(system, a.q, settings.t_start, &ws);
+  const bool planar = settings.plane_normal.squaredNorm() > 0.0;
+  EMB_THROW_IF(planar && std::abs(settings.plane_normal.norm() - 1.0) > 1e-12,
+               "planar: expected a unit plane normal, got norm " << settings.plane_normal.norm());
+  if (planar && !run.dof.redundant.empty()) {
+    const std::vector<int> in_plane = EquationsWithInPlaneTerms(
+        system, a.q, settings.t_start, run.dof.redundant, settings.plane_normal, &ws);
+    if (in_plane.empty()) {  // all out of the plane: dropped quietly
+      run.system = system.WithoutEquations(run.dof.redundant);
+      run.planar_removed = run.dof.redundant_names;
+      run.dof.redundant.clear();
+      run.dof.redundant_names.clear();
+    } else if (!settings.remove_redundant) {
+      std::ostringstream list;
+      for (int k : in_plane) list << "\n  " << system.EquationName(k);
+      EMB_THROW(InputError, "planar (normal " << settings.plane_normal.transpose()
+                                << "): " << in_plane.size()
+                                << " redundant constraint equation(s) act in the plane, so "
+                                   "the mechanism is not planar about that normal there:"
+                                << list.str()
+                                << "\ncheck the joint axes (all along the normal for "
+                                   "revolutes) or set remove_redundant: true to drop the "
+                                   "redundant equations with a warning");
+    }
+  }
   if (!run.dof.redundant.empty()) {
     std::ostringstream list;
     for (const auto& n : run.dof.redundant_names) list << "\n  " << n;
@@ -208,6 +236,7 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
     s.sensors.row(static_cast<Eigen::Index>(k)) << (J.R_WM.transpose() * (I.p_WM - J.p_WM)).transpose(),
         RotationVectorFromRotation(J.R_WM.transpose() * I.R_WM).transpose();
   }
+  s.joints = CalcJointCoordinates(system, bodies);
   s.energies = CalcEnergies(system, bodies, t, workspace);
   if (c.phi.size()) {
     s.position_residual = c.phi.cwiseAbs().maxCoeff();
@@ -217,7 +246,25 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
 }
 
 RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
-                      const SampleSink& sink, const ProgressFn& progress, const StopFn& stop) {
+                      const SampleSink& given_sink, const ProgressFn& progress,
+                      const StopFn& stop) {
+  // Joint angles continue across turns from one sample to the next (joint_coordinates.h).
+  bool first = true;
+  double t_previous = 0.0;
+  Eigen::MatrixXd previous;
+  const SampleSink sink = [&](const Sample& sample) {
+    if (first || sample.joints.rows() == 0) {
+      first = false;
+      t_previous = sample.t;
+      previous = sample.joints;
+      return given_sink(sample);
+    }
+    Sample unwrapped = sample;
+    UnwrapJointAngles(previous, t_previous, sample.t, &unwrapped.joints);
+    t_previous = sample.t;
+    previous = unwrapped.joints;
+    given_sink(unwrapped);
+  };
   switch (settings.type) {
     case AnalysisType::kAssemble: {
       ConstraintWorkspace ws(run.system);
@@ -244,6 +291,29 @@ RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
 
 namespace internal {
 
+IntegratorMessage SplitIntegratorMessage(const std::string& message) {
+  // "IDA/IDASolve: At t = 0.01 and h = 1e-12, the corrector ..." (SUNDIALS 6 wording; its
+  // too-much-work message has a second comma: "At t = 0.25, , mxstep steps ...").
+  static const std::regex kPrefix(
+      R"(^(.*?)At t = [^,]*?(?: and h = ([-+0-9.eE]+))?,(?: ,)? (.*)$)");
+  IntegratorMessage m;
+  std::smatch match;
+  if (!std::regex_match(message, match, kPrefix)) {
+    m.text = message;
+    return m;
+  }
+  if (match[2].matched) {
+    try {
+      m.step_tried = std::stod(match[2].str());
+    } catch (const std::exception&) {  // not a number after all: keep the message whole
+      m.text = message;
+      return m;
+    }
+  }
+  m.text = match[1].str() + match[3].str();
+  return m;
+}
+
 double ModelSize(const System& system, const Eigen::VectorXd& q) {
   const StateLayout& L = system.layout();
   double size = 0.0;
@@ -253,15 +323,27 @@ double ModelSize(const System& system, const Eigen::VectorXd& q) {
   return size;
 }
 
-std::vector<double> OutputTimes(const AnalysisSettings& s) {
-  std::vector<double> t;
-  const double span = s.t_end - s.t_start;
+OutputTimes::OutputTimes(const AnalysisSettings& s, bool single)
+    : t_start_(s.t_start), t_end_(single ? s.t_start : s.t_end), step_(s.output_step) {
+  EMB_THROW_IF(!(step_ > 0.0) || !std::isfinite(t_start_) || !(t_end_ >= t_start_),
+               "analysis: expected finite times t_end >= t_start and output_step > 0, got "
+                   << t_start_ << ", " << t_end_ << " and " << step_ << " s");
   // Number of whole output steps; a remainder below 1e-9 steps is round-off of t_end / dt.
-  const long n = static_cast<long>(std::floor(span / s.output_step + 1e-9));
-  for (long k = 0; k <= n; ++k) t.push_back(s.t_start + static_cast<double>(k) * s.output_step);
-  if (t.back() < s.t_end - 1e-9 * s.output_step) t.push_back(s.t_end);
-  t.back() = std::min(t.back(), s.t_end);
-  return t;
+  const double n = std::floor((t_end_ - t_start_) / step_ + 1e-9);
+  constexpr double kMaxTimes = 9007199254740992.0;  // 2^53: k dt exact for every k below
+  EMB_THROW_IF(!(n < kMaxTimes), "analysis: (t_end - t_start) / output_step = "
+                                     << n << " output times; expected at most 2^53");
+  EMB_THROW_IF(n > 0 && !(t_end_ - step_ < t_end_ && t_start_ + step_ > t_start_),
+               "analysis: output_step " << step_ << " s is below the resolution of the "
+                                        << "times around t = " << t_end_ << " s");
+  whole_ = static_cast<long long>(n) + 1;
+  const double last = t_start_ + static_cast<double>(whole_ - 1) * step_;
+  size_ = last < t_end_ - 1e-9 * step_ ? whole_ + 1 : whole_;
+}
+
+double OutputTimes::operator[](long long k) const {
+  if (k >= whole_) return t_end_;
+  return std::min(t_start_ + static_cast<double>(k) * step_, t_end_);
 }
 
 // IDA's absolute tolerances per unknown: atol on q and v, algebraic_atol on lambda and mu,
@@ -356,12 +438,14 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
   RunResult r;
   IdaOptions options = settings.ida;
   EMB_THROW_IF(!(settings.atol_floor_relative >= 0.0) ||
-                   !(settings.multiplier_atol_relative > 0.0) ||
+                   !(settings.multiplier_atol_relative >= 0.0) ||
+                   !(settings.multiplier_atol_rtol_factor > 0.0) ||
                    !(settings.initial_step_fraction >= 0.0),
-               "analysis: expected atol_floor_relative >= 0, multiplier_atol_relative > 0 and "
-               "initial_step_fraction >= 0, got "
+               "analysis: expected atol_floor_relative >= 0, multiplier_atol_relative >= 0, "
+               "multiplier_atol_rtol_factor > 0 and initial_step_fraction >= 0, got "
                    << settings.atol_floor_relative << ", " << settings.multiplier_atol_relative
-                   << " and " << settings.initial_step_fraction);
+                   << ", " << settings.multiplier_atol_rtol_factor << " and "
+                   << settings.initial_step_fraction);
   const double model_size = ModelSize(sys, run.q0);
   const double atol_floor = settings.atol_floor_relative * std::max(1.0, model_size);
   if (options.atol < atol_floor) {
@@ -380,7 +464,12 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     double force_scale = 1.0;
     if (acc.lambda.size()) force_scale = std::max(force_scale, acc.lambda.cwiseAbs().maxCoeff());
     if (f0.size()) force_scale = std::max(force_scale, f0.cwiseAbs().maxCoeff());
-    options.algebraic_atol = settings.multiplier_atol_relative * force_scale;
+    options.algebraic_atol =
+        (settings.multiplier_atol_relative > 0.0
+             ? settings.multiplier_atol_relative
+             : std::min(settings.multiplier_atol_max_relative,
+                        settings.multiplier_atol_rtol_factor * options.rtol)) *
+        force_scale;
   }
   if (settings.modal_velocity_atol_by_frequency && options.component_atol.size() == 0)
     options.component_atol = ComponentTolerances(sys, G, options);
@@ -396,11 +485,11 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
   DaeIntegrator& ida = *integrator;
   r.linear_solver = ida.linear_solver();
   r.jacobian_nonzeros = ida.jacobian_nonzeros();
-  const std::vector<double> times = OutputTimes(settings);
+  const OutputTimes times(settings);
   sink(MakeSample(sys, times[0], run.q0, run.v0, acc.vdot, acc.lambda, &ws));
   r.num_samples = 1;
   r.t_reached = times[0];
-  for (std::size_t k = 1; k < times.size(); ++k) {
+  for (long long k = 1; k < times.size(); ++k) {
     const IntegratorReport rep = ida.AdvanceTo(times[k]);
     const Eigen::VectorXd& yk = ida.y();
     const Eigen::VectorXd& ypk = ida.yp();
@@ -409,12 +498,15 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     if (!rep.ok()) {
       r.status = RunStatus::kIntegratorFailure;
       std::ostringstream o;
+      // IDA's own message starts "At t = T and h = H, ...": H is the step it last tried, not
+      // the last accepted one; both are named once, each with what it is.
+      const IntegratorMessage im = SplitIntegratorMessage(rep.message);
       o << (settings.integrator == DynamicIntegrator::kIda ? "IDA " : "generalized-alpha ")
-        << Name(rep.status) << " at t = " << rep.t << " s after a last accepted step size of "
-        << rep.last_step << " s; largest weighted local error " << rep.worst_weighted_error
-        << " in " << rep.worst_component_name;
-      // IDA's own message quotes the step it last tried ("h = ..."), not the accepted one.
-      if (!rep.message.empty()) o << " (" << rep.message << ")";
+        << Name(rep.status) << " at t = " << rep.t << " s (";
+      if (im.step_tried) o << "last step tried " << *im.step_tried << " s, ";
+      o << "last step accepted " << rep.last_step << " s); largest weighted local error "
+        << rep.worst_weighted_error << " in " << rep.worst_component_name;
+      if (!im.text.empty()) o << " (" << im.text << ")";
       if (rep.status == IntegratorStatus::kTooMuchWork)
         o << "; analysis max_steps = " << options.max_num_steps
           << " steps between two output times were not enough: raise max_steps or look for "
@@ -432,8 +524,8 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
              "tolerances are below the round-off floor of this model: raise atol (now "
           << options.atol << ", atol_floor_relative " << settings.atol_floor_relative
           << "), initial_step_fraction (now " << settings.initial_step_fraction
-          << ") or multiplier_atol_relative (now "
-          << settings.multiplier_atol_relative << ", atol " << options.algebraic_atol
+          << ") or multiplier_atol_rtol_factor (now "
+          << settings.multiplier_atol_rtol_factor << ", atol " << options.algebraic_atol
           << " on the multipliers), or rtol";
       r.message = o.str();
       break;

@@ -81,14 +81,25 @@ struct AnalysisSettings {
   /// solution) are not error-tested, but IDA's Newton test weighs them with
   /// 1/(rtol |y| + atol). Index-2 multipliers are only determined to O(eps/h) of the
   /// model's forces, so too tight an atol on them makes the corrector fail at t0 for every
-  /// h. Their atol follows the force scale of the model:
-  ///   multiplier_atol_relative * F_ref,  F_ref = max(1, max |lambda(t0)|, max |f(t0)|)
-  /// (N or N m: the largest reaction or applied/gravity load at the start), so that the
-  /// reactions converge to 1e-4 of the model's own forces, whatever its size. Measured over
-  /// rtol 1e-3 .. 1e-10 on the slider-crank (F_ref = 543 N), engine (c) and double-pendulum
-  /// scenes: factors 1e-5 .. 1e-3 all run, with no trend in steps or error.
-  double multiplier_atol_relative{1e-4};
-  /// If > 0, the multipliers' atol as given [N, N m], instead of the relative rule.
+  /// h; too loose a one lets the Newton iteration stop with multipliers (and so
+  /// accelerations) less accurate than rtol asks for, which costs digits and steps at tight
+  /// rtol. Their atol follows rtol below the default and the force scale of the model:
+  ///   min(multiplier_atol_max_relative, multiplier_atol_rtol_factor * rtol) * F_ref,
+  ///   F_ref = max(1, max |lambda(t0)|, max |f(t0)|)
+  /// (N or N m: the largest reaction or applied/gravity load at the start), i.e. 1e-4 F_ref
+  /// (the fixed rule of earlier versions) from rtol 1e-6 up, 100 rtol F_ref below.
+  /// Measured with benchmarks/mbs_work_precision.cpp (fixed 1e-4 F_ref against 100 rtol
+  /// F_ref; step counts and max errors, the report of issue 14): at rtol 1e-7, 1e-8, 1e-9
+  /// engine (c) took 15, 12 and 31 % fewer steps with errors 0.98, 1.1 and 0.53 times the
+  /// fixed rule's; the slider-crank at rtol 1e-7 .. 1e-10 -2, +2, -6 and -25 % steps with
+  /// errors 1.0, 1.9, 1.3 and 0.40 times (all below 4e-11 m). Above rtol 1e-6 an uncapped
+  /// 100 rtol loosens the Newton test too far (slider-crank at rtol 1e-3: 249 instead of 168
+  /// steps and 9 times the error), hence the cap.
+  double multiplier_atol_rtol_factor{100.0};
+  double multiplier_atol_max_relative{1e-4};
+  /// If > 0, the earlier fixed rule instead: multiplier_atol_relative * F_ref, whatever rtol.
+  double multiplier_atol_relative{0.0};
+  /// If > 0, the multipliers' atol as given [N, N m], instead of either rule.
   double multiplier_atol{0.0};
   /// Flexible bodies: the absolute tolerance of modal velocity j is atol * max(1, w_j)
   /// (w_j = 2 pi f_j of the kept mode, rad/s) instead of atol, so that the error test weighs
@@ -113,6 +124,12 @@ struct AnalysisSettings {
   AssemblyOptions assembly;
   /// Remove redundant equations (and report them) instead of failing.
   bool remove_redundant{false};
+  /// A planar mechanism: the unit normal n_W of its plane (zero: not planar). Redundant
+  /// equations that act only out of that plane (constraints/out_of_plane.h), which a
+  /// planar closed loop always has in 3-D, are removed without a warning (they are still
+  /// listed in PreparedRun::planar_removed and the results file); a redundant equation
+  /// with an in-plane part is an error as without it, unless remove_redundant.
+  Eigen::Vector3d plane_normal{Eigen::Vector3d::Zero()};
   /// Relative kinetic-energy-norm change of the initial velocities above which the
   /// projection is reported as a warning (a user's v0 that was already consistent changes
   /// only by round-off).
@@ -139,11 +156,14 @@ struct PreparedRun {
   std::string start_note;  ///< the quasi-static elastic start, when asked for
   /// What the installed bases (AnalysisSettings::installed_bases) kept, per body.
   std::vector<InstalledBasisReport> bases;
+  /// The out-of-plane equations a planar model dropped (AnalysisSettings::plane_normal).
+  std::vector<std::string> planar_removed;
 };
 
 /// Assembles and checks the model. @throws InputError if the assembly does not close
 /// (residual and joint named), or if redundant equations remain and
-/// settings.remove_redundant is false (all of them named).
+/// settings.remove_redundant is false (all of them named; with a plane_normal, those with
+/// an in-plane part).
 PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings);
 
 /// One output sample.
@@ -158,6 +178,10 @@ struct Sample {
   Eigen::MatrixXd force_loads;
   /// Per sensor (System::sensors) [R_JW (p_I - p_J), rotation vector of R_J^T R_I].
   Eigen::MatrixXd sensors;
+  /// Per constraint element [angle rad, angle rate rad/s, travel m, travel rate m/s]
+  /// (joint_coordinates.h), NaN where the element has no such coordinate; RunAnalysis
+  /// unwraps the angles from sample to sample.
+  Eigen::MatrixXd joints;
   Energies energies;
   double position_residual{0.0};  ///< max |Phi|
   double velocity_residual{0.0};  ///< max |C v + Phi_t|

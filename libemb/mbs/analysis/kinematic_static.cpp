@@ -1,6 +1,7 @@
 // Kinematic (nDOF = 0), static and quasi-static analyses (analysis.h).
 
 #include <cmath>
+#include <numbers>
 #include <limits>
 #include <sstream>
 
@@ -181,20 +182,37 @@ RunResult RunKinematic(const PreparedRun& run, const AnalysisSettings& settings,
   const Eigen::MatrixXd M =
       CalcMassMatrix(sys, CalcBodyKinematics(sys, run.q0, Eigen::VectorXd()));
   Eigen::VectorXd q = run.q0, v = Eigen::VectorXd::Zero(sys.layout().nv());
-  const std::vector<double> times = OutputTimes(settings);
-  for (std::size_t k = 0; k < times.size(); ++k) {
+  const OutputTimes times(settings);
+  const StateLayout& L = sys.layout();
+  for (long long k = 0; k < times.size(); ++k) {
     const double t = times[k];
-    // Predictor: move along the previous velocity, then close the loop by Newton.
+    // Predictor: move along the previous velocity, then close the loop by Newton. The angle
+    // kernels follow a turn only within +-pi of their last value (ConstraintWorkspace), so
+    // an output step over which a body turns more than a quarter turn is crossed in
+    // sub-steps of at most that, each with its own velocity.
     const double dt = k ? t - times[k - 1] : 0.0;
-    const AssemblyResult a =
-        AssemblePositions(sys, ApplyDisplacement(sys, q, dt * v), t, &ws, settings.assembly);
-    r.newton_iterations += a.iterations;
-    if (!a.converged) {
-      r.status = RunStatus::kNewtonFailure;
-      r.message = "kinematic analysis at t = " + std::to_string(t) + " s: " + a.message;
-      return r;
+    double turn = 0.0;  // [rad] the largest rotation of a body over dt at the last speed
+    for (int b = 1; b < sys.num_bodies(); ++b)
+      turn = std::max(turn, dt * v.segment<3>(L.angular_velocity(b)).norm());
+    constexpr double kQuarterTurn = 0.5 * std::numbers::pi;
+    const int substeps = static_cast<int>(std::min(1e6, std::ceil(turn / kQuarterTurn)));
+    for (int s = 1; s <= std::max(1, substeps); ++s) {
+      const double ts = s == substeps || substeps <= 1 ? t : times[k - 1] + dt * s / substeps;
+      const double h = substeps > 1 ? dt / substeps : dt;
+      const AssemblyResult a =
+          AssemblePositions(sys, ApplyDisplacement(sys, q, h * v), ts, &ws, settings.assembly);
+      r.newton_iterations += a.iterations;
+      if (!a.converged) {
+        r.status = RunStatus::kNewtonFailure;
+        r.message = "kinematic analysis at t = " + std::to_string(ts) + " s: " + a.message;
+        return r;
+      }
+      q = a.q;
+      if (s < substeps) {  // the velocity at the sub-step, for the next predictor
+        const ConstraintEval cs = CalcConstraints(sys, CalcBodyKinematics(sys, q, Eigen::VectorXd()), ts, &ws);
+        v = Eigen::MatrixXd(cs.jacobian).partialPivLu().solve(-cs.phi_t);
+      }
     }
-    q = a.q;
     const auto bodies = CalcBodyKinematics(sys, q, Eigen::VectorXd());
     const ConstraintEval c0 = CalcConstraints(sys, bodies, t, &ws);
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu((Eigen::MatrixXd(c0.jacobian)));
@@ -221,9 +239,8 @@ RunResult RunStatic(const PreparedRun& run, const AnalysisSettings& settings,
   Eigen::VectorXd q = run.q0;
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(sys.num_equations());
   const Eigen::VectorXd zero_v = Eigen::VectorXd::Zero(sys.layout().nv());
-  const std::vector<double> times =
-      sequence ? OutputTimes(settings) : std::vector<double>{settings.t_start};
-  for (std::size_t k = 0; k < times.size(); ++k) {
+  const OutputTimes times(settings, /*single=*/!sequence);
+  for (long long k = 0; k < times.size(); ++k) {
     const double t = times[k];
     r.static_report = SolveStatic(sys, t, settings, &ws, &q, &lambda);
     r.newton_iterations += r.static_report.iterations;

@@ -39,6 +39,13 @@ void System::CheckNotFinalized(const char* what) const {
 
 void System::CheckNewName(const std::string& name, const char* what) const {
   EMB_THROW_IF(name.empty(), what << ": expected a non-empty name");
+  // Names appear in messages, HDF5 name lists and channel names "<name>.<quantity>": no
+  // spaces or control characters, and (except markers, which own no channels) no '.'.
+  const bool marker = std::string(what) == "marker";
+  for (const char c : name)
+    EMB_THROW_IF(static_cast<unsigned char>(c) <= ' ' || c == '\x7f' || (c == '.' && !marker),
+                 what << " '" << name << "': expected a name without spaces, control characters"
+                      << (marker ? "" : " or '.' (channels are <name>.<quantity>)"));
 }
 
 int System::AddBody(const RigidBody& body) {
@@ -176,6 +183,7 @@ int System::AddCoupler(const std::string& name, const std::string& joint1, Joint
 void System::AddForceElement(std::shared_ptr<const ForceElement> element) {
   CheckNotFinalized("AddForceElement");
   EMB_CHECK(element != nullptr);
+  CheckNewName(element->name(), "force element");
   for (int m : element->markers()) EMB_CHECK(m >= 0 && m < static_cast<int>(markers_.size()));
   forces_.push_back(std::move(element));
 }

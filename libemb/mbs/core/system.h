@@ -81,8 +81,11 @@ class System {
  public:
   System();
 
+  /// Names of bodies, elements, force elements and sensors are non-empty, without spaces,
+  /// control characters or '.' (channels are "<name>.<quantity>"); marker names may hold '.'.
   /// Adds a rigid body; returns its index (>= 1). The ground is index 0, named "ground".
-  /// @throws InputError for a duplicate name or invalid data (RigidBody::Validate).
+  /// @throws InputError for a duplicate or malformed name or invalid data
+  /// (RigidBody::Validate).
   int AddBody(const RigidBody& body);
   /// Adds a marker on `body_name` at p_BM with axes R_BM (columns, in B); returns its index.
   /// @throws InputError for an unknown body, a duplicate name or non-orthonormal axes.

@@ -7,6 +7,7 @@
 #include <Eigen/Sparse>
 
 #include "libemb/common/error.h"
+#include "libemb/mbs/core/expression_function.h"
 
 namespace emb::mbs {
 
@@ -80,9 +81,24 @@ TimeFunction TimeFunction::PeriodicSpline(std::vector<double> x, std::vector<dou
   return f;
 }
 
-FunctionValue TimeFunction::Eval(double x) const {
+TimeFunction TimeFunction::Expression(const std::string& text,
+                                      const std::map<std::string, double>& constants,
+                                      double scale) {
+  TimeFunction f;
+  f.kind_ = Kind::kExpression;
+  f.expression_ = std::make_shared<const ExpressionFunction>(text, constants, scale);
+  return f;
+}
+
+double TimeFunction::operator()(double x) const {
+  return kind_ == Kind::kExpression ? expression_->Value(x) : Eval(x, 0).f;
+}
+
+FunctionValue TimeFunction::Eval(double x, int order) const {
   FunctionValue v;
   switch (kind_) {
+    case Kind::kExpression:
+      return expression_->Eval(x, order);
     case Kind::kPolynomial: {
       // Horner for f, f', f''.
       for (std::size_t k = c_.size(); k-- > 0;) {
@@ -135,6 +151,10 @@ FunctionValue TimeFunction::Eval(double x) const {
 std::string TimeFunction::Describe() const {
   std::ostringstream o;
   o.precision(10);
+  if (kind_ == Kind::kExpression) {
+    o << "expression[" << expression_->text() << "]";
+    return o.str();
+  }
   if (kind_ == Kind::kTable || kind_ == Kind::kSpline) {
     o << (kind_ == Kind::kSpline ? "periodic spline[" : "table[") << x_.size() << " points"
       << (periodic_ && kind_ == Kind::kTable ? ", periodic" : "") << "]";

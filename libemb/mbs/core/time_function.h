@@ -4,10 +4,14 @@
 /// (x = time, e.g. a crank angle 2 pi N t) and applied loads (x = time or a joint
 /// coordinate, e.g. cylinder pressure force vs crank angle).
 
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace emb::mbs {
+
+class ExpressionFunction;
 
 /// f, f' and f'' at one point.
 struct FunctionValue {
@@ -23,7 +27,9 @@ struct FunctionValue {
 ///                outside; optionally periodic with period x_last - x_first
 ///                (f'' = 0 inside intervals; use it for loads, not for motions);
 ///  - periodic spline: the periodic cubic spline (C2) through (x_i, y_i), period
-///                x_last - x_first, y_last = y_first (e.g. a cylinder pressure curve).
+///                x_last - x_first, y_last = y_first (e.g. a cylinder pressure curve);
+///  - expression: a formula of t (expression_function.h, muParser), derivatives by
+///                Richardson-extrapolated central differences.
 class TimeFunction {
  public:
   /// f = 0.
@@ -37,19 +43,29 @@ class TimeFunction {
   /// @throws InputError as Table, for fewer than 3 points, or if y_last != y_first
   /// (relative 1e-9 of max |y|).
   static TimeFunction PeriodicSpline(std::vector<double> x, std::vector<double> y);
+  /// A formula of t (or x) with named constants; `scale` the first difference step of its
+  /// derivatives (ExpressionFunction). @throws InputError for a formula muParser refuses.
+  static TimeFunction Expression(const std::string& text,
+                                 const std::map<std::string, double>& constants = {},
+                                 double scale = 1e-3);
 
-  FunctionValue Eval(double x) const;
-  double operator()(double x) const { return Eval(x).f; }
+  /// f and its derivatives up to `order` (0, 1 or 2) at x; the others may be left 0. Only
+  /// an expression computes less for a lower order (and only it can fail: @throws
+  /// ExpressionFunction::Eval's errors).
+  FunctionValue Eval(double x, int order = 2) const;
+  /// f(x) alone (an expression needs no derivative, so a kink is no error here).
+  double operator()(double x) const;
   /// "polynomial[0, 6.28]" etc. for reports.
   std::string Describe() const;
 
  private:
-  enum class Kind { kPolynomial, kHarmonic, kTable, kSpline };
+  enum class Kind { kPolynomial, kHarmonic, kTable, kSpline, kExpression };
   Kind kind_{Kind::kPolynomial};
   std::vector<double> c_{0.0};  // polynomial coefficients, or (amplitude, omega, phase, offset)
   std::vector<double> x_, y_;
   std::vector<double> m_;  // spline second derivatives at x_ (m_.back() = m_.front())
   bool periodic_{false};
+  std::shared_ptr<const ExpressionFunction> expression_;  // immutable, shared by copies
 };
 
 }  // namespace emb::mbs

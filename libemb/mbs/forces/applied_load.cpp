@@ -97,7 +97,9 @@ void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
   const MarkerDerivatives dM = DifferentiateMarker(M, 0, jac.num_slots());
 
   const Vector3d a_W = frame_ == Frame::kWorld ? direction_ : Vector3d(M.R_WM * direction_);
-  const FunctionValue fx = magnitude_.Eval(CalcArgument(ctx));
+  // df only where the load depends on the state (a joint angle): a load of time may have
+  // kinks (an expression's derivatives are then never asked for).
+  const FunctionValue fx = magnitude_.Eval(CalcArgument(ctx), argument_.joint_angle ? 1 : 0);
   const Vector3d load = fx.f * a_W;
   MatrixXd dload = MatrixXd::Zero(3, n);
   if (frame_ == Frame::kMarker) dload = -fx.f * Skew(a_W) * dM.rotation_x;

@@ -197,16 +197,24 @@ TEST(DynamicTolerances, AtolBelowTheModelsFloorIsRaisedWithAWarning) {
   EXPECT_TRUE(RunPendulum(kMass, 1e-8, 1e-10, 1e-3).warnings.empty());
 }
 
-TEST(DynamicTolerances, MultiplierAtolFollowsTheForceScale) {
-  // 1e-4 of the largest force at t0 (the weight m g or the pivot reaction, whichever is
-  // larger): a pendulum 1000 times heavier gets a 1000 times looser multiplier atol.
+TEST(DynamicTolerances, MultiplierAtolFollowsTheForceScaleAndRtol) {
+  // min(1e-4, 100 rtol) of the largest force at t0 (the weight m g or the pivot reaction,
+  // whichever is larger): a pendulum 1000 times heavier gets a 1000 times looser multiplier
+  // atol, a 100 times tighter rtol a 100 times tighter one (issue 14: it did not follow rtol).
   Sample light, heavy;
   const RunResult a = RunPendulum(1.0, 1e-8, 1e-10, 1e-3, &light);
   const RunResult b = RunPendulum(1000.0, 1e-8, 1e-10, 1e-3, &heavy);
-  ASSERT_TRUE(a.ok() && b.ok()) << a.message << b.message;
+  const RunResult c = RunPendulum(1.0, 1e-6, 1e-10, 1e-3);
+  ASSERT_TRUE(a.ok() && b.ok() && c.ok()) << a.message << b.message << c.message;
   const double f_ref = std::max(kGravity, light.lambda.cwiseAbs().maxCoeff());
-  EXPECT_NEAR(a.multiplier_atol, 1e-4 * f_ref, 1e-12);
+  EXPECT_NEAR(a.multiplier_atol, 100 * 1e-8 * f_ref, 1e-15);
   EXPECT_NEAR(b.multiplier_atol / a.multiplier_atol, 1000.0, 1e-9);
+  EXPECT_NEAR(c.multiplier_atol / a.multiplier_atol, 100.0, 1e-9);
+  // Above the default rtol it stays at 1e-4 F_ref: a looser Newton test there cost steps
+  // and accuracy (benchmarks/mbs_work_precision.cpp).
+  const RunResult d = RunPendulum(1.0, 1e-4, 1e-10, 1e-3);
+  ASSERT_TRUE(d.ok()) << d.message;
+  EXPECT_NEAR(d.multiplier_atol, 1e-4 * f_ref, 1e-15);
 }
 
 }  // namespace

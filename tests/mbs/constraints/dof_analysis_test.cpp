@@ -33,17 +33,7 @@ TEST(DofAnalysis, ExactlyConstrainedModels) {
 
 TEST(DofAnalysis, RepeatedJointIsNamedEquationByEquation) {
   // A second revolute on the same hinge repeats all 5 equations of the first.
-  System s;
-  RigidBody b;
-  b.name = "door";
-  b.mass = 10;
-  b.inertia_B = Eigen::Vector3d(1, 1, 1).asDiagonal();
-  s.AddBody(b);
-  s.AddMarker("frame", "ground", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  s.AddMarker("hinge", "door", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  s.AddJoint("upper", JointType::kRevolute, "hinge", "frame");
-  s.AddJoint("lower", JointType::kRevolute, "hinge", "frame");
-  s.Finalize();
+  const System s = testing::RepeatedHinge();
   const DofReport r = Report(s);
   EXPECT_EQ(r.gruebler_dof, -4);
   EXPECT_EQ(r.true_dof, 1);
