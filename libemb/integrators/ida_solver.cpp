@@ -50,6 +50,7 @@ IntegratorStatus StatusOf(int flag) {
     case IDA_LSOLVE_FAIL:
       return IntegratorStatus::kLinearSolverFailure;
     case IDA_RES_FAIL:
+    case IDA_RTFUNC_FAIL:
     case IDA_REP_RES_ERR:
     case IDA_FIRST_RES_FAIL:
       return IntegratorStatus::kResidualFailure;
@@ -131,6 +132,19 @@ struct IdaSolver::Impl {
     }
   }
 
+  // Root (event) functions: g(t, y, y'); a non-finite value or a NumericalError of the
+  // problem ends the solve with IDA_RTFUNC_FAIL (reported as kResidualFailure).
+  static int Roots(realtype t, N_Vector y, N_Vector yp, realtype* g, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      Eigen::Map<Eigen::VectorXd> gv(g, self->problem->num_roots());
+      return self->problem->CalcRoots(t, View(y), View(yp), gv) ? 0 : -1;
+    } catch (...) {
+      self->pending = std::current_exception();
+      return -1;
+    }
+  }
+
   static void ErrorHandler(int, const char* module, const char* function, char* msg, void* user) {
     auto* self = static_cast<Impl*>(user);
     self->last_message = std::string(module) + "/" + function + ": " + msg;
@@ -190,6 +204,11 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
   if (options.initial_step > 0.0)
     CheckSetup(IDASetInitStep(m.mem, options.initial_step), "IDASetInitStep");
   if (options.max_step > 0.0) CheckSetup(IDASetMaxStep(m.mem, options.max_step), "IDASetMaxStep");
+  if (problem.num_roots() > 0) {
+    CheckSetup(IDARootInit(m.mem, problem.num_roots(), &Impl::Roots), "IDARootInit");
+    // A root function that is zero at a restart (an event just handled) is normal here.
+    CheckSetup(IDASetNoInactiveRootWarn(m.mem), "IDASetNoInactiveRootWarn");
+  }
   linear_solver_ = ResolveLinearSolverKind(
       options.linear_solver,
       problem.has_jacobian() && options.use_analytic_jacobian && problem.has_sparse_jacobian(), n,
@@ -254,6 +273,12 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
   y_ = View(m.y);
   yp_ = View(m.yp);
   report.t = t_reached;
+  if (flag == IDA_ROOT_RETURN) {
+    report.root_found = true;
+    report.root_directions.assign(static_cast<std::size_t>(problem_.num_roots()), 0);
+    CheckSetup(IDAGetRootInfo(m.mem, report.root_directions.data()), "IDAGetRootInfo");
+    return report;
+  }
   if (flag >= 0) return report;  // IDA_SUCCESS or IDA_TSTOP_RETURN
 
   report.status = StatusOf(flag);
@@ -299,6 +324,7 @@ IntegratorStats IdaSolver::stats() const {
     s.full_factorizations = v;  // every dense setup is one LU with pivoting
   }
   if (IDAGetNumErrTestFails(mem, &v) >= 0) s.error_test_failures = v;
+  if (problem_.num_roots() > 0 && IDAGetNumGEvals(mem, &v) >= 0) s.root_evals = v;
   if (IDAGetNumNonlinSolvConvFails(mem, &v) >= 0) s.nonlinear_convergence_failures = v;
   int q = 0;
   if (IDAGetLastOrder(mem, &q) >= 0) s.last_order = q;

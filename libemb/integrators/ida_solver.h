@@ -63,6 +63,10 @@ class IdaSolver final : public DaeIntegrator {
   /// never taken beyond it). On success y() and yp() are the values at t_out.
   /// On failure they are the last values IDA accepted and the report says where.
   /// Exceptions thrown by the problem are re-thrown here.
+  /// With root functions (DaeProblem::num_roots() > 0, IDARootInit) it stops early at the
+  /// first sign change of any of them: report.root_found, t() the located time, y() and
+  /// yp() the values there; call AdvanceTo again to go on (after Reinitialize() if the
+  /// problem changed its equations at the event).
   IntegratorReport AdvanceTo(double t_out) override;
 
   /// Restarts from new values at t0 (after a discontinuity or a projection).

@@ -273,6 +273,7 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   s->ida.max_step = r.GetDouble("max_step", s->ida.max_step, R::NonNegative("s"));
   s->ida.max_num_steps =
       r.GetInt("max_steps", static_cast<int>(s->ida.max_num_steps), 1, 1000000000);
+  s->max_events = r.GetInt("max_events", static_cast<int>(s->max_events), 1, 1000000000);
   try {
     s->ida.linear_solver = ParseLinearSolverKind(r.GetString("linear_solver", "auto"));
     s->integrator = mbs::ParseDynamicIntegrator(r.GetString("integrator", Name(s->integrator)));

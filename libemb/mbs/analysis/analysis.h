@@ -22,6 +22,7 @@
 #include "libemb/common/progress.h"
 #include "libemb/integrators/ida_solver.h"
 #include "libemb/mbs/constraints/assembly.h"
+#include "libemb/mbs/analysis/event_handling.h"
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/mbs/core/dynamics.h"
 #include "libemb/mbs/core/system.h"
@@ -119,6 +120,9 @@ struct AnalysisSettings {
   /// Dynamic analysis: how flexible bodies start. kQuasiStatic removes the free vibration
   /// an undeformed start excites (issue 19); a start that does not converge is an error.
   ElasticStart elastic_start{ElasticStart::kAsGiven};
+  /// Dynamic analysis with impact elements: the run stops (integrator failure, with the
+  /// count) after this many events, e.g. contacts chattering without end (event_handling.h).
+  long max_events{1000000};
 };
 
 /// A prepared run: the (possibly reduced) system and consistent initial values.
@@ -199,6 +203,9 @@ struct RunResult {
   int newton_iterations{0};  ///< kinematic/static: total
   StaticReport static_report;  ///< static/quasi-static: the last (or failed) solve
   bool stopped{false};  ///< dynamic analysis: ended before t_end by the caller's StopFn
+  /// Dynamic analysis: the events located (contact onset, separation, force peaks) and the
+  /// contacts of impact elements (event_handling.h).
+  EventLog events;
   bool ok() const { return status == RunStatus::kSuccess; }
 };
 

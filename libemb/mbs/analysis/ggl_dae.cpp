@@ -13,7 +13,9 @@ GglDae::GglDae(const System& system)
     : system_(system),
       layout_(system.layout().nq(), system.layout().nv(), system.num_equations(),
               system.layout().num_moving()),
-      workspace_(system) {}
+      workspace_(system) {
+  InitRoots();
+}
 
 namespace {
 

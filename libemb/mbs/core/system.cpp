@@ -226,7 +226,8 @@ void System::Finalize() {
   }
   force_angle_slot_.clear();
   for (const auto& fe : forces_) {
-    const int n = fe->num_angle_slots();
+    // Angle slots, then state slots (force_element.h).
+    const int n = fe->num_angle_slots() + fe->num_state_slots();
     force_angle_slot_.push_back(n > 0 ? num_angle_slots_ : -1);
     num_angle_slots_ += n;
   }

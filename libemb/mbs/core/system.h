@@ -121,7 +121,8 @@ class System {
   const std::vector<Sensor>& sensors() const { return sensors_; }
   const Eigen::Vector3d& gravity() const { return gravity_W_; }
   int num_angle_slots() const { return num_angle_slots_; }
-  /// First angle slot of force element k (-1 if it needs none).
+  /// First workspace slot of force element k (-1 if it needs none): its angle slots, then
+  /// its state slots (ForceElement::num_state_slots).
   int force_angle_slot(int k) const { return force_angle_slot_.at(k); }
   /// Reaction ports (set by Finalize): port e < elements().size() is element e's first port;
   /// the second ports of the couplers follow in element order.
