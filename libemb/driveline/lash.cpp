@@ -72,12 +72,16 @@ Lash::Mode Lash::CurrentMode(const mbs::ForceContext& ctx, const CoordinateValue
   const bool stored = ctx.workspace != nullptr && ctx.workspace->events_active() && slot >= 0;
   if (stored && !std::isnan(ctx.workspace->state(slot)))
     return {static_cast<int>(ctx.workspace->state(slot)), ctx.workspace->state(slot + 1)};
-  // The state the configuration implies: closed where the stop is penetrated.
+  // The state the configuration implies: closed where the stop is penetrated. Its closing
+  // speed is unknown: x' into the stop when the state is kept (a run's first state), else
+  // the Hunt-Crossley floor (state-independent, so that the force stays a function of
+  // (x, x') whose derivatives are the analytic ones).
   Mode m;
   for (int s : {+1, -1})
     if (Penetration(x, s) > 0.0) {
       m.side = s;
-      m.impact_velocity = std::max(0.0, s * x.rate);
+      m.impact_velocity = stored ? std::max(s * x.rate, p_.contact.min_impact_velocity)
+                                 : p_.contact.min_impact_velocity;
     }
   if (stored) StoreMode(ctx, m);
   return m;

@@ -23,7 +23,9 @@
 /// coordinate's size) the sign of the first non-zero of delta', delta'' decides whether the
 /// stop is being entered or left; a closed contact whose force is negative, or zero and
 /// falling, opens; an open one whose force is positive, or zero and rising, closes. Without event location (statics,
-/// linearisation) the contact is closed wherever delta > 0, with F clamped to >= 0.
+/// linearisation) the contact is closed wherever delta > 0, with F clamped to >= 0 and, for
+/// Hunt-Crossley, the closing speed taken as min_impact_velocity. A run's first state is
+/// taken the same way, except that the closing speed is then x' into the stop.
 ///
 /// Optional squeeze film (seed appendix A1, eq. A1.5, the lubricated approach of two gear
 /// teeth): while the lash is open, each stop s that is approached resists with

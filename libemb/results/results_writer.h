@@ -47,8 +47,15 @@
 ///                       rotation vector of R_J^T R_I (rad)
 ///   with flexible bodies also
 ///   /model/flexible_bodies [nf] names, /model/num_modes [nf]
-///   /state/eta, /state/eta_dot [N, sum num_modes] modal coordinates and rates, body after
-///                       body (/state/q and /state/v hold the rigid-body part only)
+///   /state/eta, /state/eta_dot, /state/eta_ddot [N, sum num_modes] modal coordinates,
+///                       rates and accelerations, body after body (/state/q, /state/v and
+///                       /state/vdot hold the rigid-body part only)
+///   with impact elements (dynamic runs with events, mbs/analysis/event_handling.h)
+///   /events/contacts    [nc, 7] per contact: force element index, side (+1 upper stop,
+///                       -1 lower), t_onset [s], closing speed, peak force [N or N m],
+///                       t_separation [s] (NaN: closed at the end), opening speed
+///   /events/elements    [nc] the force element of each contact; root attributes
+///                       num_events (located events) and num_restarts (law switches)
 
 #include <fstream>
 #include <memory>
@@ -94,7 +101,8 @@ class ResultsWriter {
   const mbs::System& system_;
   TimeSeriesFile file_;
   int time_, q_, v_, vdot_, euler_, lambda_, force_, torque_, energy_, residuals_;
-  int eta_{-1}, eta_dot_{-1}, loads_{-1}, sensors_{-1};
+  int eta_{-1}, eta_dot_{-1}, eta_ddot_{-1}, loads_{-1}, sensors_{-1};
+  void WriteEvents(const mbs::EventLog& log);
 };
 
 /// A CSV file with a header line "t,<channel>,..." and one line per sample; the channels
