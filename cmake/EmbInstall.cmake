@@ -36,6 +36,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/libemb/ DESTINATION ${CMAKE_INSTALL_INCL
         PATTERN "beam_part_reader.h" EXCLUDE
         PATTERN "engine_parts.h" EXCLUDE
         PATTERN "driveline_parts.h" EXCLUDE
+        PATTERN "output_point_reader.h" EXCLUDE
         PATTERN "scene_parts.h" EXCLUDE)
 
 set(EMB_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/emb)

@@ -6,7 +6,8 @@
 /// <element>.F.{x,y,z} and <element>.T.{x,y,z} (reactions, joint axes; for a coupler at its
 /// first joint), <coupler>.F2.{x,y,z} and <coupler>.T2.{x,y,z} (a coupler's reaction at its
 /// second joint), <force element>.F.{x,y,z} and .T.{x,y,z} (its load, ForceElement::CalcLoad),
-/// <force element>.F.norm (|F|), <sensor>.{dx,dy,dz,rx,ry,rz},
+/// <force element>.F.norm (|F|), <sensor>.{dx,dy,dz,rx,ry,rz}, <output point>.<channel>
+/// (probes: u|v|a.{x,y,z,n}, power; mbs/flexible/output_points.h),
 /// energy.{kinetic,gravity,elastic,total}, residual.{position,velocity}.
 
 #include <string>
@@ -43,7 +44,8 @@ class ChannelSet {
       kResidual,
       kForceElement,
       kForceElementNorm,
-      kSensor
+      kSensor,
+      kProbe
     } kind;
     int index;      // body, reaction port, force element or sensor
     int component;  // 0..5

@@ -124,6 +124,22 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
                                    "[N m] on the first marker's body, in the second marker's "
                                    "axes (NaN: not reported)"));
   }
+  if (!system.probes().empty()) {
+    std::vector<std::string> names, channels;
+    for (const auto& p : system.probes()) {
+      names.push_back(p->name());
+      for (const auto& c : p->channels()) channels.push_back(p->name() + "." + c);
+    }
+    file_.WriteStrings("/model/output_points", names);
+    file_.WriteStrings("/model/output_point_channels", channels);
+    probes_ = file_.AddSeries("/output_points", system.num_probe_channels());
+    file_.SetAttribute("/output_points", "columns",
+                       std::string("per /model/output_point_channels (mbs/flexible/"
+                                   "output_points.h): u elastic displacement [m], v velocity "
+                                   "[m/s], a acceleration [m/s^2] in the part's axes, n along "
+                                   "the point's direction; power: integral of v_n^2 over a "
+                                   "surface [m^4/s^2]"));
+  }
   if (!sensors.empty()) {
     sensors_ = file_.AddSeries("/sensors", 6 * static_cast<int>(sensors.size()));
     file_.SetAttribute("/sensors", "columns",
@@ -144,6 +160,7 @@ void ResultsWriter::Write(const mbs::Sample& s) {
     const Eigen::MatrixXd rows = s.sensors.transpose();
     file_.Append(sensors_, rows.data());
   }
+  if (probes_ >= 0) file_.Append(probes_, s.probes.data());
   if (eta_ >= 0) {
     const mbs::StateLayout& L = system_.layout();
     const int rigid_q = L.nq() - L.num_elastic_total(), rigid_v = L.nv() - L.num_elastic_total();
@@ -188,7 +205,8 @@ std::uint64_t ResultsWriter::BytesPerSample(const mbs::System& system) {
   const std::uint64_t np = system.reaction_ports().size();
   const std::uint64_t doubles = 1 + 7 * nb + 6 * nb + 6 * nb + 3 * nb + system.num_equations() +
                                 6 * np + 5 + 2 + 3 * system.layout().num_elastic_total() +
-                                6 * system.force_elements().size() + 6 * system.sensors().size();
+                                6 * system.force_elements().size() + 6 * system.sensors().size() +
+                                static_cast<std::uint64_t>(system.num_probe_channels());
   return 8 * doubles;
 }
 

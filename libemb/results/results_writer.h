@@ -45,6 +45,9 @@
 ///                       marker's body in its second marker's axes (NaN if not reported)
 ///   /sensors            [N, 6 ns] per sensor: position of marker I in J's axes (m) and the
 ///                       rotation vector of R_J^T R_I (rad)
+///   with output points (probes, mbs/flexible/output_points.h)
+///   /model/output_points, /model/output_point_channels  names, "<point>.<channel>"
+///   /output_points      [N, channels] their values (units in the dataset's attribute)
 ///   with flexible bodies also
 ///   /model/flexible_bodies [nf] names, /model/num_modes [nf]
 ///   /state/eta, /state/eta_dot, /state/eta_ddot [N, sum num_modes] modal coordinates,
@@ -101,7 +104,7 @@ class ResultsWriter {
   const mbs::System& system_;
   TimeSeriesFile file_;
   int time_, q_, v_, vdot_, euler_, lambda_, force_, torque_, energy_, residuals_;
-  int eta_{-1}, eta_dot_{-1}, eta_ddot_{-1}, loads_{-1}, sensors_{-1};
+  int eta_{-1}, eta_dot_{-1}, eta_ddot_{-1}, loads_{-1}, sensors_{-1}, probes_{-1};
   void WriteEvents(const mbs::EventLog& log);
 };
 

@@ -18,6 +18,7 @@
 #include "libemb/mbs/forces/spring_damper.h"
 #include "libemb/results/channels.h"
 #include "libemb/scene/beam_part_reader.h"
+#include "libemb/scene/output_point_reader.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
 #include "libemb/scene/yaml_reader.h"
@@ -33,6 +34,7 @@ using Eigen::Vector3d;
 struct Parts {
   std::map<std::string, mbs::FlexiblePart> from_body_files;
   std::map<std::string, mbs::BeamPart> beams;
+  std::map<std::string, BeamPartOutputs> beam_outputs;  // the same, for output points
 };
 
 // A path in the scene relative to the scene file's directory.
@@ -114,6 +116,8 @@ void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOpti
           inputs->push_back(spec.geometry);
           parts->beams[name] = mbs::AddBeamPart(
               sys, name, MakeBeamModelFromGeometry(spec.geometry, spec.generation), spec.placement);
+          parts->beam_outputs[name] = {parts->beams[name], spec.placement, spec.body_file};
+          if (!spec.body_file.empty()) inputs->push_back(spec.body_file);
           return;
         }
         const std::string model = rb.GetString("model", "rigid");
@@ -364,6 +368,8 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   if (const YAML::Node n = r.Optional("couplers")) ReadCouplers(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("forces")) ReadForces(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("sensors")) ReadSensors(n, source, &scene.system);
+  if (const YAML::Node n = r.Optional("output_points"))
+    ReadOutputPoints(n, source, &scene.system, parts.from_body_files, parts.beam_outputs);
   YAML::Node analysis_node = r.Optional("analysis");
   if (analysis_node) ReadAnalysis(analysis_node, source, &scene.analysis, &scene.steady_state);
   if (const YAML::Node n = r.Optional("output")) ReadOutput(n, source, &scene.output);

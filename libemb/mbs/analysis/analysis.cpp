@@ -183,6 +183,12 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
     s.sensors.row(static_cast<Eigen::Index>(k)) << (J.R_WM.transpose() * (I.p_WM - J.p_WM)).transpose(),
         RotationVectorFromRotation(J.R_WM.transpose() * I.R_WM).transpose();
   }
+  s.probes.resize(system.num_probe_channels());
+  int offset = 0;
+  for (const auto& probe : system.probes()) {
+    probe->Eval(system, bodies, vdot, s.probes.segment(offset, probe->num_channels()));
+    offset += probe->num_channels();
+  }
   s.energies = CalcEnergies(system, bodies, t, workspace);
   if (c.phi.size()) {
     s.position_residual = c.phi.cwiseAbs().maxCoeff();

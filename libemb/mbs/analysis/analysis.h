@@ -151,6 +151,8 @@ struct Sample {
   Eigen::MatrixXd force_loads;
   /// Per sensor (System::sensors) [R_JW (p_I - p_J), rotation vector of R_J^T R_I].
   Eigen::MatrixXd sensors;
+  /// The probes' channels (System::probes, probe.h), probe after probe.
+  Eigen::VectorXd probes;
   Energies energies;
   double position_residual{0.0};  ///< max |Phi|
   double velocity_residual{0.0};  ///< max |C v + Phi_t|

@@ -189,6 +189,25 @@ void System::AddSensor(const std::string& name, const std::string& marker_i,
   sensors_.push_back({name, FindMarker(marker_i), FindMarker(marker_j)});
 }
 
+void System::AddProbe(std::shared_ptr<const Probe> probe) {
+  CheckNotFinalized("AddProbe");
+  EMB_CHECK(probe != nullptr);
+  CheckNewName(probe->name(), "probe");
+  for (const auto& p : probes_)
+    EMB_THROW_IF(p->name() == probe->name(), "output point '" << probe->name()
+                                                              << "' is defined twice");
+  for (int b : probe->bodies())
+    EMB_THROW_IF(b < 0 || b >= num_bodies(),
+                 "output point '" << probe->name() << "': no body with index " << b);
+  probes_.push_back(std::move(probe));
+}
+
+int System::num_probe_channels() const {
+  int n = 0;
+  for (const auto& p : probes_) n += p->num_channels();
+  return n;
+}
+
 void System::Finalize() {
   CheckNotFinalized("Finalize");
   std::vector<int> ne;
