@@ -1,5 +1,7 @@
 #include "libemb/driveline/coordinate.h"
 
+#include <cmath>
+
 #include "libemb/common/error.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
 #include "libemb/mbs/constraints/primitive.h"
@@ -76,14 +78,21 @@ CoordinateValue EvalCoordinate(const mbs::ForceContext& ctx, const std::vector<C
     out.gradient.segment<6>(12 * k + 6) = t.coeff * g.d_j;
     out.velocity.segment<6>(12 * k) = mbs::VirtualBodyVelocity(I);
     out.velocity.segment<6>(12 * k + 6) = mbs::VirtualBodyVelocity(J);
-    quadratic += t.coeff * (g.quadratic + g.d_i.dot(I.extra) + g.d_j.dot(J.extra));
+    const double q = t.coeff * (g.quadratic + g.d_i.dot(I.extra) + g.d_j.dot(J.extra));
+    quadratic += q;
+    out.accel_scale += std::abs(q);
   }
   out.rate = out.gradient.dot(out.velocity);
+  for (int s = 0; s < 2 * K; ++s)
+    out.rate_scale += out.gradient.segment<6>(6 * s).norm() * out.velocity.segment<6>(6 * s).norm();
   if (ctx.vdot != nullptr) {
     const mbs::StateLayout& L = ctx.system->layout();
     double a = quadratic;
-    for (int s = 0; s < 2 * K; ++s)
-      a += out.gradient.segment<6>(6 * s).dot(VirtualBodyAcceleration(L, out.markers[s], *ctx.vdot));
+    for (int s = 0; s < 2 * K; ++s) {
+      const Eigen::Matrix<double, 6, 1> acc = VirtualBodyAcceleration(L, out.markers[s], *ctx.vdot);
+      a += out.gradient.segment<6>(6 * s).dot(acc);
+      out.accel_scale += out.gradient.segment<6>(6 * s).norm() * acc.norm();
+    }
     out.accel = a;
   }
   return out;

@@ -48,6 +48,9 @@ struct CoordinateValue {
   double value{0.0};  ///< x (continuous across turns with a workspace)
   double rate{0.0};   ///< x'
   double accel{0.0};  ///< x'' (only with ctx.vdot)
+  /// Magnitudes of the terms summed into x' and x'' (sum of |G_s| |V_s|, ...): x' and x''
+  /// are exact to ~eps times these (the round-off of differences of large rates).
+  double rate_scale{0.0}, accel_scale{0.0};
   Eigen::RowVectorXd gradient;  ///< dx/dX, 1 x 12 K
   Eigen::VectorXd velocity;     ///< V, the slots' virtual-body velocities, 12 K
   std::vector<mbs::MarkerKinematics> markers;  ///< I_1, J_1, I_2, J_2, ...

@@ -63,6 +63,12 @@ int Lash::state_slot(const mbs::ForceContext& ctx) const {
   return ctx.angle_slot < 0 ? -1 : ctx.angle_slot + NumAngleTerms(terms_);
 }
 
+double Lash::RoundOff(const CoordinateValue& x) const {
+  // A few ulps of the larger of x and the stop.
+  return 64.0 * std::numeric_limits<double>::epsilon() *
+         (1.0 + std::abs(x.value) + std::max(std::abs(p_.lower), std::abs(p_.upper)));
+}
+
 double Lash::Penetration(const CoordinateValue& x, int s) const {
   return s > 0 ? x.value - p_.upper : p_.lower - x.value;
 }
@@ -175,9 +181,12 @@ void Lash::DoCalcEventFunctions(const mbs::ForceContext& ctx, Eigen::Ref<Eigen::
   const CoordinateValue x = EvalCoordinate(ctx, terms_, ctx.angle_slot);
   const Mode m = CurrentMode(ctx, x);
   if (m.side == 0) {
+    // Shifted by the round-off of delta, so that a stop touched exactly (delta = 0 at a
+    // start) is not a zero IDA would stop watching until it leaves zero.
+    const double tol = RoundOff(x);
     for (int s : {+1, -1}) {
       const double delta = Penetration(x, s);
-      g[Index(s)] = std::min(delta, law_.Eval(delta, s * x.rate, m.impact_velocity).force);
+      g[Index(s)] = std::min(delta - tol, law_.Eval(delta, s * x.rate, m.impact_velocity).force);
     }
     return;
   }
@@ -224,20 +233,26 @@ mbs::EventResponse Lash::DoSettleEventState(const mbs::ForceContext& ctx) const 
   using Kind = mbs::EventNote::Kind;
   const CoordinateValue x = EvalCoordinate(ctx, terms_, ctx.angle_slot);
   const Mode m = CurrentMode(ctx, x);
-  // Round-off of delta = x - stop: a few ulps of the larger of the two.
-  const double tol = 64.0 * std::numeric_limits<double>::epsilon() *
-                     (1.0 + std::abs(x.value) + std::max(std::abs(p_.lower), std::abs(p_.upper)));
+  const double tol = RoundOff(x);
+  // Round-off of x' and x'' (differences of the bodies' rates and accelerations).
+  constexpr double kUlps = 64.0 * std::numeric_limits<double>::epsilon();
+  const double tol_v = kUlps * x.rate_scale, tol_a = kUlps * x.accel_scale;
   // +1 entering the stop (delta going positive), -1 leaving it, 0 at rest on it.
   auto heading = [&](int s) {
     const double d = Penetration(x, s), v = s * x.rate, a = s * x.accel;
     if (d > tol) return +1;
     if (d < -tol) return -2;  // clear of it
-    if (v != 0.0) return v > 0 ? +1 : -1;
-    return a > 0 ? +1 : (a < 0 ? -1 : 0);
+    if (std::abs(v) > tol_v) return v > 0 ? +1 : -1;
+    if (std::abs(a) > tol_a) return a > 0 ? +1 : -1;
+    return 0;
   };
+  // F, dF/dt and their round-off from that of delta, delta', delta''.
+  double F_tol = 0.0, dF_tol = 0.0;
   auto force = [&](int s, double v_impact, double* rate) {
     const ContactForce F = law_.Eval(Penetration(x, s), s * x.rate, v_impact);
     *rate = F.d_delta * s * x.rate + F.d_rate * s * x.accel;
+    F_tol = std::abs(F.d_delta) * tol + std::abs(F.d_rate) * tol_v;
+    dF_tol = std::abs(F.d_delta) * tol_v + std::abs(F.d_rate) * tol_a;
     return F.force;
   };
   mbs::EventResponse r;
@@ -248,7 +263,8 @@ mbs::EventResponse Lash::DoSettleEventState(const mbs::ForceContext& ctx) const 
       const double F = force(s, v_impact, &dF);
       const int h = heading(s);
       const bool at_stop = std::abs(Penetration(x, s)) <= tol;
-      if (h > 0 && (F > 0.0 || (F == 0.0 && (at_stop || dF > 0.0)))) {
+      const bool zero = std::abs(F) <= F_tol;
+      if (h > 0 && (F > F_tol || (zero && (at_stop || dF > dF_tol)))) {
         StoreMode(ctx, {s, v_impact});
         r.restart = true;
         r.notes.push_back(Note(Kind::kContactOnset, s, v_impact, F));
@@ -260,7 +276,7 @@ mbs::EventResponse Lash::DoSettleEventState(const mbs::ForceContext& ctx) const 
   const int s = m.side;
   const double F = force(s, m.impact_velocity, &dF);
   const int h = heading(s);
-  if (F < 0.0 || (F == 0.0 && dF < 0.0) || h == -1 || h == -2) {
+  if (F < -F_tol || (std::abs(F) <= F_tol && dF < -dF_tol) || h == -1 || h == -2) {
     StoreMode(ctx, {0, m.impact_velocity});
     r.restart = true;
     r.notes.push_back(Note(Kind::kSeparation, s, -s * x.rate, 0.0));

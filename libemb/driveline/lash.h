@@ -12,7 +12,9 @@
 ///
 /// Events (event_handling.h). The element has a discrete state per run (free, or in contact
 /// on side s, and the closing speed of that contact) and two event functions:
-///   free:        g_s = min(delta_s, F_s(delta_s, delta_s'))  for s = +1, -1: rises through 0
+///   free:        g_s = min(delta_s - tol, F_s(delta_s, delta_s')) for s = +1, -1 (tol: the
+///                round-off of delta, so that g is not zero at a stop touched exactly at a
+///                start, which IDA would not watch until it left zero): rises through 0
 ///                when the stop closes (and, after a Kelvin-Voigt contact left at delta > 0,
 ///                when it presses again before delta reached 0);
 ///   in contact:  g_s = F_s (falls through 0 at separation), g_-s = dF_s/dt (falls through 0
@@ -104,6 +106,8 @@ class Lash final : public mbs::ForceElement {
   // The state of the run (workspace slots), or the one the configuration implies.
   Mode CurrentMode(const mbs::ForceContext& ctx, const CoordinateValue& x) const;
   void StoreMode(const mbs::ForceContext& ctx, const Mode& m) const;
+  // Round-off of delta (64 eps of the coordinate's size) [rad or m].
+  double RoundOff(const CoordinateValue& x) const;
   // Penetration and its rate at side s.
   double Penetration(const CoordinateValue& x, int s) const;
   // The force on x (F at the engaged side, or the squeeze films) with dF/dx, dF/dx'.
