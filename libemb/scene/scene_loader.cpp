@@ -157,9 +157,10 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
                          << ": marker '" << name << "' frame: expected 'body' or 'world', got '"
                          << frame << "'");
         const std::string interface = r.GetString("interface", "");
-        EMB_THROW_IF(!interface.empty() && r.Has("position"),
-                     Where(file, node) << ": marker '" << name
-                                       << "': give either an interface or a position, not both");
+        // With an interface, a position (part/mesh coordinates) is the point of a beam part's
+        // interface node body the marker sits at; on a body-file part it must be the
+        // interface's point (checked below).
+        const bool at_point = r.Has("position");
         const Vector3d p = r.GetVector3("position", Vector3d::Zero());
         Matrix3d R = Matrix3d::Identity();
         if (const YAML::Node o = r.Optional("orientation"))
@@ -169,7 +170,17 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
         // interface, with the orientation in part axes (mbs/flexible/beam_part.h).
         if (const auto beam = parts.beams.find(body);
             beam != parts.beams.end() && !interface.empty()) {
-          mbs::AddInterfaceMarker(sys, beam->second, name, interface, R);
+          if (!at_point) {
+            mbs::AddInterfaceMarker(sys, beam->second, name, interface, R);
+            return;
+          }
+          // At part point p on the interface's node body (a beam section is rigid); axes R in
+          // the part frame, as the interface marker's (which has the part's axes).
+          const mbs::Marker& itf = sys->marker(sys->FindMarker(beam->second.FindInterface(interface).marker));
+          const mbs::BeamPartPlacement& pl = parts.beam_outputs.at(body).placement;
+          const mbs::RigidBody& nb = sys->body(itf.body);
+          sys->AddMarker(name, nb.name, nb.R_WB.transpose() * (pl.p_WP + pl.R_WP * p - nb.p_WB),
+                         itf.R_BM * R);
           return;
         }
         const int b = sys->FindBody(body);
@@ -179,6 +190,16 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
           EMB_THROW_IF(
               part == parts.from_body_files.end(),
               "marker '" << name << "': body '" << body << "' has no body_file, so no interfaces");
+          if (at_point) {
+            const Vector3d q = part->second.interface_points.at(
+                static_cast<std::size_t>(part->second.FindInterface(interface)));
+            EMB_THROW_IF((q - p).norm() > 1e-9 * std::max(1.0, q.norm()),
+                         Where(file, node) << ": marker '" << name << "': position "
+                                           << p.transpose() << " is not the point of interface '"
+                                           << interface << "' (" << q.transpose()
+                                           << "); a marker on a part from a body file sits on "
+                                              "its interface's point");
+          }
           mbs::AddInterfaceMarker(sys, part->second, name, interface, R);
           return;
         }
