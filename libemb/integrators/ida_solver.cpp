@@ -246,6 +246,13 @@ void IdaSolver::Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::
                "IDA reinit: expected values of size " << problem_.size());
   View(m.y) = y0;
   View(m.yp) = yp0;
+  // IDAReInit zeroes IDA's counters: keep what they counted so far.
+  const IntegratorStats now = stats();
+  before_reinit_ = now;
+  if (linear_solver_ == LinearSolverKind::kKlu) {  // emb's KLU counts on by itself
+    before_reinit_.full_factorizations = 0;
+    before_reinit_.refactorizations = 0;
+  }
   CheckSetup(IDAReInit(m.mem, t0, m.y, m.yp), "IDAReInit");
   t_ = t0;
   y_ = y0;
@@ -310,22 +317,22 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
 }
 
 IntegratorStats IdaSolver::stats() const {
-  IntegratorStats s;
+  IntegratorStats s = before_reinit_;
   void* mem = impl_->mem;
   long v = 0;
-  if (IDAGetNumSteps(mem, &v) >= 0) s.steps = v;
-  if (IDAGetNumResEvals(mem, &v) >= 0) s.residual_evals = v;
-  if (IDAGetNumJacEvals(mem, &v) >= 0) s.jacobian_evals = v;
+  if (IDAGetNumSteps(mem, &v) >= 0) s.steps += v;
+  if (IDAGetNumResEvals(mem, &v) >= 0) s.residual_evals += v;
+  if (IDAGetNumJacEvals(mem, &v) >= 0) s.jacobian_evals += v;
   if (linear_solver_ == LinearSolverKind::kKlu) {
     const KluStats& k = KluFactorizationOf(impl_->ls).stats();
     s.full_factorizations = k.full_factorizations;
     s.refactorizations = k.refactorizations;
   } else if (IDAGetNumLinSolvSetups(mem, &v) >= 0) {
-    s.full_factorizations = v;  // every dense setup is one LU with pivoting
+    s.full_factorizations += v;  // every dense setup is one LU with pivoting
   }
-  if (IDAGetNumErrTestFails(mem, &v) >= 0) s.error_test_failures = v;
-  if (problem_.num_roots() > 0 && IDAGetNumGEvals(mem, &v) >= 0) s.root_evals = v;
-  if (IDAGetNumNonlinSolvConvFails(mem, &v) >= 0) s.nonlinear_convergence_failures = v;
+  if (IDAGetNumErrTestFails(mem, &v) >= 0) s.error_test_failures += v;
+  if (problem_.num_roots() > 0 && IDAGetNumGEvals(mem, &v) >= 0) s.root_evals += v;
+  if (IDAGetNumNonlinSolvConvFails(mem, &v) >= 0) s.nonlinear_convergence_failures += v;
   int q = 0;
   if (IDAGetLastOrder(mem, &q) >= 0) s.last_order = q;
   realtype h = 0.0;

@@ -69,7 +69,8 @@ class IdaSolver final : public DaeIntegrator {
   /// problem changed its equations at the event).
   IntegratorReport AdvanceTo(double t_out) override;
 
-  /// Restarts from new values at t0 (after a discontinuity or a projection).
+  /// Restarts from new values at t0 (after a discontinuity or a projection). stats() keeps
+  /// counting across restarts.
   void Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
 
   /// The linear solver in use (kAuto resolved at construction).
@@ -94,6 +95,7 @@ class IdaSolver final : public DaeIntegrator {
   long jacobian_nonzeros_{0};
   double t_{0.0};
   Eigen::VectorXd y_, yp_;
+  IntegratorStats before_reinit_;  // counters up to the last Reinitialize (IDA zeroes its own)
 };
 
 }  // namespace emb
