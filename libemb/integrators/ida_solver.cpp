@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/integrators/klu_linear_solver.h"
@@ -65,7 +66,7 @@ struct IdaSolver::Impl {
   const DaeProblem* problem{nullptr};
   SUNContext ctx{nullptr};
   void* mem{nullptr};
-  N_Vector y{nullptr}, yp{nullptr}, id{nullptr}, scratch{nullptr};
+  N_Vector y{nullptr}, yp{nullptr}, id{nullptr}, scratch{nullptr}, error{nullptr};
   SUNMatrix a{nullptr};
   SUNLinearSolver ls{nullptr};
   std::exception_ptr pending;  // an exception thrown inside a callback, re-thrown later
@@ -77,7 +78,7 @@ struct IdaSolver::Impl {
     if (mem) IDAFree(&mem);
     if (ls) SUNLinSolFree(ls);
     if (a) SUNMatDestroy(a);
-    for (N_Vector v : {y, yp, id, scratch})
+    for (N_Vector v : {y, yp, id, scratch, error})
       if (v) N_VDestroy(v);
     if (ctx) SUNContext_Free(&ctx);
   }
@@ -204,6 +205,9 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
   if (options.initial_step > 0.0)
     CheckSetup(IDASetInitStep(m.mem, options.initial_step), "IDASetInitStep");
   if (options.max_step > 0.0) CheckSetup(IDASetMaxStep(m.mem, options.max_step), "IDASetMaxStep");
+  if (std::isfinite(options.stop_time) && !options.stop_at_outputs)
+    CheckSetup(IDASetStopTime(m.mem, options.stop_time), "IDASetStopTime");
+  limiter_count_.assign(n, 0);
   if (problem.num_roots() > 0) {
     CheckSetup(IDARootInit(m.mem, problem.num_roots(), &Impl::Roots), "IDARootInit");
     // A root function that is zero at a restart (an event just handled) is normal here.
@@ -247,13 +251,16 @@ void IdaSolver::Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::
   View(m.y) = y0;
   View(m.yp) = yp0;
   // IDAReInit zeroes IDA's counters: keep what they counted so far.
-  const IntegratorStats now = stats();
-  before_reinit_ = now;
+  before_reinit_ = stats();
   if (linear_solver_ == LinearSolverKind::kKlu) {  // emb's KLU counts on by itself
     before_reinit_.full_factorizations = 0;
     before_reinit_.refactorizations = 0;
   }
+  root_.reset();
+  after_root_ = false;
   CheckSetup(IDAReInit(m.mem, t0, m.y, m.yp), "IDAReInit");
+  if (std::isfinite(options_.stop_time) && !options_.stop_at_outputs)
+    CheckSetup(IDASetStopTime(m.mem, options_.stop_time), "IDASetStopTime");
   t_ = t0;
   y_ = y0;
   yp_ = yp0;
@@ -266,30 +273,82 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
     report.t = t_;
     return report;
   }
-  CheckSetup(IDASetStopTime(m.mem, t_out), "IDASetStopTime");
-  realtype t_reached = t_;
   m.last_message.clear();
   problem_.ClearRecoverableFailure();
-  const int flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_NORMAL);
+  // An event found beyond an earlier output time: report it once it is reached; before,
+  // read the values off the step that found it.
+  if (root_) return ReportPendingRoot(t_out);
+  realtype t_reached = t_;
+  int flag = 0;
+  long steps = 0;  // IDA's own max_num_steps counts per IDASolve call, i.e. per step here
+  if (options_.stop_at_outputs) {
+    CheckSetup(IDASetStopTime(m.mem, t_out), "IDASetStopTime");
+    // One step at a time to count what limits each step; IDA stops exactly at t_out.
+    while (flag >= 0 && t_reached < t_out) {
+      if (steps++ >= options_.max_num_steps) {
+        flag = IDA_TOO_MUCH_WORK;
+        break;
+      }
+      flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_ONE_STEP);
+      if (flag >= 0) RecordStepLimiter();
+      if (flag == IDA_ROOT_RETURN) break;
+    }
+  } else {
+    // Step past t_out if the error test allows (never past stop_time), then read the values
+    // at t_out off IDA's interpolating polynomial.
+    realtype t_cur = t_;
+    if (IDAGetCurrentTime(m.mem, &t_cur) < 0) t_cur = t_;
+    // After an event IDA's last step may reach past t_out; step on anyway, so that IDA checks
+    // the rest of that step for further events before the values are read off it.
+    bool after_root = after_root_;
+    after_root_ = false;
+    while (flag >= 0 && (t_cur < t_out || after_root)) {
+      after_root = false;
+      if (steps++ >= options_.max_num_steps) {
+        flag = IDA_TOO_MUCH_WORK;
+        break;
+      }
+      flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_ONE_STEP);
+      if (flag < 0) break;
+      RecordStepLimiter();
+      if (flag == IDA_ROOT_RETURN) break;
+      t_cur = t_reached;
+      if (flag == IDA_TSTOP_RETURN) break;  // at stop_time: nothing beyond it
+    }
+    if (flag >= 0 && flag != IDA_ROOT_RETURN) {
+      const double t_end = std::min(t_out, static_cast<double>(t_cur));
+      CheckSetup(IDAGetDky(m.mem, t_end, 0, m.y), "IDAGetDky");
+      CheckSetup(IDAGetDky(m.mem, t_end, 1, m.yp), "IDAGetDky");
+      t_reached = t_end;
+    }
+  }
   if (m.pending) {
     std::exception_ptr e = m.pending;
     m.pending = nullptr;
     std::rethrow_exception(e);
   }
+  if (flag == IDA_ROOT_RETURN) {  // y, y' are the values at the root t_reached
+    root_.emplace();
+    root_->t = t_reached;
+    root_->y = View(m.y);
+    root_->yp = View(m.yp);
+    root_->directions.assign(static_cast<std::size_t>(problem_.num_roots()), 0);
+    CheckSetup(IDAGetRootInfo(m.mem, root_->directions.data()), "IDAGetRootInfo");
+    return ReportPendingRoot(t_out);
+  }
   t_ = t_reached;
   y_ = View(m.y);
   yp_ = View(m.yp);
   report.t = t_reached;
-  if (flag == IDA_ROOT_RETURN) {
-    report.root_found = true;
-    report.root_directions.assign(static_cast<std::size_t>(problem_.num_roots()), 0);
-    CheckSetup(IDAGetRootInfo(m.mem, report.root_directions.data()), "IDAGetRootInfo");
-    return report;
-  }
   if (flag >= 0) return report;  // IDA_SUCCESS or IDA_TSTOP_RETURN
 
   report.status = StatusOf(flag);
   report.message = m.last_message;
+  if (flag == IDA_TOO_MUCH_WORK && report.message.empty()) {
+    std::ostringstream o;
+    o << options_.max_num_steps << " steps taken before reaching t = " << t_out;
+    report.message = o.str();
+  }
   if (linear_solver_ == LinearSolverKind::kKlu && !KluFactorizationOf(m.ls).message().empty())
     report.message += " (" + KluFactorizationOf(m.ls).message() + ")";
   if (!problem_.last_recoverable_failure().empty())
@@ -314,6 +373,50 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
     N_VDestroy(e);
   }
   return report;
+}
+
+IntegratorReport IdaSolver::ReportPendingRoot(double t_out) {
+  Impl& m = *impl_;
+  IntegratorReport report;
+  if (root_->t <= t_out) {
+    t_ = root_->t;
+    y_ = root_->y;
+    yp_ = root_->yp;
+    report.t = t_;
+    report.root_found = true;
+    report.root_directions = root_->directions;
+    root_.reset();
+    after_root_ = true;
+    return report;
+  }
+  // The root lies in IDA's last step, beyond t_out: its polynomial holds t_out.
+  CheckSetup(IDAGetDky(m.mem, t_out, 0, m.y), "IDAGetDky");
+  CheckSetup(IDAGetDky(m.mem, t_out, 1, m.yp), "IDAGetDky");
+  t_ = t_out;
+  y_ = View(m.y);
+  yp_ = View(m.yp);
+  report.t = t_out;
+  return report;
+}
+
+void IdaSolver::RecordStepLimiter() {
+  Impl& m = *impl_;
+  N_Vector w = m.scratch;
+  if (m.error == nullptr) m.error = CheckPtr(N_VClone(m.scratch), "N_VClone");
+  if (IDAGetErrWeights(m.mem, w) < 0 || IDAGetEstLocalErrors(m.mem, m.error) < 0) return;
+  const auto e = View(m.error), wt = View(w), id = View(m.id);
+  Eigen::Index worst = -1;
+  double largest = -1.0;
+  for (Eigen::Index i = 0; i < e.size(); ++i) {
+    if (options_.suppress_algebraic && id[i] == 0.0) continue;
+    const double x = std::abs(e[i]) * wt[i];
+    if (x > largest) largest = x, worst = i;
+  }
+  if (worst >= 0) ++limiter_count_[worst];
+}
+
+std::vector<StepLimiter> IdaSolver::StepLimiters(int max_count) const {
+  return TopStepLimiters(limiter_count_, max_count);
 }
 
 IntegratorStats IdaSolver::stats() const {

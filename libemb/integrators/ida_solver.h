@@ -8,8 +8,11 @@
 
 #include <Eigen/Dense>
 #include <exception>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "libemb/integrators/dae_problem.h"
 #include "libemb/integrators/dae_integrator.h"
@@ -40,6 +43,17 @@ struct IdaOptions {
   /// Use the problem's analytic Jacobian when it has one (otherwise difference quotients).
   bool use_analytic_jacobian{true};
   LinearSolverKind linear_solver{LinearSolverKind::kAuto};
+  /// How AdvanceTo reaches an output time. false (default): IDA steps as its error test
+  /// allows, past the output time if it will, and the values at the output time are read
+  /// off IDA's interpolating polynomial (IDAGetDky, accurate to the local error); output
+  /// times then cost nothing. true: every output time is a stop time that the last step is
+  /// cut to land on (values at the end of a converged step). Measured on the inline-4
+  /// (benchmarks/README.md): stopping at every output step of 0.1 ms tripled the Jacobian
+  /// evaluations, because every cut step changes IDA's c_j.
+  bool stop_at_outputs{false};
+  /// IDA never steps beyond this time (e.g. the end of the run, or a discontinuity of the
+  /// inputs); infinite: no limit.
+  double stop_time{std::numeric_limits<double>::infinity()};
   /// kAuto picks KLU from this many unknowns on. Measured with the GGL multibody DAE
   /// (benchmarks/README.md, "Dense vs KLU"): at 24 and 48 unknowns (1-2 rods) dense LU and
   /// KLU cost the same, from 72 (3 rods; the 74-78-unknown slider-crank and engine (c))
@@ -64,9 +78,10 @@ class IdaSolver final : public DaeIntegrator {
   /// On failure they are the last values IDA accepted and the report says where.
   /// Exceptions thrown by the problem are re-thrown here.
   /// With root functions (DaeProblem::num_roots() > 0, IDARootInit) it stops early at the
-  /// first sign change of any of them: report.root_found, t() the located time, y() and
-  /// yp() the values there; call AdvanceTo again to go on (after Reinitialize() if the
-  /// problem changed its equations at the event).
+  /// first sign change of any of them at or before t_out: report.root_found, t() the located
+  /// time, y() and yp() the values there; call AdvanceTo again to go on (after Reinitialize()
+  /// if the problem changed its equations at the event). An event IDA finds in a step past
+  /// t_out is kept and reported by the call that reaches it.
   IntegratorReport AdvanceTo(double t_out) override;
 
   /// Restarts from new values at t0 (after a discontinuity or a projection). stats() keeps
@@ -82,8 +97,12 @@ class IdaSolver final : public DaeIntegrator {
   const Eigen::VectorXd& y() const override { return y_; }
   const Eigen::VectorXd& yp() const override { return yp_; }
   IntegratorStats stats() const override;
+  std::vector<StepLimiter> StepLimiters(int max_count) const override;
 
  private:
+  // Counts the component with the largest weighted local error of the step just taken.
+  void RecordStepLimiter();
+
   // Holds the SUNDIALS objects and the private static C trampolines (defined in the .cpp so
   // that no SUNDIALS header leaks out of this module).
   struct Impl;
@@ -95,7 +114,17 @@ class IdaSolver final : public DaeIntegrator {
   long jacobian_nonzeros_{0};
   double t_{0.0};
   Eigen::VectorXd y_, yp_;
+  std::vector<long> limiter_count_;  // per component: steps it limited
   IntegratorStats before_reinit_;  // counters up to the last Reinitialize (IDA zeroes its own)
+  // An event IDA located beyond the output time asked for: reported when reached.
+  struct PendingRoot {
+    double t{0.0};
+    Eigen::VectorXd y, yp;
+    std::vector<int> directions;
+  };
+  std::optional<PendingRoot> root_;
+  bool after_root_{false};  // an event was just reported: IDA's last step may reach past it
+  IntegratorReport ReportPendingRoot(double t_out);
 };
 
 }  // namespace emb

@@ -128,7 +128,30 @@ PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
       AssemblePositions(run.system, a.q, settings.t_start, &ws2, settings.assembly);
   if (!a2.converged) EMB_THROW(InputError, "the model cannot be assembled: " << a2.message);
   run.q0 = a2.q;
-  if (settings.type == AnalysisType::kDynamic || settings.type == AnalysisType::kAssemble) {
+  const bool moving =
+      settings.type == AnalysisType::kDynamic || settings.type == AnalysisType::kAssemble;
+  if (!settings.installed_bases.empty()) {
+    // The installed modes about the assembled start (with its velocities: centrifugal terms).
+    Eigen::VectorXd v0 = Eigen::VectorXd::Zero(run.system.layout().nv());
+    if (moving)
+      v0 = ProjectVelocities(run.system, run.q0, run.system.InitialVelocities(),
+                             settings.t_start, &ws2)
+               .v;
+    const AccelerationSolution acc =
+        SolveAccelerations(run.system, run.q0, v0, settings.t_start, &ws2);
+    const InstalledBases ib = CalcInstalledBases(run.system, run.q0, v0, settings.t_start,
+                                                 acc.lambda, &ws2, settings.installed_bases);
+    System changed = run.system.WithElasticBases(ib.changes);
+    run.q0 = MapElasticCoordinates(run.system, changed, ib.changes, run.q0, true);
+    run.system = std::move(changed);
+    run.bases = ib.reports;
+    ws2 = ConstraintWorkspace(run.system);
+    const AssemblyResult a3 =
+        AssemblePositions(run.system, run.q0, settings.t_start, &ws2, settings.assembly);
+    if (!a3.converged) EMB_THROW(InputError, "the model cannot be assembled: " << a3.message);
+    run.q0 = a3.q;
+  }
+  if (moving) {
     const VelocityProjection p = ProjectVelocities(
         run.system, run.q0, run.system.InitialVelocities(), settings.t_start, &ws2);
     run.v0 = p.v;
@@ -401,6 +424,7 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
   if (options.initial_step <= 0.0 && settings.initial_step_fraction > 0.0)
     options.initial_step = settings.initial_step_fraction *
                            std::min(settings.output_step, settings.t_end - settings.t_start);
+  options.stop_time = settings.t_end;
   r.atol = options.atol;
   r.multiplier_atol = options.algebraic_atol;
   const std::unique_ptr<DaeIntegrator> integrator =
@@ -474,6 +498,11 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
         (ida.t() - settings.t_start) / std::max(1e-300, settings.t_end - settings.t_start));
   }
   r.ida_stats = ida.stats();
+  constexpr int kReportedStepLimiters = 5;
+  for (const StepLimiter& l : ida.StepLimiters(kReportedStepLimiters))
+    r.step_limiters.emplace_back(
+        dae.ComponentName(l.component),
+        static_cast<double>(l.steps) / std::max(1L, r.ida_stats.steps));
   return r;
 }
 

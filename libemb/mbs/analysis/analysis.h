@@ -16,11 +16,13 @@
 
 #include <Eigen/Dense>
 #include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
 #include "libemb/common/progress.h"
 #include "libemb/integrators/ida_solver.h"
+#include "libemb/mbs/analysis/installed_basis.h"
 #include "libemb/mbs/constraints/assembly.h"
 #include "libemb/mbs/analysis/event_handling.h"
 #include "libemb/mbs/constraints/dof_analysis.h"
@@ -123,6 +125,10 @@ struct AnalysisSettings {
   /// Dynamic analysis with impact elements: the run stops (integrator failure, with the
   /// count) after this many events, e.g. contacts chattering without end (event_handling.h).
   long max_events{1000000};
+  /// Flexible bodies to give an installed basis (installed_basis.h) at the assembled start
+  /// before anything else runs: their modal coordinates become the installed modes of the
+  /// model up to each body's band plus massless static responses at their loaded markers.
+  std::vector<InstalledBasisRequest> installed_bases;
 };
 
 /// A prepared run: the (possibly reduced) system and consistent initial values.
@@ -132,6 +138,8 @@ struct PreparedRun {
   Eigen::VectorXd q0, v0;
   std::vector<std::string> warnings;
   std::string start_note;  ///< the quasi-static elastic start, when asked for
+  /// What the installed bases (AnalysisSettings::installed_bases) kept, per body.
+  std::vector<InstalledBasisReport> bases;
 };
 
 /// Assembles and checks the model. @throws InputError if the assembly does not close
@@ -208,6 +216,9 @@ struct RunResult {
   /// Dynamic analysis: the events located (contact onset, separation, force peaks) and the
   /// contacts of impact elements (event_handling.h).
   EventLog events;
+  /// Dynamic analysis: the unknowns that limited the step size most often (named as in
+  /// GglDae::ComponentName) with the share of the accepted steps each limited.
+  std::vector<std::pair<std::string, double>> step_limiters;
   bool ok() const { return status == RunStatus::kSuccess; }
 };
 

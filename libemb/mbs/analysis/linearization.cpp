@@ -109,6 +109,12 @@ Eigen::MatrixXd CalcVelocityStiffness(const System& sys, const std::vector<BodyK
   return G;
 }
 
+bool HasQuasiStaticCoordinates(const System& sys) {
+  for (int b = 1; b < sys.num_bodies(); ++b)
+    if (sys.body(b).elastic && sys.body(b).elastic->num_quasi_static() > 0) return true;
+  return false;
+}
+
 }  // namespace
 
 LinearModes CalcLinearModes(const System& system, const Eigen::VectorXd& q,
@@ -153,20 +159,41 @@ LinearModes CalcLinearModes(const System& system, const Eigen::VectorXd& q,
     return out;
   }
   // First-order form x' = A x, x = [y; y'].
-  const Eigen::LLT<Eigen::MatrixXd> llt(0.5 * (Mz + Mz.transpose()));
-  if (llt.info() != Eigen::Success)
-    EMB_THROW(NumericalError, "linearised modes: the reduced mass matrix is not positive definite");
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  A.topRightCorner(n, n).setIdentity();
-  A.bottomLeftCorner(n, n) = -llt.solve(Kz);
-  A.bottomRightCorner(n, n) = -llt.solve(Gz);
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
-  if (es.info() != Eigen::Success)
-    EMB_THROW(NumericalError, "linearised modes: the eigen-solve of the first-order form failed");
   std::vector<std::pair<double, double>> pairs;  // (frequency, decay) with Im s > 0
-  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
-    const std::complex<double> s = es.eigenvalues()[i];
-    if (s.imag() > 0.0) pairs.emplace_back(s.imag() / (2 * std::numbers::pi), -s.real());
+  const Eigen::LLT<Eigen::MatrixXd> llt(0.5 * (Mz + Mz.transpose()));
+  if (llt.info() == Eigen::Success && !HasQuasiStaticCoordinates(system)) {
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    A.topRightCorner(n, n).setIdentity();
+    A.bottomLeftCorner(n, n) = -llt.solve(Kz);
+    A.bottomRightCorner(n, n) = -llt.solve(Gz);
+    const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
+    if (es.info() != Eigen::Success)
+      EMB_THROW(NumericalError, "linearised modes: the eigen-solve of the first-order form failed");
+    for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
+      const std::complex<double> s = es.eigenvalues()[i];
+      if (s.imag() > 0.0) pairs.emplace_back(s.imag() / (2 * std::numbers::pi), -s.real());
+    }
+  } else {
+    // Massless (quasi-static) coordinates make M_z singular: the pencil
+    // [0 I; -K -G] x = s [I 0; 0 M] x keeps their finite eigenvalues (relaxations and the
+    // vibrations of what they carry) and puts the massless directions at s = infinity.
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n), B = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    A.topRightCorner(n, n).setIdentity();
+    A.bottomLeftCorner(n, n) = -Kz;
+    A.bottomRightCorner(n, n) = -Gz;
+    B.topLeftCorner(n, n).setIdentity();
+    B.bottomRightCorner(n, n) = 0.5 * (Mz + Mz.transpose());
+    const Eigen::GeneralizedEigenSolver<Eigen::MatrixXd> ges(A, B, false);
+    if (ges.info() != Eigen::Success)
+      EMB_THROW(NumericalError, "linearised modes: the eigen-solve of the first-order pencil failed");
+    const double scale = std::max(1.0, A.cwiseAbs().maxCoeff());
+    for (Eigen::Index i = 0; i < ges.alphas().size(); ++i) {
+      const double beta = ges.betas()[i];
+      if (std::abs(beta) <= 1e-14 * std::abs(ges.alphas()[i]) || beta == 0.0) continue;
+      const std::complex<double> s = ges.alphas()[i] / beta;
+      if (std::abs(s) > 1e8 * scale) continue;  // numerically infinite
+      if (s.imag() > 0.0) pairs.emplace_back(s.imag() / (2 * std::numbers::pi), -s.real());
+    }
   }
   std::sort(pairs.begin(), pairs.end());
   out.frequencies_hz.resize(static_cast<Eigen::Index>(pairs.size()));

@@ -1,5 +1,9 @@
 #include "libemb/mbs/core/elastic_model.h"
 
+#include <cmath>
+#include <cstdlib>
+#include <numbers>
+
 #include "libemb/common/error.h"
 #include "libemb/mbs/core/rotation.h"
 
@@ -106,6 +110,14 @@ void ElasticModel::MakeQuasiStatic(const std::vector<bool>& flags, const std::st
   quasi_static = flags;
 }
 
+void ElasticModel::AddRelaxationDamping(const std::vector<bool>& flags, double tau) {
+  const int ne = num_modes();
+  EMB_CHECK(static_cast<int>(flags.size()) == ne && tau >= 0.0);
+  for (int i = 0; i < ne; ++i)
+    for (int j = 0; j < ne; ++j)
+      if (flags[i] && flags[j]) D(i, j) += tau * K(i, j);
+}
+
 int ElasticModel::num_quasi_static() const {
   int n = 0;
   for (bool f : quasi_static) n += f ? 1 : 0;
@@ -142,6 +154,29 @@ ElasticModel ElasticModel::Subset(const std::vector<int>& keep) const {
     for (auto& k : s.kg_centrifugal) k = square(k);
     for (auto& k : s.kg_translational) k = square(k);
   }
+  return s;
+}
+
+ElasticModel ElasticModel::Transformed(const Eigen::MatrixXd& T) const {
+  EMB_CHECK(T.rows() == num_modes());
+  ElasticModel s = *this;
+  s.St = St * T;
+  s.Ibar = Ibar * T;
+  for (int k = 0; k < 9; ++k) s.Sbar[k] = T.transpose() * Sbar[k] * T;
+  s.K = T.transpose() * K * T;
+  s.D = T.transpose() * D * T;
+  s.K = 0.5 * (s.K + s.K.transpose());
+  s.D = 0.5 * (s.D + s.D.transpose());
+  if (geometric_stiffening) {
+    for (auto& k : s.kg_centrifugal) k = T.transpose() * k * T;
+    for (auto& k : s.kg_translational) k = T.transpose() * k * T;
+  }
+  s.quasi_static.clear();
+  const Eigen::MatrixXd Mee = s.Sbar[0] + s.Sbar[4] + s.Sbar[8];
+  s.frequencies_hz.resize(T.cols());
+  for (Eigen::Index j = 0; j < T.cols(); ++j)
+    s.frequencies_hz[j] =
+        std::sqrt(std::max(0.0, s.K(j, j)) / std::max(Mee(j, j), 1e-300)) / (2.0 * std::numbers::pi);
   return s;
 }
 

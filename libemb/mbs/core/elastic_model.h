@@ -60,6 +60,16 @@ struct ElasticModel {
   void Validate(const std::string& name) const;
   /// The model restricted to modes `keep` (indices into the current modes).
   ElasticModel Subset(const std::vector<int>& keep) const;
+  /// The model in new elastic coordinates xi with eta = T xi (T: ne x n', full column
+  /// rank, columns in the span of the current modes): every invariant is the same integral
+  /// with Phi T for Phi,
+  ///   St' = St T,  Ibar' = Ibar T,  Sbar'_kl = T^T Sbar_kl T,  K' = T^T K T,  D' = T^T D T,
+  ///   K_G' = T^T K_G T,
+  /// so that kinetic, strain and dissipated energies of eta = T xi are those of xi. The
+  /// quasi-static flags are dropped (flag the new coordinates with MakeQuasiStatic) and
+  /// frequencies_hz becomes sqrt(K'_jj / M'_jj) / 2 pi (M' = sum_i Sbar'_ii), exact for
+  /// columns that are M- and K-orthogonal. Cost O(ne^2 n').
+  ElasticModel Transformed(const Eigen::MatrixXd& T) const;
   /// Makes the flagged modes quasi-static (residual flexibility, "mode acceleration"): they
   /// keep their stiffness, damping and every load on them (interface forces, the inertial
   /// loads of the frame's motion through Ibar, gravity), so the static response of the full
@@ -72,6 +82,13 @@ struct ElasticModel {
   /// on each flagged mode. @throws InputError naming `name` otherwise or for a size mismatch.
   void MakeQuasiStatic(const std::vector<bool>& flags, const std::string& name);
   int num_quasi_static() const;
+  /// Adds tau K_ss to the damping of the flagged coordinates (the block of K among them),
+  /// so that they relax to their static response with the time constant tau [s]. A
+  /// quasi-static coordinate has no inertia of its own; what it carries (a rigid body on the
+  /// static flexibility at an interface) would otherwise vibrate above the band with the
+  /// little damping of the high modes the static shape is made of. Keeps D positive
+  /// semi-definite (adds a positive semi-definite block).
+  void AddRelaxationDamping(const std::vector<bool>& flags, double tau);
   bool is_quasi_static(int j) const { return !quasi_static.empty() && quasi_static[j]; }
 };
 

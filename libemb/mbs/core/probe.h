@@ -6,6 +6,7 @@
 /// ("u.x", "a.n", ...); results and CSV files call them "<probe>.<channel>".
 
 #include <Eigen/Dense>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,11 @@ class Probe {
             const Eigen::VectorXd& vdot, Eigen::Ref<Eigen::VectorXd> values) const;
   /// Bodies it reads (to validate indices at Finalize).
   virtual std::vector<int> bodies() const = 0;
+  /// The probe after body `body`'s modal coordinates became eta = T xi
+  /// (System::WithElasticBases), or null if it does not depend on them.
+  virtual std::shared_ptr<const Probe> WithElasticBasis(int body, const Eigen::MatrixXd& T) const {
+    return nullptr;
+  }
 
  protected:
   virtual void DoEval(const System& system, const std::vector<BodyKinematics>& bodies,

@@ -75,6 +75,20 @@ OutputPointProbe::OutputPointProbe(std::string name, std::vector<MaterialPoint> 
   }
 }
 
+std::shared_ptr<const Probe> OutputPointProbe::WithElasticBasis(int body,
+                                                                const Eigen::MatrixXd& T) const {
+  std::vector<MaterialPoint> points = points_;
+  bool changed = false;
+  for (MaterialPoint& p : points)
+    if (p.body == body && p.phi.size()) {
+      EMB_CHECK(p.phi.cols() == T.rows());
+      p.phi = p.phi * T;
+      changed = true;
+    }
+  if (!changed) return nullptr;
+  return std::make_shared<OutputPointProbe>(name(), std::move(points), quantity_, with_direction_);
+}
+
 std::vector<int> OutputPointProbe::bodies() const {
   std::vector<int> b;
   for (const MaterialPoint& p : points_) b.push_back(p.body);

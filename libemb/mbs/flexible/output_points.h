@@ -77,6 +77,8 @@ class OutputPointProbe final : public Probe {
                    OutputPointSpec::Quantity quantity, bool with_direction);
   const std::vector<MaterialPoint>& points() const { return points_; }
   std::vector<int> bodies() const override;
+  /// The points' modal rows of `body` times T (their coordinates' new basis).
+  std::shared_ptr<const Probe> WithElasticBasis(int body, const Eigen::MatrixXd& T) const override;
 
  protected:
   void DoEval(const System& system, const std::vector<BodyKinematics>& bodies,
