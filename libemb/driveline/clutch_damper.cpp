@@ -23,8 +23,7 @@ ClutchDamper::ClutchDamper(std::string name, const CoordinateTerm& term,
 }
 
 ClutchDamper::Spring ClutchDamper::CalcSpring(double theta) const {
-  const double a = std::abs(theta), k1 = p_.stiffness_1, k2 = p_.stiffness_2,
-               tk = p_.knee_angle;
+  const double a = std::abs(theta), k1 = p_.stiffness_1, k2 = p_.stiffness_2, tk = p_.knee_angle;
   if (a <= tk) return {k1 * theta, k1, 0.5 * k1 * theta * theta};
   const double beyond = a - tk;
   return {std::copysign(k1 * tk + k2 * beyond, theta), k2,
@@ -59,7 +58,8 @@ double ClutchDamper::DoCalcDissipatedPower(const mbs::ForceContext& ctx) const {
   return p_.damping * w * w + p_.hysteresis_torque * std::tanh(w / p_.hysteresis_speed) * w;
 }
 
-bool ClutchDamper::DoCalcLoad(const mbs::ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const {
+bool ClutchDamper::DoCalcLoad(const mbs::ForceContext& ctx,
+                              Eigen::Matrix<double, 6, 1>* load) const {
   load->setZero();
   (*load)[5] = CalcTorque(EvalCoordinate(ctx, terms(), ctx.angle_slot)).torque;
   return true;

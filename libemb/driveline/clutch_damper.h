@@ -23,13 +23,13 @@
 namespace emb::driveline {
 
 struct ClutchDamperParameters {
-  double stiffness_1{0.0};  ///< k_1 [N m/rad] > 0 (idle stage)
-  double stiffness_2{0.0};  ///< k_2 [N m/rad] >= 0 (drive stage)
-  double knee_angle{0.0};   ///< theta_k [rad] >= 0, where the second stage starts
-  double damping{0.0};      ///< c [N m s/rad] >= 0
+  double stiffness_1{0.0};        ///< k_1 [N m/rad] > 0 (idle stage)
+  double stiffness_2{0.0};        ///< k_2 [N m/rad] >= 0 (drive stage)
+  double knee_angle{0.0};         ///< theta_k [rad] >= 0, where the second stage starts
+  double damping{0.0};            ///< c [N m s/rad] >= 0
   double hysteresis_torque{0.0};  ///< T_h [N m] >= 0
   double hysteresis_speed{0.1};   ///< omega_h [rad/s] > 0
-  double free_angle{0.0};   ///< a_0 [rad]: the joint angle of the unloaded spring
+  double free_angle{0.0};         ///< a_0 [rad]: the joint angle of the unloaded spring
 };
 
 class ClutchDamper final : public mbs::ForceElement {
@@ -46,7 +46,8 @@ class ClutchDamper final : public mbs::ForceElement {
 
  protected:
   void DoAddForces(const mbs::ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const override;
-  void DoAddForceJacobian(const mbs::ForceContext& ctx, mbs::ForceJacobianSink* sink) const override;
+  void DoAddForceJacobian(const mbs::ForceContext& ctx,
+                          mbs::ForceJacobianSink* sink) const override;
   double DoCalcPotentialEnergy(const mbs::ForceContext& ctx) const override;
   double DoCalcDissipatedPower(const mbs::ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override { return {term_.marker_i, term_.marker_j}; }

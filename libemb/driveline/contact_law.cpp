@@ -42,8 +42,8 @@ const char* Name(ContactLawKind kind) {
 ContactLawKind ParseContactLawKind(const std::string& name) {
   for (ContactLawKind k : {ContactLawKind::kKelvinVoigt, ContactLawKind::kHuntCrossley})
     if (name == Name(k)) return k;
-  EMB_THROW(InputError, "contact law: expected 'kelvin-voigt' or 'hunt-crossley', got '" << name
-                                                                                         << "'");
+  EMB_THROW(InputError,
+            "contact law: expected 'kelvin-voigt' or 'hunt-crossley', got '" << name << "'");
 }
 
 double HuntCrossleyDampingProduct(double e) {

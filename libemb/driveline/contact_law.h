@@ -45,15 +45,15 @@ struct ContactLawParameters {
   /// Kelvin-Voigt: the dashpot c [N s/m or N m s/rad] directly (>= 0; then `restitution`
   /// and `effective_mass` are not used) -- or, if < 0, from e and effective_mass.
   double damping{-1.0};
-  double effective_mass{0.0};  ///< Kelvin-Voigt with e: m [kg or kg m^2] > 0
+  double effective_mass{0.0};        ///< Kelvin-Voigt with e: m [kg or kg m^2] > 0
   double min_impact_velocity{1e-3};  ///< Hunt-Crossley floor of v- [m/s or rad/s] > 0
 };
 
 /// The force of a law and its partial derivatives.
 struct ContactForce {
-  double force{0.0};       ///< F [N or N m]
-  double d_delta{0.0};     ///< dF/d delta
-  double d_rate{0.0};      ///< dF/d delta'
+  double force{0.0};    ///< F [N or N m]
+  double d_delta{0.0};  ///< dF/d delta
+  double d_rate{0.0};   ///< dF/d delta'
 };
 
 /// A validated contact law.

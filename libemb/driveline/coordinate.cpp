@@ -52,8 +52,8 @@ int NumAngleTerms(const std::vector<CoordinateTerm>& terms) {
   return n;
 }
 
-CoordinateValue EvalCoordinate(const mbs::ForceContext& ctx, const std::vector<CoordinateTerm>& terms,
-                               int first_slot) {
+CoordinateValue EvalCoordinate(const mbs::ForceContext& ctx,
+                               const std::vector<CoordinateTerm>& terms, int first_slot) {
   const int K = static_cast<int>(terms.size());
   CoordinateValue out;
   out.gradient.setZero(12 * K);
@@ -70,7 +70,8 @@ CoordinateValue EvalCoordinate(const mbs::ForceContext& ctx, const std::vector<C
     const mbs::KernelEval g = mbs::EvalKernel(t.kernel, I, J);
     double value = g.value;
     if (t.angle()) {
-      if (ctx.workspace != nullptr && slot >= 0) value = ctx.workspace->Unwrap(slot, g.value, g.value);
+      if (ctx.workspace != nullptr && slot >= 0)
+        value = ctx.workspace->Unwrap(slot, g.value, g.value);
       ++slot;
     }
     out.value += t.coeff * value;
@@ -126,8 +127,8 @@ void AddCoordinateForceJacobian(const std::vector<CoordinateTerm>& terms,
   mbs::LocalForceJacobian jac(slots);
   const Eigen::MatrixXd H = CoordinateHessian(terms, value);
   const Eigen::RowVectorXd vH = value.velocity.transpose() * H;
-  jac.stiffness = -value.gradient.transpose() * (dforce_dx * value.gradient + dforce_dv * vH) -
-                  force * H;
+  jac.stiffness =
+      -value.gradient.transpose() * (dforce_dx * value.gradient + dforce_dv * vH) - force * H;
   jac.damping = -dforce_dv * value.gradient.transpose() * value.gradient;
   for (int s = 0; s < jac.num_slots(); ++s)
     jac.SetSlotForce(s, -force * value.gradient.segment<6>(6 * s).transpose());

@@ -51,16 +51,16 @@ struct CoordinateValue {
   /// Magnitudes of the terms summed into x' and x'' (sum of |G_s| |V_s|, ...): x' and x''
   /// are exact to ~eps times these (the round-off of differences of large rates).
   double rate_scale{0.0}, accel_scale{0.0};
-  Eigen::RowVectorXd gradient;  ///< dx/dX, 1 x 12 K
-  Eigen::VectorXd velocity;     ///< V, the slots' virtual-body velocities, 12 K
+  Eigen::RowVectorXd gradient;                 ///< dx/dX, 1 x 12 K
+  Eigen::VectorXd velocity;                    ///< V, the slots' virtual-body velocities, 12 K
   std::vector<mbs::MarkerKinematics> markers;  ///< I_1, J_1, I_2, J_2, ...
 };
 
 /// Evaluates x at the context's state. Angle terms use the workspace angle slots
 /// first_slot, first_slot + 1, ... (one per angle term, in order) when the context has a
 /// workspace; otherwise the raw angle in (-pi, pi]. With ctx.vdot also x''.
-CoordinateValue EvalCoordinate(const mbs::ForceContext& ctx, const std::vector<CoordinateTerm>& terms,
-                               int first_slot);
+CoordinateValue EvalCoordinate(const mbs::ForceContext& ctx,
+                               const std::vector<CoordinateTerm>& terms, int first_slot);
 
 /// d^2x/dX^2 (12 K x 12 K) at `value`'s markers.
 Eigen::MatrixXd CoordinateHessian(const std::vector<CoordinateTerm>& terms,

@@ -36,8 +36,8 @@ Lash::Lash(std::string name, std::vector<CoordinateTerm> terms, const LashParame
                who << ": expected one or two joint coordinates, got " << terms_.size());
   CheckNumber(who + " lower stop", p_.lower, NumberRange::Finite());
   CheckNumber(who + " upper stop", p_.upper, NumberRange::Finite());
-  EMB_THROW_IF(p_.upper < p_.lower, who << ": expected a lash (upper - lower stop) >= 0, got "
-                                         << p_.upper - p_.lower);
+  EMB_THROW_IF(p_.upper < p_.lower,
+               who << ": expected a lash (upper - lower stop) >= 0, got " << p_.upper - p_.lower);
   for (const CoordinateTerm& t : terms_)
     CheckNumber(who + " coordinate coefficient (ratio)", t.coeff, NumberRange::Finite());
   if (p_.squeeze_film) {
@@ -103,8 +103,8 @@ ContactForce Lash::SqueezeForce(const CoordinateValue& x) const {
   ContactForce out;
   if (!p_.squeeze_film) return out;
   const SqueezeFilmParameters& q = *p_.squeeze_film;
-  const double C = 3.0 * std::numbers::pi * q.width * q.viscosity / std::sqrt(2.0) *
-                   std::pow(q.radius, 1.5);
+  const double C =
+      3.0 * std::numbers::pi * q.width * q.viscosity / std::sqrt(2.0) * std::pow(q.radius, 1.5);
   for (int s : {+1, -1}) {
     const double delta = Penetration(x, s), approach = q.lever * s * x.rate;  // -h'
     if (!(approach > 0.0)) continue;
@@ -212,9 +212,9 @@ mbs::EventResponse Lash::DoHandleEvent(const mbs::ForceContext& ctx, const int* 
     const Mode closed{side, std::max(0.0, side * x.rate)};
     StoreMode(ctx, closed);
     r.restart = true;
-    r.notes.push_back(Note(Kind::kContactOnset, side, closed.impact_velocity,
-                           law_.Eval(Penetration(x, side), side * x.rate, closed.impact_velocity)
-                               .force));
+    r.notes.push_back(
+        Note(Kind::kContactOnset, side, closed.impact_velocity,
+             law_.Eval(Penetration(x, side), side * x.rate, closed.impact_velocity).force));
     return r;
   }
   const int s = m.side;

@@ -24,9 +24,9 @@
 /// on the motion (SettleEventState): with |delta| within round-off of 0 (64 eps of the
 /// coordinate's size) the sign of the first non-zero of delta', delta'' decides whether the
 /// stop is being entered or left; a closed contact whose force is negative, or zero and
-/// falling, opens; an open one whose force is positive, or zero and rising, closes. Without event location (statics,
-/// linearisation) the contact is closed wherever delta > 0, with F clamped to >= 0 and, for
-/// Hunt-Crossley, the closing speed taken as min_impact_velocity. A run's first state is
+/// falling, opens; an open one whose force is positive, or zero and rising, closes. Without event
+/// location (statics, linearisation) the contact is closed wherever delta > 0, with F clamped to >=
+/// 0 and, for Hunt-Crossley, the closing speed taken as min_impact_velocity. A run's first state is
 /// taken the same way, except that the closing speed is then x' into the stop.
 ///
 /// Optional squeeze film (seed appendix A1, eq. A1.5, the lubricated approach of two gear
@@ -53,11 +53,11 @@ namespace emb::driveline {
 
 /// Seed eq. (A1.5), squeeze term only. All > 0.
 struct SqueezeFilmParameters {
-  double viscosity{0.0};     ///< eta [Pa s]
-  double width{0.0};         ///< b, the conjunction's width (face width) [m]
-  double radius{0.0};        ///< r_x, equivalent radius of curvature [m]
-  double lever{1.0};         ///< R: film thickness per unit of x [m/rad or m/m]
-  double min_film{1e-6};     ///< h_min, the film left at contact [m]
+  double viscosity{0.0};  ///< eta [Pa s]
+  double width{0.0};      ///< b, the conjunction's width (face width) [m]
+  double radius{0.0};     ///< r_x, equivalent radius of curvature [m]
+  double lever{1.0};      ///< R: film thickness per unit of x [m/rad or m/m]
+  double min_film{1e-6};  ///< h_min, the film left at contact [m]
 };
 
 struct LashParameters {
@@ -84,7 +84,8 @@ class Lash final : public mbs::ForceElement {
 
  protected:
   void DoAddForces(const mbs::ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const override;
-  void DoAddForceJacobian(const mbs::ForceContext& ctx, mbs::ForceJacobianSink* sink) const override;
+  void DoAddForceJacobian(const mbs::ForceContext& ctx,
+                          mbs::ForceJacobianSink* sink) const override;
   double DoCalcPotentialEnergy(const mbs::ForceContext& ctx) const override;
   double DoCalcDissipatedPower(const mbs::ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override;
@@ -93,7 +94,8 @@ class Lash final : public mbs::ForceElement {
   bool DoReportsLoad() const override { return true; }
   int DoNumStateSlots() const override { return 2; }  // side, closing speed of the contact
   int DoNumEventFunctions() const override { return 2; }
-  void DoCalcEventFunctions(const mbs::ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> g) const override;
+  void DoCalcEventFunctions(const mbs::ForceContext& ctx,
+                            Eigen::Ref<Eigen::VectorXd> g) const override;
   mbs::EventResponse DoHandleEvent(const mbs::ForceContext& ctx, const int* crossed) const override;
   mbs::EventResponse DoSettleEventState(const mbs::ForceContext& ctx) const override;
 

@@ -78,10 +78,10 @@ void ReadLash(MapReader& r, const std::string& name, mbs::System* sys) {
     EMB_THROW_IF(s.size() != 2, Where(r.file(), r.node())
                                     << ": " << what << " stops: expected [lower, upper], got "
                                     << s.size() << " numbers");
-    EMB_THROW_IF(!(s[1] >= s[0]), Where(r.file(), r.node())
-                                      << ": " << what << " stops: expected lower <= upper (a "
-                                         "lash >= 0), got ["
-                                      << s[0] << ", " << s[1] << "]");
+    EMB_THROW_IF(!(s[1] >= s[0]), Where(r.file(), r.node()) << ": " << what
+                                                            << " stops: expected lower <= upper (a "
+                                                               "lash >= 0), got ["
+                                                            << s[0] << ", " << s[1] << "]");
     p.lower = s[0];
     p.upper = s[1];
   } else {

@@ -31,9 +31,9 @@ Spec ReadSpec(MapReader& r, const std::string& name) {
   s.tolerance = r.GetDouble("tolerance", s.tolerance, NumberRange::Positive("m"));
   s.group = r.GetString("group", "");
   const std::string quantity = r.GetString("quantity", "motion");
-  EMB_THROW_IF(quantity != "motion" && quantity != "radiated_power",
-               r.what() << " quantity: expected 'motion' or 'radiated_power', got '" << quantity
-                        << "'");
+  EMB_THROW_IF(
+      quantity != "motion" && quantity != "radiated_power",
+      r.what() << " quantity: expected 'motion' or 'radiated_power', got '" << quantity << "'");
   s.quantity = quantity == "motion" ? Spec::Quantity::kMotion : Spec::Quantity::kRadiatedPower;
   if (const YAML::Node d = r.Optional("direction")) {
     if (d.IsSequence()) {
@@ -42,9 +42,9 @@ Spec ReadSpec(MapReader& r, const std::string& name) {
     } else {
       const std::string kind = d.Scalar();
       EMB_THROW_IF(kind != "radial" && kind != "normal",
-                   Where(r.file(), d) << ": " << r.what()
-                                      << " direction: expected radial, normal or [x, y, z], got '"
-                                      << kind << "'");
+                   Where(r.file(), d)
+                       << ": " << r.what()
+                       << " direction: expected radial, normal or [x, y, z], got '" << kind << "'");
       s.direction = kind == "radial" ? Spec::Direction::kRadial : Spec::Direction::kNormal;
     }
   }
@@ -69,38 +69,39 @@ void ReadOutputPoints(const YAML::Node& list, const std::string& file, mbs::Syst
                       const std::map<std::string, mbs::FlexiblePart>& body_file_parts,
                       const std::map<std::string, BeamPartOutputs>& beam_parts) {
   std::map<std::string, mbs::BodyMeshShapes> meshes;  // by body file, read once
-  auto mesh_of = [&](const std::string& path, const std::string& part) -> const mbs::BodyMeshShapes& {
+  auto mesh_of = [&](const std::string& path,
+                     const std::string& part) -> const mbs::BodyMeshShapes& {
     auto it = meshes.find(path);
     if (it == meshes.end()) it = meshes.emplace(path, mbs::ReadBodyMeshShapes(path, part)).first;
     return it->second;
   };
-  ReadNamedList(list, file, "output_points", "output point",
-                [&](MapReader& r, const std::string& name, const YAML::Node&) {
-                  const std::string body = r.GetString("body");
-                  const Spec spec = ReadSpec(r, name);
-                  r.Finish();
-                  if (const auto f = body_file_parts.find(body); f != body_file_parts.end()) {
-                    const mbs::BodyMeshShapes& m = mesh_of(f->second.source, body);
-                    sys->AddProbe(mbs::MakeOutputPoint(*sys, f->second, m, spec));
-                    return;
-                  }
-                  if (const auto b = beam_parts.find(body); b != beam_parts.end()) {
-                    EMB_THROW_IF(b->second.body_file.empty(),
-                                 "output point '" << name << "': beam part '" << body
-                                                  << "' has no body_file (the mesh of its "
-                                                     "3-D model, which output points use)");
-                    const mbs::BodyMeshShapes& m = mesh_of(b->second.body_file, body);
-                    sys->AddProbe(mbs::MakeOutputPoint(*sys, b->second.part, b->second.placement,
-                                                       m.mesh, spec));
-                    return;
-                  }
-                  sys->FindBody(body);  // an unknown body: did-you-mean
-                  EMB_THROW(InputError, "output point '"
-                                            << name << "': body '" << body
-                                            << "' has no body_file, so no mesh; output points "
-                                               "sit on parts from body files (model: cms, "
-                                               "rigid or beam)");
-                });
+  ReadNamedList(
+      list, file, "output_points", "output point",
+      [&](MapReader& r, const std::string& name, const YAML::Node&) {
+        const std::string body = r.GetString("body");
+        const Spec spec = ReadSpec(r, name);
+        r.Finish();
+        if (const auto f = body_file_parts.find(body); f != body_file_parts.end()) {
+          const mbs::BodyMeshShapes& m = mesh_of(f->second.source, body);
+          sys->AddProbe(mbs::MakeOutputPoint(*sys, f->second, m, spec));
+          return;
+        }
+        if (const auto b = beam_parts.find(body); b != beam_parts.end()) {
+          EMB_THROW_IF(b->second.body_file.empty(), "output point '"
+                                                        << name << "': beam part '" << body
+                                                        << "' has no body_file (the mesh of its "
+                                                           "3-D model, which output points use)");
+          const mbs::BodyMeshShapes& m = mesh_of(b->second.body_file, body);
+          sys->AddProbe(
+              mbs::MakeOutputPoint(*sys, b->second.part, b->second.placement, m.mesh, spec));
+          return;
+        }
+        sys->FindBody(body);  // an unknown body: did-you-mean
+        EMB_THROW(InputError, "output point '" << name << "': body '" << body
+                                               << "' has no body_file, so no mesh; output points "
+                                                  "sit on parts from body files (model: cms, "
+                                                  "rigid or beam)");
+      });
 }
 
 }  // namespace emb::scene

@@ -17,8 +17,8 @@
 namespace emb::driveline {
 namespace {
 
-constexpr double kMass = 0.01;       // m [kg m^2], e.g. two gears' effective inertia
-constexpr double kApproach = 3.0;    // v- [rad/s]
+constexpr double kMass = 0.01;     // m [kg m^2], e.g. two gears' effective inertia
+constexpr double kApproach = 3.0;  // v- [rad/s]
 // RK4 with 2e5 steps per contact: global error ~ (w h)^4 ~ 1e-17, plus the linear
 // interpolation of the separation instant (second order in h): 1e-9 relative.
 constexpr double kRk4Tolerance = 1e-7;
@@ -72,7 +72,7 @@ TEST(ContactLaw, KelvinVoigtRestitutionInverts) {
     EXPECT_NEAR(KelvinVoigtDampingRatio(e), zeta, 1e-9 * (1 + zeta)) << zeta;
   }
   EXPECT_DOUBLE_EQ(KelvinVoigtRestitution(0.0), 1.0);
-  EXPECT_NEAR(KelvinVoigtRestitution(1.0), std::exp(-2.0), 1e-12);  // critical damping
+  EXPECT_NEAR(KelvinVoigtRestitution(1.0), std::exp(-2.0), 1e-12);     // critical damping
   EXPECT_NEAR(KelvinVoigtContactPhase(0.0), std::numbers::pi, 1e-15);  // half a period
 }
 

@@ -103,8 +103,8 @@ TEST(LashElement, JacobiansMatchCentralDifferences) {
       // 0.05 rad into the stop of `side`.
       p.lower = side > 0 ? 0.0 : 0.65;
       p.upper = side > 0 ? 0.55 : 1.0;
-      ExpectJacobiansMatch(TiltedDiscs(p), std::string(Name(kind)) + " side " +
-                                               std::to_string(side));
+      ExpectJacobiansMatch(TiltedDiscs(p),
+                           std::string(Name(kind)) + " side " + std::to_string(side));
     }
   }
   // Open, approaching the upper stop (x' = 5 - 2 (-1) > 0) through a squeeze film.
@@ -133,8 +133,8 @@ mbs::System SlidingBlock(double m, double v0, const LashParameters& p) {
   s.AddJoint("spline", mbs::JointType::kTranslational, "spline_sleeve", "spline_hub");
   s.AddForceElement(std::make_shared<Lash>(
       "end_stops",
-      std::vector<CoordinateTerm>{JointCoordinateTerm(s, "spline", mbs::JointCoordinate::kTranslation,
-                                                      1.0, "lash 'end_stops'")},
+      std::vector<CoordinateTerm>{JointCoordinateTerm(
+          s, "spline", mbs::JointCoordinate::kTranslation, 1.0, "lash 'end_stops'")},
       p));
   s.Finalize();
   return s;
@@ -176,8 +176,7 @@ TEST(LashElement, TranslationalStopRestitutionAndSqueezeFilmClosedForm) {
   ASSERT_GT(v_contact, 0.2 * v0);
   ASSERT_LT(v_contact, 0.8 * v0);
   const mbs::System s = SlidingBlock(m, v0, p);
-  const mbs::RunResult r =
-      mbs::RunAnalysis(mbs::PrepareRun(s, st), st, [](const mbs::Sample&) {});
+  const mbs::RunResult r = mbs::RunAnalysis(mbs::PrepareRun(s, st), st, [](const mbs::Sample&) {});
   ASSERT_TRUE(r.ok()) << r.message;
   ASSERT_GE(r.events.contacts.size(), 1u);
   EXPECT_NEAR(r.events.contacts[0].impact_velocity, v_contact, 1e-6 * v0);

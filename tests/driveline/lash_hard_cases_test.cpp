@@ -29,7 +29,7 @@ constexpr double kRtol = 1e-8;
 constexpr double kSpeedTolerance = 1e3 * kRtol;  // relative
 
 mbs::RunResult Simulate(const mbs::System& sys, const mbs::AnalysisSettings& st,
-                   std::vector<mbs::Sample>* samples = nullptr) {
+                        std::vector<mbs::Sample>* samples = nullptr) {
   return mbs::RunAnalysis(mbs::PrepareRun(sys, st), st, [&](const mbs::Sample& s) {
     if (samples) samples->push_back(s);
   });
@@ -46,9 +46,11 @@ TEST(LashHardCases, IdleGearRattleHitsBothFlanks) {
   ASSERT_TRUE(r.ok()) << r.message;
   int drive = 0, coast = 0;
   for (const mbs::ContactRecord& c : r.events.contacts) (c.side > 0 ? drive : coast)++;
-  std::printf("rattle: %d drive and %d coast impacts in %.2f s, %ld events, %ld restarts, %ld "
-              "steps\n", drive, coast, sc.analysis.t_end, r.events.num_events,
-              r.events.num_restarts, r.ida_stats.steps);
+  std::printf(
+      "rattle: %d drive and %d coast impacts in %.2f s, %ld events, %ld restarts, %ld "
+      "steps\n",
+      drive, coast, sc.analysis.t_end, r.events.num_events, r.events.num_restarts,
+      r.ida_stats.steps);
   // Five firing cycles, each throwing the loose gear across the lash both ways.
   EXPECT_GE(drive, 5);
   EXPECT_GE(coast, 5);
@@ -93,9 +95,10 @@ TEST(LashHardCases, VeryStiffContactNextToASoftSpring) {
   // The first impact is over in microseconds, long before the soft spring acts.
   const mbs::ContactRecord& c = r.events.contacts.front();
   EXPECT_NEAR(c.rebound_velocity, 0.8 * c.impact_velocity, kSpeedTolerance * c.impact_velocity);
-  std::printf("1e9 N m/rad next to 1 N m/rad: %zu contacts, the first %.3g s long, peak %.4g "
-              "N m; %ld steps\n", r.events.contacts.size(), c.t_separation - c.t_onset,
-              c.peak_force, r.ida_stats.steps);
+  std::printf(
+      "1e9 N m/rad next to 1 N m/rad: %zu contacts, the first %.3g s long, peak %.4g "
+      "N m; %ld steps\n",
+      r.events.contacts.size(), c.t_separation - c.t_onset, c.peak_force, r.ida_stats.steps);
   // Energy: the spring and the contacts exchange it; only the contacts take it out.
   for (std::size_t i = 1; i < samples.size(); ++i)
     EXPECT_LE(samples[i].energies.total(), samples[i - 1].energies.total() + 1e-9);

@@ -23,14 +23,14 @@ using testing::DynamicSettings;
 using testing::MakeTwoDiscs;
 using testing::TwoDiscs;
 
-constexpr double kLash = 0.02;          // [rad] of gear 1
-constexpr double kStiffness = 2.0e3;    // [N m/rad]
+constexpr double kLash = 0.02;        // [rad] of gear 1
+constexpr double kStiffness = 2.0e3;  // [N m/rad]
 constexpr double kRtol = 1e-9;
 // The global error of the BDF run: each contact takes ~100 steps and each restart begins a
 // new history at order 1; measured up to 2.4e-7 relative after four impacts at rtol 1e-9
 // and 3e-8 at 1e-10, i.e. ~300 rtol.
 constexpr double kSpeedTolerance = 1e3 * kRtol;  // relative
-constexpr double kTimeTolerance = 1e-8;    // [s]
+constexpr double kTimeTolerance = 1e-8;          // [s]
 
 LashParameters KelvinVoigt(const TwoDiscs& d, double e) {
   LashParameters p;
@@ -153,7 +153,8 @@ TEST(Lash, HuntCrossleyRestitutionEnergyAndMomentum) {
       for (std::size_t i = 1; i < run.samples.size(); ++i) {
         const mbs::Sample& a = run.samples[i - 1];
         const mbs::Sample& b = run.samples[i];
-        dissipated += 0.5 * (a.energies.dissipated_power + b.energies.dissipated_power) * (b.t - a.t);
+        dissipated +=
+            0.5 * (a.energies.dissipated_power + b.energies.dissipated_power) * (b.t - a.t);
         if (!after && b.t > r.t_separation) after = &b;
         if (b.t > r.t_separation && contacts.size() > 1 && b.t >= contacts[1].t_onset) break;
       }

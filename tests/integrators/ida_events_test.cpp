@@ -17,10 +17,10 @@
 namespace emb {
 namespace {
 
-constexpr double kGravity = 9.81;      // [m/s^2]
-constexpr double kHeight0 = 1.0;       // [m]
-constexpr double kVelocity0 = 2.0;     // [m/s], upwards
-constexpr double kRestitution = 0.8;   // [-]
+constexpr double kGravity = 9.81;     // [m/s^2]
+constexpr double kHeight0 = 1.0;      // [m]
+constexpr double kVelocity0 = 2.0;    // [m/s], upwards
+constexpr double kRestitution = 0.8;  // [-]
 // IDA locates a root to ttol = 100 uround (|t| + |h|) and returns y interpolated from the
 // step's polynomial (error ~ the local error, well inside rtol).
 constexpr double kRootTimeTolerance = 1e-12;  // [s]
@@ -80,8 +80,7 @@ TEST(IdaEvents, RootLocatedIndependentlyOfOutputTimes) {
     EXPECT_NEAR(ida.t(), t_star, kRootTimeTolerance) << "output step " << dt;
     ASSERT_EQ(rep.root_directions.size(), 1u);
     EXPECT_EQ(rep.root_directions[0], -1);  // the height falls through zero
-    EXPECT_NEAR(ida.y()[1], -std::sqrt(kVelocity0 * kVelocity0 + 2 * kGravity * kHeight0),
-                1e-8);
+    EXPECT_NEAR(ida.y()[1], -std::sqrt(kVelocity0 * kVelocity0 + 2 * kGravity * kHeight0), 1e-8);
     EXPECT_GT(ida.stats().root_evals, 0);
   }
 }

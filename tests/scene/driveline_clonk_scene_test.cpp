@@ -102,10 +102,11 @@ TEST(DrivelineClonkScene, TipInAndBackOutRingTheTubesShellModes) {
     return -1;
   }();
   ASSERT_GE(probe, 0);
-  const mbs::RunResult r = mbs::RunAnalysis(mbs::PrepareRun(sc.system, st), st, [&](const mbs::Sample& s) {
-    t.push_back(s.t);
-    accel.push_back(s.probes[probe]);
-  });
+  const mbs::RunResult r =
+      mbs::RunAnalysis(mbs::PrepareRun(sc.system, st), st, [&](const mbs::Sample& s) {
+        t.push_back(s.t);
+        accel.push_back(s.probes[probe]);
+      });
   ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_NEAR(r.t_reached, 0.6, 1e-12);
 
@@ -114,8 +115,8 @@ TEST(DrivelineClonkScene, TipInAndBackOutRingTheTubesShellModes) {
     std::string element;
     int drive;
   };
-  for (const Flanks& l : {Flanks{"gearbox_lash", +1}, Flanks{"spline_lash", -1},
-                          Flanks{"final_drive_lash", +1}}) {
+  for (const Flanks& l :
+       {Flanks{"gearbox_lash", +1}, Flanks{"spline_lash", -1}, Flanks{"final_drive_lash", +1}}) {
     bool drive = false, coast = false;
     for (const mbs::ContactRecord& c : r.events.contacts) {
       if (c.element != l.element) continue;
@@ -140,10 +141,11 @@ TEST(DrivelineClonkScene, TipInAndBackOutRingTheTubesShellModes) {
   const std::vector<double> coast = window(0.08, 0.15), tip_in = window(0.2, 0.3);
   const double quiet = BandEnergy(coast, dt, lo, hi), ringing = BandEnergy(tip_in, dt, lo, hi);
   const double above = BandEnergy(tip_in, dt, 500.0, 5000.0);
-  std::printf("shell band %.0f-%.0f Hz (%zu modes): energy %.3g before, %.3g after the tip-in "
-              "(%.0f %% of 0.5-5 kHz); %zu contacts, %ld events\n",
-              lo, hi, shell.size(), quiet, ringing, 100 * ringing / above,
-              r.events.contacts.size(), r.events.num_events);
+  std::printf(
+      "shell band %.0f-%.0f Hz (%zu modes): energy %.3g before, %.3g after the tip-in "
+      "(%.0f %% of 0.5-5 kHz); %zu contacts, %ld events\n",
+      lo, hi, shell.size(), quiet, ringing, 100 * ringing / above, r.events.contacts.size(),
+      r.events.num_events);
   EXPECT_GT(ringing, 1e3 * quiet);
   EXPECT_GT(ringing, 0.5 * above);
 }

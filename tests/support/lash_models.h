@@ -14,10 +14,10 @@
 namespace emb::driveline::testing {
 
 struct TwoDiscs {
-  double J1{0.02}, J2{0.05};  // [kg m^2] about the axes
-  double ratio{2.0};          // r [-]
+  double J1{0.02}, J2{0.05};        // [kg m^2] about the axes
+  double ratio{2.0};                // r [-]
   double omega1{5.0}, omega2{0.0};  // initial speeds [rad/s]
-  double torque1{0.0};        // constant torque on disc 1 [N m]
+  double torque1{0.0};              // constant torque on disc 1 [N m]
   double effective_inertia() const { return 1.0 / (1.0 / J1 + ratio * ratio / J2); }
   double closing_speed() const { return omega1 - ratio * omega2; }
 };

@@ -67,8 +67,8 @@ bool HandleEvents(const System& system, const GglDae& dae, double t, const Eigen
     const int n = forces[k]->num_event_functions();
     const int* crossed = root_directions.data() + offset;
     if (std::all_of(crossed, crossed + n, [](int d) { return d == 0; })) continue;
-    const ForceContext ctx{&system, &bodies, t, &dae.workspace(),
-                           system.force_angle_slot(static_cast<int>(k)), &vdot};
+    const ForceContext ctx{
+        &system, &bodies, t, &dae.workspace(), system.force_angle_slot(static_cast<int>(k)), &vdot};
     const EventResponse r = forces[k]->HandleEvent(ctx, crossed);
     restart = restart || r.restart;
     for (const EventNote& note : r.notes)
@@ -78,17 +78,16 @@ bool HandleEvents(const System& system, const GglDae& dae, double t, const Eigen
   return restart;
 }
 
-bool SettleEventStates(const System& system, const GglDae& dae, double t,
-                       const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                       const Eigen::VectorXd& vdot, EventLog* log) {
+bool SettleEventStates(const System& system, const GglDae& dae, double t, const Eigen::VectorXd& q,
+                       const Eigen::VectorXd& v, const Eigen::VectorXd& vdot, EventLog* log) {
   const auto& forces = system.force_elements();
   if (log->open.size() != forces.size()) log->open.assign(forces.size(), -1);
   const auto bodies = CalcBodyKinematics(system, q, v);
   bool changed = false;
   for (std::size_t k = 0; k < forces.size(); ++k) {
     if (dae.root_offset(static_cast<int>(k)) < 0) continue;
-    const ForceContext ctx{&system, &bodies, t, &dae.workspace(),
-                           system.force_angle_slot(static_cast<int>(k)), &vdot};
+    const ForceContext ctx{
+        &system, &bodies, t, &dae.workspace(), system.force_angle_slot(static_cast<int>(k)), &vdot};
     const EventResponse r = forces[k]->SettleEventState(ctx);
     changed = changed || r.restart;
     for (const EventNote& note : r.notes)

@@ -25,10 +25,10 @@ class GglDae;
 
 /// One contact of an impact element, from closing to opening.
 struct ContactRecord {
-  std::string element;     ///< the force element's name
-  int element_index{-1};   ///< in System::force_elements()
-  int side{0};             ///< +1 upper stop / drive flank, -1 lower stop / coast flank
-  double t_onset{0.0};     ///< [s]
+  std::string element;          ///< the force element's name
+  int element_index{-1};        ///< in System::force_elements()
+  int side{0};                  ///< +1 upper stop / drive flank, -1 lower stop / coast flank
+  double t_onset{0.0};          ///< [s]
   double impact_velocity{0.0};  ///< closing speed [m/s or rad/s of the element's coordinate]
   double peak_force{0.0};       ///< largest contact force [N or N m]
   /// [s]; NaN while the contact is still closed at the end of the run.
@@ -54,8 +54,7 @@ bool HandleEvents(const System& system, const GglDae& dae, double t, const Eigen
 /// Asks every force element with events to settle its discrete state at (t, q, v, v')
 /// (ForceElement::SettleEventState), records their notes, and returns true if one switched
 /// (then the accelerations must be solved again and the elements asked again).
-bool SettleEventStates(const System& system, const GglDae& dae, double t,
-                       const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                       const Eigen::VectorXd& vdot, EventLog* log);
+bool SettleEventStates(const System& system, const GglDae& dae, double t, const Eigen::VectorXd& q,
+                       const Eigen::VectorXd& v, const Eigen::VectorXd& vdot, EventLog* log);
 
 }  // namespace emb::mbs

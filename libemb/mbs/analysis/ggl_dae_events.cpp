@@ -1,7 +1,6 @@
 // The event (root) functions of the GGL DAE: those of its force elements, in element order.
 
 #include "libemb/mbs/analysis/ggl_dae.h"
-
 #include "libemb/mbs/core/system.h"
 
 namespace emb::mbs {
@@ -30,9 +29,10 @@ bool GglDae::DoCalcRoots(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
   const auto& forces = system_.force_elements();
   for (std::size_t k = 0; k < forces.size(); ++k) {
     if (root_offset_[k] < 0) continue;
-    const ForceContext ctx{&system_, &bodies, t, &workspace_,
-                           system_.force_angle_slot(static_cast<int>(k)), &vdot};
-    forces[k]->CalcEventFunctions(ctx, g.segment(root_offset_[k], forces[k]->num_event_functions()));
+    const ForceContext ctx{
+        &system_, &bodies, t, &workspace_, system_.force_angle_slot(static_cast<int>(k)), &vdot};
+    forces[k]->CalcEventFunctions(ctx,
+                                  g.segment(root_offset_[k], forces[k]->num_event_functions()));
   }
   return true;
 }

@@ -62,9 +62,9 @@ OutputPointProbe::OutputPointProbe(std::string name, std::vector<MaterialPoint> 
     }
   }
   EMB_THROW_IF(!(total_weight_ > 0.0), "output point '" << this->name()
-                                                         << "': expected a positive total "
-                                                            "weight (area), got "
-                                                         << total_weight_);
+                                                        << "': expected a positive total "
+                                                           "weight (area), got "
+                                                        << total_weight_);
   if (quantity_ == OutputPointSpec::Quantity::kRadiatedPower) {
     channels_ = {"power"};
     return;
@@ -96,7 +96,8 @@ std::vector<int> OutputPointProbe::bodies() const {
 }
 
 void OutputPointProbe::DoEval(const System& system, const std::vector<BodyKinematics>& bodies,
-                              const Eigen::VectorXd& vdot, Eigen::Ref<Eigen::VectorXd> values) const {
+                              const Eigen::VectorXd& vdot,
+                              Eigen::Ref<Eigen::VectorXd> values) const {
   const StateLayout& L = system.layout();
   Vector3d sum[3] = {Vector3d::Zero(), Vector3d::Zero(), Vector3d::Zero()};
   double sum_n[3] = {0.0, 0.0, 0.0};
@@ -112,30 +113,30 @@ void OutputPointProbe::DoEval(const System& system, const std::vector<BodyKinema
       modal = g.phi * e;
     }
     for (std::size_t m = 0; m < g.points.size(); ++m) {
-    const MaterialPoint& p = points_[static_cast<std::size_t>(g.points[m])];
-    Vector3d u = Vector3d::Zero(), ud = Vector3d::Zero(), udd = Vector3d::Zero();
-    Vector3d vel = Vector3d::Zero(), acc = Vector3d::Zero();
-    if (!ground) {
-      if (modal.size()) {
-        const auto rows = modal.middleRows<3>(3 * static_cast<Eigen::Index>(m));
-        u = rows.col(0);
-        ud = rows.col(1);
-        udd = rows.col(2);
+      const MaterialPoint& p = points_[static_cast<std::size_t>(g.points[m])];
+      Vector3d u = Vector3d::Zero(), ud = Vector3d::Zero(), udd = Vector3d::Zero();
+      Vector3d vel = Vector3d::Zero(), acc = Vector3d::Zero();
+      if (!ground) {
+        if (modal.size()) {
+          const auto rows = modal.middleRows<3>(3 * static_cast<Eigen::Index>(m));
+          u = rows.col(0);
+          ud = rows.col(1);
+          udd = rows.col(2);
+        }
+        const Vector3d r = p.r_B + u, w = k->omega_B;
+        const Vector3d wd = vdot.segment<3>(L.angular_velocity(p.body));
+        vel = k->R_WB.transpose() * k->v_WB + w.cross(r) + ud;
+        acc = k->R_WB.transpose() * vdot.segment<3>(L.velocity(p.body)) + wd.cross(r) +
+              w.cross(w.cross(r)) + 2.0 * w.cross(ud) + udd;
       }
-      const Vector3d r = p.r_B + u, w = k->omega_B;
-      const Vector3d wd = vdot.segment<3>(L.angular_velocity(p.body));
-      vel = k->R_WB.transpose() * k->v_WB + w.cross(r) + ud;
-      acc = k->R_WB.transpose() * vdot.segment<3>(L.velocity(p.body)) + wd.cross(r) +
-            w.cross(w.cross(r)) + 2.0 * w.cross(ud) + udd;
-    }
-    const Vector3d q[3] = {p.R_BP.transpose() * u, p.R_BP.transpose() * vel,
-                           p.R_BP.transpose() * acc};
-    for (int i = 0; i < 3; ++i) {
-      sum[i] += p.weight * q[i];
-      sum_n[i] += p.weight * p.direction_P.dot(q[i]);
-    }
-    const double vn = p.direction_P.dot(q[1]);
-    power += p.weight * vn * vn;
+      const Vector3d q[3] = {p.R_BP.transpose() * u, p.R_BP.transpose() * vel,
+                             p.R_BP.transpose() * acc};
+      for (int i = 0; i < 3; ++i) {
+        sum[i] += p.weight * q[i];
+        sum_n[i] += p.weight * p.direction_P.dot(q[i]);
+      }
+      const double vn = p.direction_P.dot(q[1]);
+      power += p.weight * vn * vn;
     }
   }
   if (quantity_ == OutputPointSpec::Quantity::kRadiatedPower) {
@@ -152,12 +153,12 @@ void OutputPointProbe::DoEval(const System& system, const std::vector<BodyKinema
 
 std::vector<MaterialPoint> SelectMeshPoints(const Mesh& mesh, const OutputPointSpec& spec) {
   const int given = (spec.node ? 1 : 0) + (spec.position ? 1 : 0) + (spec.group.empty() ? 0 : 1);
-  EMB_THROW_IF(given != 1, Who(spec) << ": expected exactly one of node, position, group, got "
-                                     << given);
+  EMB_THROW_IF(given != 1, Who(spec)
+                               << ": expected exactly one of node, position, group, got " << given);
   const bool power = spec.quantity == OutputPointSpec::Quantity::kRadiatedPower;
-  EMB_THROW_IF((power || spec.direction == OutputPointSpec::Direction::kNormal) &&
-                   spec.group.empty(),
-               Who(spec) << ": a surface normal (and the radiated power) needs a surface group");
+  EMB_THROW_IF(
+      (power || spec.direction == OutputPointSpec::Direction::kNormal) && spec.group.empty(),
+      Who(spec) << ": a surface normal (and the radiated power) needs a surface group");
   std::vector<MaterialPoint> out;
   if (!spec.group.empty()) {
     SurfacePatch s;
@@ -191,8 +192,8 @@ std::vector<MaterialPoint> SelectMeshPoints(const Mesh& mesh, const OutputPointS
     }
     EMB_THROW_IF(!(best <= spec.tolerance),
                  Who(spec) << ": the point " << spec.position->transpose()
-                           << " is not on the body's mesh: the nearest node (" << p.node
-                           << ", at " << mesh.nodes.col(p.node).transpose() << ") is " << best
+                           << " is not on the body's mesh: the nearest node (" << p.node << ", at "
+                           << mesh.nodes.col(p.node).transpose() << ") is " << best
                            << " m away, expected within the tolerance " << spec.tolerance << " m");
   }
   p.r_B = mesh.nodes.col(p.node);
@@ -205,9 +206,9 @@ std::shared_ptr<Probe> MakeOutputPoint(const System& system, const FlexiblePart&
                                        const BodyMeshShapes& mesh, const OutputPointSpec& spec) {
   EMB_THROW_IF(mesh.shapes.cols() != part.num_available_modes ||
                    mesh.shapes.rows() != 3 * mesh.mesh.num_nodes(),
-               Who(spec) << ": the mesh shapes of part '" << part.name << "' (" << mesh.shapes.cols()
-                         << " modes) do not match its body file (" << part.num_available_modes
-                         << " modes)");
+               Who(spec) << ": the mesh shapes of part '" << part.name << "' ("
+                         << mesh.shapes.cols() << " modes) do not match its body file ("
+                         << part.num_available_modes << " modes)");
   std::vector<MaterialPoint> points = SelectMeshPoints(mesh.mesh, spec);
   for (MaterialPoint& p : points) {
     p.body = part.body;
@@ -215,7 +216,8 @@ std::shared_ptr<Probe> MakeOutputPoint(const System& system, const FlexiblePart&
     if (!part.flexible) continue;
     p.phi.resize(3, part.num_modes());
     for (int j = 0; j < part.num_modes(); ++j)
-      p.phi.col(j) = mesh.shapes.block(3 * p.node, part.kept_modes[static_cast<std::size_t>(j)], 3, 1);
+      p.phi.col(j) =
+          mesh.shapes.block(3 * p.node, part.kept_modes[static_cast<std::size_t>(j)], 3, 1);
   }
   (void)system;
   return std::make_shared<OutputPointProbe>(spec.name, std::move(points), spec.quantity,

@@ -43,14 +43,14 @@ struct OutputPointSpec {
   std::string name;
   // Where (exactly one): a mesh node, a point of the mesh (the node there, within
   // `tolerance`), or a surface group.
-  std::optional<int> node;                 ///< 0-based node index of the body file's mesh
+  std::optional<int> node;                  ///< 0-based node index of the body file's mesh
   std::optional<Eigen::Vector3d> position;  ///< mesh coordinates [m]
-  double tolerance{1e-6};                  ///< [m]
-  std::string group;                       ///< a surface physical group
+  double tolerance{1e-6};                   ///< [m]
+  std::string group;                        ///< a surface physical group
   // Direction of the "n" component (part axes).
   enum class Direction { kNone, kFixed, kRadial, kNormal };
   Direction direction{Direction::kNone};
-  Eigen::Vector3d vector{Eigen::Vector3d::UnitZ()};  ///< kFixed: unit vector
+  Eigen::Vector3d vector{Eigen::Vector3d::UnitZ()};     ///< kFixed: unit vector
   Eigen::Vector3d axis_point{Eigen::Vector3d::Zero()};  ///< kRadial: a point of the axis
   Eigen::Vector3d axis{Eigen::Vector3d::UnitX()};       ///< kRadial: unit axis
   /// Motion (u, v, a) or, for a group, the radiated-noise proxy.
@@ -63,10 +63,10 @@ struct MaterialPoint {
   int node{-1};  ///< the mesh node it comes from
   int body{-1};
   Eigen::Vector3d r_B{Eigen::Vector3d::Zero()};  ///< undeformed, from B's origin [m]
-  Eigen::MatrixXd phi;    ///< 3 x ne of the body's modes, B axes; empty: rigid
-  Eigen::Matrix3d R_BP{Eigen::Matrix3d::Identity()};  ///< part axes in B
+  Eigen::MatrixXd phi;  ///< 3 x ne of the body's modes, B axes; empty: rigid
+  Eigen::Matrix3d R_BP{Eigen::Matrix3d::Identity()};     ///< part axes in B
   Eigen::Vector3d direction_P{Eigen::Vector3d::Zero()};  ///< unit or 0
-  double weight{1.0};     ///< [m^2] on a surface, 1 for a single node
+  double weight{1.0};  ///< [m^2] on a surface, 1 for a single node
 };
 
 /// The probe of a list of material points (file comment).

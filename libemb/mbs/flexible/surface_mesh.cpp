@@ -25,7 +25,8 @@ FaceTable FacesOf(CellType t) {
       return {4, {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}};
     case CellType::kHex8:
     case CellType::kHex20:
-      return {8, {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
+      return {8,
+              {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
     case CellType::kWedge6:
     case CellType::kWedge15:
       return {6, {{0, 1, 2}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}}};

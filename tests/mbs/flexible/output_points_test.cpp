@@ -100,13 +100,15 @@ TEST(OutputPoints, VelocityAndAccelerationAreTheDerivativesOfThePointsPosition) 
   const Vector3d r_B = f.part.MeshToBody(t.mesh.nodes.col(node));
   const Eigen::Matrix3d R0 = RotationFromQuaternion(q0.segment<4>(L.quaternion(1)));
   const Vector3d p0 = q0.segment<3>(L.position(1));
-  const Vector3d w = v0.segment<3>(L.angular_velocity(1)), wd = vdot.segment<3>(L.angular_velocity(1));
+  const Vector3d w = v0.segment<3>(L.angular_velocity(1)),
+                 wd = vdot.segment<3>(L.angular_velocity(1));
   const int ne = L.num_elastic(1);
   // The trajectory with these rates at t = 0: R(t) = R0 Exp(w t + wd t^2/2) (body angular
   // velocity w, acceleration wd at 0), p(t), eta(t) quadratic.
   auto position = [&](double s) -> Vector3d {
     const Eigen::Matrix3d R = R0 * RotationFromRotationVector(w * s + 0.5 * wd * s * s);
-    const Eigen::VectorXd eta = f.eta + f.eta_dot * s + 0.5 * vdot.segment(L.elastic_v(1), ne) * s * s;
+    const Eigen::VectorXd eta =
+        f.eta + f.eta_dot * s + 0.5 * vdot.segment(L.elastic_v(1), ne) * s * s;
     return p0 + v0.segment<3>(L.velocity(1)) * s + 0.5 * vdot.segment<3>(L.velocity(1)) * s * s +
            R * (r_B + phi * eta);
   };
@@ -220,14 +222,16 @@ void ExpectError(F f, const std::vector<std::string>& words) {
     f();
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    for (const auto& w : words) EXPECT_NE(std::string(e.what()).find(w), std::string::npos) << e.what();
+    for (const auto& w : words)
+      EXPECT_NE(std::string(e.what()).find(w), std::string::npos) << e.what();
   }
 }
 
 TEST(OutputPoints, BadOutputPointsAreNamed) {
   const testing::CoarseTube& t = testing::GetCoarseTube();
   OutputPointSpec s = Radial("off", Vector3d(0.75, 0.0, 0.05));  // 5 mm outside the tube
-  ExpectError([&] { SelectMeshPoints(t.mesh, s); }, {"output point 'off'", "not on the body's mesh"});
+  ExpectError([&] { SelectMeshPoints(t.mesh, s); },
+              {"output point 'off'", "not on the body's mesh"});
   s = {};
   s.name = "far";
   s.node = 1000000;
