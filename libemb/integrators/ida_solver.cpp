@@ -226,7 +226,7 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
     jacobian_nonzeros_ = static_cast<long>(m.sparse.nonZeros());
     const auto nnz = static_cast<sunindextype>(std::max<Eigen::Index>(1, m.sparse.nonZeros()));
     m.a = CheckPtr(SUNSparseMatrix(n, n, nnz, CSC_MAT, m.ctx), "SUNSparseMatrix");
-    m.ls = MakeKluLinearSolver(m.ctx);
+    m.ls = MakeKluLinearSolver(m.ctx, problem.DenseBlocks());
     CheckSetup(IDASetLinearSolver(m.mem, m.ls, m.a), "IDASetLinearSolver");
     CheckSetup(IDASetJacFn(m.mem, &Impl::SparseJacobian), "IDASetJacFn");
   } else {
@@ -349,8 +349,8 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
     o << options_.max_num_steps << " steps taken before reaching t = " << t_out;
     report.message = o.str();
   }
-  if (linear_solver_ == LinearSolverKind::kKlu && !KluFactorizationOf(m.ls).message().empty())
-    report.message += " (" + KluFactorizationOf(m.ls).message() + ")";
+  if (linear_solver_ == LinearSolverKind::kKlu && !KluSolverMessage(m.ls).empty())
+    report.message += " (" + KluSolverMessage(m.ls) + ")";
   if (!problem_.last_recoverable_failure().empty())
     report.message += "; last failed evaluation: " + problem_.last_recoverable_failure();
   realtype h = 0.0;

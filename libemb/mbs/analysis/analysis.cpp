@@ -187,22 +187,25 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
   s.vdot = vdot;
   s.lambda = lambda;
   const auto bodies = CalcBodyKinematics(system, q, v);
-  const ConstraintEval c = CalcConstraints(system, bodies, t, workspace);
+  std::vector<MarkerKinematics> markers;
+  CalcAllMarkerKinematics(system, bodies, &markers);
+  ConstraintEval c;
+  CalcConstraints(system, markers, t, workspace, &c);
   s.reactions = CalcJointReactions(system, bodies, lambda);
   const auto& forces = system.force_elements();
   s.force_loads.setConstant(static_cast<Eigen::Index>(forces.size()), 6,
                             std::numeric_limits<double>::quiet_NaN());
   for (std::size_t k = 0; k < forces.size(); ++k) {
-    const ForceContext ctx{&system, &bodies, t, workspace,
-                           system.force_angle_slot(static_cast<int>(k))};
+    ForceContext ctx{&system, &bodies, t, workspace, system.force_angle_slot(static_cast<int>(k))};
+    ctx.markers = &markers;
     Eigen::Matrix<double, 6, 1> load;
     if (forces[k]->CalcLoad(ctx, &load)) s.force_loads.row(static_cast<Eigen::Index>(k)) = load;
   }
   const auto& sensors = system.sensors();
   s.sensors.resize(static_cast<Eigen::Index>(sensors.size()), 6);
   for (std::size_t k = 0; k < sensors.size(); ++k) {
-    const MarkerKinematics I = CalcMarkerKinematics(system, bodies, sensors[k].marker_i);
-    const MarkerKinematics J = CalcMarkerKinematics(system, bodies, sensors[k].marker_j);
+    const MarkerKinematics& I = markers[sensors[k].marker_i];
+    const MarkerKinematics& J = markers[sensors[k].marker_j];
     s.sensors.row(static_cast<Eigen::Index>(k)) << (J.R_WM.transpose() * (I.p_WM - J.p_WM)).transpose(),
         RotationVectorFromRotation(J.R_WM.transpose() * I.R_WM).transpose();
   }

@@ -68,7 +68,7 @@ bool HandleEvents(const System& system, const GglDae& dae, double t, const Eigen
     const int* crossed = root_directions.data() + offset;
     if (std::all_of(crossed, crossed + n, [](int d) { return d == 0; })) continue;
     const ForceContext ctx{
-        &system, &bodies, t, &dae.workspace(), system.force_angle_slot(static_cast<int>(k)), &vdot};
+        &system, &bodies, t, &dae.workspace(), system.force_angle_slot(static_cast<int>(k)), nullptr, &vdot};
     const EventResponse r = forces[k]->HandleEvent(ctx, crossed);
     restart = restart || r.restart;
     for (const EventNote& note : r.notes)
@@ -87,7 +87,7 @@ bool SettleEventStates(const System& system, const GglDae& dae, double t, const 
   for (std::size_t k = 0; k < forces.size(); ++k) {
     if (dae.root_offset(static_cast<int>(k)) < 0) continue;
     const ForceContext ctx{
-        &system, &bodies, t, &dae.workspace(), system.force_angle_slot(static_cast<int>(k)), &vdot};
+        &system, &bodies, t, &dae.workspace(), system.force_angle_slot(static_cast<int>(k)), nullptr, &vdot};
     const EventResponse r = forces[k]->SettleEventState(ctx);
     changed = changed || r.restart;
     for (const EventNote& note : r.notes)

@@ -30,7 +30,7 @@ bool GglDae::DoCalcRoots(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
   for (std::size_t k = 0; k < forces.size(); ++k) {
     if (root_offset_[k] < 0) continue;
     const ForceContext ctx{
-        &system_, &bodies, t, &workspace_, system_.force_angle_slot(static_cast<int>(k)), &vdot};
+        &system_, &bodies, t, &ws_->constraint, system_.force_angle_slot(static_cast<int>(k)), nullptr, &vdot};
     forces[k]->CalcEventFunctions(ctx,
                                   g.segment(root_offset_[k], forces[k]->num_event_functions()));
   }

@@ -20,8 +20,9 @@ constexpr double kRankTolerance = 1e-8;
 constexpr double kEnergyFraction = 1e-6;
 
 // An M-orthonormal basis (V^T M V = I) of the span of the columns of U, each column first
-// scaled by `scale` (its weight in the rank decision), rotated to the Ritz vectors of K
-// (V^T K V diagonal, ascending). M = L L^T.
+// scaled by `scale` (so that a direction of its own has a singular value of order one: a
+// column that is all round-off after an orthogonalisation stays at round-off and is
+// dropped), rotated to the Ritz vectors of K (V^T K V diagonal, ascending). M = L L^T.
 Eigen::MatrixXd RitzBasis(const Eigen::LLT<Eigen::MatrixXd>& M, const Eigen::MatrixXd& K,
                           const Eigen::MatrixXd& U, const Eigen::VectorXd& scale) {
   if (U.cols() == 0) return Eigen::MatrixXd(U.rows(), 0);
@@ -30,7 +31,8 @@ Eigen::MatrixXd RitzBasis(const Eigen::LLT<Eigen::MatrixXd>& M, const Eigen::Mat
   const Eigen::BDCSVD<Eigen::MatrixXd> svd(W, Eigen::ComputeThinU);
   const Eigen::VectorXd& s = svd.singularValues();
   int r = 0;
-  while (r < s.size() && s[r] > kRankTolerance * s[0]) ++r;
+  while (r < s.size() && s[r] > kRankTolerance * std::max(1.0, s[0])) ++r;
+  if (r == 0) return Eigen::MatrixXd(U.rows(), 0);
   Eigen::MatrixXd V = M.matrixU().solve(svd.matrixU().leftCols(r));  // L^-T P
   const Eigen::MatrixXd A = V.transpose() * K * V;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (A + A.transpose()));

@@ -24,10 +24,13 @@ Eigen::MatrixXd CalcTangentStiffness(const System& sys, const Eigen::VectorXd& q
                                      const Eigen::VectorXd& vdot) {
   const StateLayout& L = sys.layout();
   const auto bodies = CalcBodyKinematics(sys, q, v);
+  std::vector<MarkerKinematics> markers;
+  CalcAllMarkerKinematics(sys, bodies, &markers);
   DenseForceJacobian forces(L);
   const auto& elements = sys.force_elements();
   for (std::size_t k = 0; k < elements.size(); ++k) {
-    const ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
+    ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
+    ctx.markers = &markers;
     elements[k]->AddForceJacobian(ctx, &forces);
   }
   Eigen::MatrixXd K = forces.stiffness();
@@ -39,7 +42,7 @@ Eigen::MatrixXd CalcTangentStiffness(const System& sys, const Eigen::VectorXd& q
   for (int b = 1; b < sys.num_bodies(); ++b)
     if (L.num_elastic(b))
       add_body_block(b, b, CalcBodyFlexibleTerms(sys, bodies[b], b, nullptr, true).stiffness);
-  VisitKernelTerms(sys, bodies, [&](const KernelTerm& term) {
+  VisitKernelTerms(sys, markers, [&](const KernelTerm& term) {
     const int body[2] = {term.body_i, term.body_j};
     Eigen::MatrixXd T[2];
     for (int s = 0; s < 2; ++s)
@@ -86,10 +89,13 @@ namespace {
 Eigen::MatrixXd CalcVelocityStiffness(const System& sys, const std::vector<BodyKinematics>& bodies,
                                       double t, ConstraintWorkspace* ws) {
   const StateLayout& L = sys.layout();
+  std::vector<MarkerKinematics> markers;
+  CalcAllMarkerKinematics(sys, bodies, &markers);
   DenseForceJacobian forces(L);
   const auto& elements = sys.force_elements();
   for (std::size_t k = 0; k < elements.size(); ++k) {
-    const ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
+    ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
+    ctx.markers = &markers;
     elements[k]->AddForceJacobian(ctx, &forces);
   }
   Eigen::MatrixXd G = -forces.damping();

@@ -82,6 +82,10 @@ struct ElasticModel {
   /// on each flagged mode. @throws InputError naming `name` otherwise or for a size mismatch.
   void MakeQuasiStatic(const std::vector<bool>& flags, const std::string& name);
   int num_quasi_static() const;
+  /// Number of leading coordinates before a trailing run of quasi-static ones (ne if there
+  /// is none, or if quasi-static coordinates are not all at the end): the inertia terms
+  /// (Sbar) live in the leading block only.
+  int num_leading_dynamic() const;
   /// Adds tau K_ss to the damping of the flagged coordinates (the block of K among them),
   /// so that they relax to their static response with the time constant tau [s]. A
   /// quasi-static coordinate has no inertia of its own; what it carries (a rigid body on the
@@ -113,12 +117,38 @@ struct FlexibleTerms {
   double elastic_energy{0.0};  ///< eta^T K eta / 2
   double gravity_energy{0.0};  ///< -m g.p_WB - g.R c(eta)
   double dissipated_power{0.0};
+
+  /// Scratch of the in-place evaluation (flexible_terms.cpp), kept between calls.
+  struct Scratch {
+    Eigen::MatrixXd Bm, Mre, Mee, G, KG, W;
+    Eigen::VectorXd trB, fe, Kg_eta, tmp;
+  } scratch;
 };
 
-/// Evaluates FlexibleTerms. `a_B` is the frame origin's acceleration less gravity in B for
-/// the translational geometric stiffness (zero if unknown). `accel` (with_derivatives only;
-/// may be null) is the body acceleration [v'_WB, omega'_B, eta''] for inertia_stiffness and
-/// force_accel. Cost O(ne^2).
+/// What CalcFlexibleTerms evaluates (bit flags).
+enum FlexibleTermsParts : unsigned {
+  kFlexibleMass = 1u,         ///< mass
+  kFlexibleForce = 2u,        ///< force
+  kFlexibleEnergies = 4u,     ///< kinetic, elastic, gravity energy, dissipated power
+  kFlexibleDerivatives = 8u,  ///< damping, stiffness (and with accel: inertia_stiffness,
+                              ///< force_accel); implies mass and force
+  kFlexibleAll = 15u,
+};
+
+/// Evaluates the `parts` of FlexibleTerms into `out`, reusing its storage (no allocation
+/// once sized). `a_B` is the frame origin's acceleration less gravity in B for the
+/// translational geometric stiffness (zero if unknown). `accel` (derivatives only; may be
+/// null) is the body acceleration [v'_WB, omega'_B, eta''] for inertia_stiffness and
+/// force_accel. Cost O(ne^2) (the Sbar terms only over the leading dynamic coordinates when
+/// the quasi-static ones are the trailing ones: they have no inertia).
+void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
+                       const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& v_WB,
+                       const Eigen::Vector3d& omega_B, const Eigen::Ref<const Eigen::VectorXd>& eta,
+                       const Eigen::Ref<const Eigen::VectorXd>& eta_dot,
+                       const Eigen::Vector3d& g_W, const Eigen::Vector3d& a_B, unsigned parts,
+                       const Eigen::VectorXd* accel, FlexibleTerms* out);
+
+/// Evaluates FlexibleTerms (all parts; the derivatives if `with_derivatives`).
 FlexibleTerms CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
                                 const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& v_WB,
                                 const Eigen::Vector3d& omega_B, const Eigen::VectorXd& eta,

@@ -28,8 +28,14 @@ struct ForceContext {
   /// This element's first workspace slot (System::Finalize): its num_angle_slots() angle
   /// slots, then its num_state_slots() state slots.
   int angle_slot{-1};
+  /// Every marker's kinematics at the same state (CalcAllMarkerKinematics), computed once
+  /// for all elements; null: Marker() evaluates a marker on demand.
+  const std::vector<MarkerKinematics>* markers{nullptr};
   /// Event functions only (may be null elsewhere): the accelerations v' (size nv).
   const Eigen::VectorXd* vdot{nullptr};
+
+  /// Marker m at this state: the shared one, or evaluated into `scratch` (and returned).
+  const MarkerKinematics& Marker(int m, MarkerKinematics* scratch) const;
 };
 
 /// What an element reports at an event (HandleEvent), for the run's list of contacts.
@@ -40,7 +46,7 @@ struct EventNote {
     kSeparation,    ///< the contact opened: velocity = opening speed, force = 0
   };
   Kind kind{Kind::kContactOnset};
-  int side{0};          ///< which stop of the element (+1 upper / drive, -1 lower / coast)
+  int side{0};           ///< which stop of the element (+1 upper / drive, -1 lower / coast)
   double velocity{0.0};  ///< [m/s or rad/s of the element's coordinate]
   double force{0.0};     ///< [N or N m]
 };
