@@ -11,9 +11,6 @@
 namespace emb {
 namespace {
 
-// Newton convergence: the estimated remaining error below this fraction of the error-test
-// tolerance (IDA's epcon, so both integrators solve their corrector equally tightly).
-constexpr double kNewtonTolerance = 0.33;
 // A Newton iteration whose contraction rate exceeds this is abandoned as diverging.
 constexpr double kMaxNewtonRate = 0.9;
 // Reuse of the iteration matrix: refreshed when c moved by more than this fraction ...
@@ -168,7 +165,7 @@ GeneralizedAlphaSolver::StepOutcome GeneralizedAlphaSolver::Newton(double t1, do
       const double norm = WeightedNorm(delta_, newton_mask_);
       if (k == 0) {
         norm0 = norm;
-        if (newton_rate_ * norm <= kNewtonTolerance || norm == 0.0) {
+        if (newton_rate_ * norm <= options_.newton_convergence_factor || norm == 0.0) {
           converged = true;
           break;
         }
@@ -177,7 +174,7 @@ GeneralizedAlphaSolver::StepOutcome GeneralizedAlphaSolver::Newton(double t1, do
       const double rate = std::pow(norm / norm0, 1.0 / k);
       if (!(rate <= kMaxNewtonRate)) break;  // diverging
       newton_rate_ = rate;
-      if (norm * rate / (1.0 - rate) <= kNewtonTolerance) {
+      if (norm * rate / (1.0 - rate) <= options_.newton_convergence_factor) {
         converged = true;
         break;
       }

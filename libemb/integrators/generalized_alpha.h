@@ -43,8 +43,8 @@
 /// Newton: modified (the matrix is reused over iterations and steps, refreshed when c has
 /// moved by more than 30 %, after 20 steps, or when an iteration converges slowly or fails);
 /// a correction computed with a matrix for c' is scaled by 2 / (1 + c / c'); convergence when
-/// the estimated remaining error rate/(1 - rate) |delta| is below 0.33 of the tolerance
-/// (IDA's constant). A failed iteration with a fresh matrix, a singular matrix or a residual
+/// the estimated remaining error rate/(1 - rate) |delta| is below newton_convergence_factor
+/// of the tolerance (as IDA's epcon). A failed iteration with a fresh matrix, a singular matrix or a residual
 /// that reports failure (DaeProblem::CalcResidual false) cuts the step by 4.
 
 #include <Eigen/Dense>
@@ -93,6 +93,10 @@ struct GeneralizedAlphaOptions {
   double max_step{0.0};        ///< largest step [s]; 0 = unlimited
   long max_num_steps{500000};  ///< steps allowed in one AdvanceTo
   int max_newton_iterations{4};
+  /// Newton convergence: the estimated remaining error below this fraction of the error-test
+  /// tolerance (as IdaOptions::newton_convergence_factor, so that both integrators solve
+  /// their corrector equally tightly).
+  double newton_convergence_factor{0.33};
   LinearSolverKind linear_solver{LinearSolverKind::kAuto};
   int sparse_min_size{50};  ///< kAuto picks KLU from this many unknowns (as IdaOptions)
 };

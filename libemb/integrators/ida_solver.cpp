@@ -165,6 +165,9 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
                                                               << options.atol);
   EMB_THROW_IF(options.max_order < 1 || options.max_order > 5,
                "IDA: expected max order 1..5, got " << options.max_order);
+  EMB_THROW_IF(!(options.newton_convergence_factor > 0.0 && options.newton_convergence_factor <= 1.0),
+               "IDA: expected a Newton convergence factor in (0, 1], got "
+                   << options.newton_convergence_factor);
   Impl& m = *impl_;
   m.problem = &problem;
   CheckSetup(SUNContext_Create(nullptr, &m.ctx), "SUNContext_Create");
@@ -202,6 +205,8 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
              "IDASetSuppressAlg");
   CheckSetup(IDASetMaxNumSteps(m.mem, options.max_num_steps), "IDASetMaxNumSteps");
   CheckSetup(IDASetMaxOrd(m.mem, options.max_order), "IDASetMaxOrd");
+  CheckSetup(IDASetNonlinConvCoef(m.mem, options.newton_convergence_factor),
+             "IDASetNonlinConvCoef");
   if (options.initial_step > 0.0)
     CheckSetup(IDASetInitStep(m.mem, options.initial_step), "IDASetInitStep");
   if (options.max_step > 0.0) CheckSetup(IDASetMaxStep(m.mem, options.max_step), "IDASetMaxStep");

@@ -308,6 +308,8 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
       r.GetDouble("atol_floor_relative", s->atol_floor_relative, R::Closed(0.0, 1.0));
   s->initial_step_fraction =
       r.GetDouble("initial_step_fraction", s->initial_step_fraction, R::Closed(0.0, 1.0));
+  s->newton_convergence_factor = r.GetDouble(
+      "newton_convergence_factor", s->newton_convergence_factor, R::Open(0.0, 1.0));
   s->multiplier_atol = r.GetDouble("multiplier_atol", s->multiplier_atol, R::NonNegative("N"));
   s->multiplier_atol_relative =
       r.GetDouble("multiplier_atol_relative", s->multiplier_atol_relative, R::Open(0.0, 1.0));

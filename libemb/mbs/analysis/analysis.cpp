@@ -344,6 +344,7 @@ std::unique_ptr<DaeIntegrator> MakeIntegrator(const System& sys, const GglDae& d
   g.initial_step = options.initial_step;
   g.max_step = options.max_step;
   g.max_num_steps = options.max_num_steps;
+  g.newton_convergence_factor = options.newton_convergence_factor;
   g.linear_solver = options.linear_solver;
   g.sparse_min_size = options.sparse_min_size;
   return std::make_unique<GeneralizedAlphaSolver>(dae, settings.t_start, y, yp, g);
@@ -428,6 +429,7 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     options.initial_step = settings.initial_step_fraction *
                            std::min(settings.output_step, settings.t_end - settings.t_start);
   options.stop_time = settings.t_end;
+  options.newton_convergence_factor = settings.newton_convergence_factor;
   r.atol = options.atol;
   r.multiplier_atol = options.algebraic_atol;
   const std::unique_ptr<DaeIntegrator> integrator =

@@ -99,6 +99,9 @@ struct AnalysisSettings {
   /// highest kept modes, not the motion, sets the step (measured: a slider-crank with a
   /// flexible rod at 60 rpm took 10 us steps, tests/mbs/flexible/near_singular_test.cpp).
   bool modal_velocity_atol_by_frequency{true};
+  /// Dynamic analysis: IDA's Newton convergence factor (IdaOptions::newton_convergence_factor),
+  /// tighter than SUNDIALS' 0.33 for the GGL DAE (measurements there).
+  double newton_convergence_factor{0.03};
   /// IDA's first step as a fraction of the output step (used when ida.initial_step is 0;
   /// 0 leaves the first step to IDA's own estimate).
   /// IDA's own estimate keeps h |y'| below atol for every component, which for a model

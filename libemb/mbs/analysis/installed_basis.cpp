@@ -39,19 +39,34 @@ Eigen::MatrixXd RitzBasis(const Eigen::LLT<Eigen::MatrixXd>& M, const Eigen::Mat
   return V * eig.eigenvectors();
 }
 
-// Markers of body b that something loads: used by a constraint element or a force element.
-std::vector<int> LoadedMarkers(const System& sys, int b) {
-  std::vector<bool> used(sys.markers().size(), false);
-  for (const ConstraintElement& e : sys.elements())
-    for (int m : {e.marker_i, e.marker_j, e.marker_i2, e.marker_j2})
-      if (m >= 0) used[m] = true;
+// What can load each marker (MarkerLoad flags): the constraint kernels through their
+// structure (a flexible marker is its own virtual body, so a kernel that reads only its
+// origin puts no moment on it) and the force elements' declarations.
+std::vector<unsigned> MarkerLoadsOf(const System& sys) {
+  std::vector<unsigned> loads(sys.markers().size(), 0u);
+  for (const ScalarEquation& eq : sys.equations())
+    for (int n = 0; n < eq.num_terms; ++n) {
+      unsigned i = 0, j = 0;
+      switch (eq.kernel[n].kind) {
+        case KernelKind::kPointComponent:  // e_k . (p_I - p_J)
+          i = j = kMarkerForce;
+          break;
+        case KernelKind::kPointOnAxis:  // (p_I - p_J) . a_J: J's axis turns
+          i = kMarkerForce;
+          j = kMarkerForceAndMoment;
+          break;
+        case KernelKind::kAxisDot:  // a_I . b_J
+        case KernelKind::kAngle:
+          i = j = kMarkerMoment;
+          break;
+      }
+      loads[eq.marker_i[n]] |= i;
+      loads[eq.marker_j[n]] |= j;
+    }
   for (const auto& f : sys.force_elements())
     for (int m : f->markers())
-      if (m >= 0) used[m] = true;
-  std::vector<int> out;
-  for (std::size_t m = 0; m < used.size(); ++m)
-    if (used[m] && sys.marker(static_cast<int>(m)).body == b) out.push_back(static_cast<int>(m));
-  return out;
+      if (m >= 0) loads[m] |= f->MarkerLoads(m);
+  return loads;
 }
 
 }  // namespace
@@ -72,6 +87,7 @@ InstalledBases CalcInstalledBases(const System& system, const Eigen::VectorXd& q
                                                  << r.dynamic_band_hz);
   }
   const LinearModes modes = CalcLinearModes(system, q, v, t, lambda, workspace, /*undamped=*/true);
+  const std::vector<unsigned> loads = MarkerLoadsOf(system);
   for (const auto& r : requests) {
     const int b = system.FindBody(r.body);
     const ElasticModel& model = *system.body(b).elastic;
@@ -111,13 +127,21 @@ InstalledBases CalcInstalledBases(const System& system, const Eigen::VectorXd& q
     }
     const Eigen::MatrixXd Vd = RitzBasis(Mllt, K, U, scale);
 
-    // 2. Static responses to the loads the body can feel.
-    const std::vector<int> loaded = LoadedMarkers(system, b);
-    Eigen::MatrixXd F(ne, 6 * static_cast<Eigen::Index>(loaded.size()) + 9);
-    for (std::size_t k = 0; k < loaded.size(); ++k) {
-      const Marker& m = system.marker(loaded[k]);
-      F.middleCols(6 * k, 3) = m.shape_t.transpose();
-      F.middleCols(6 * k + 3, 3) = m.shape_r.transpose();
+    // 2. Static responses to the loads the body can feel: at each loaded marker the forces
+    // (shape_t^T) and moments (shape_r^T) it can carry, and the inertia loads (Ibar^T).
+    int num_loaded = 0, columns = 9;
+    for (std::size_t m = 0; m < loads.size(); ++m)
+      if (loads[m] && system.marker(static_cast<int>(m)).body == b) {
+        ++num_loaded;
+        columns += (loads[m] & kMarkerForce ? 3 : 0) + (loads[m] & kMarkerMoment ? 3 : 0);
+      }
+    Eigen::MatrixXd F(ne, columns);
+    int col = 0;
+    for (std::size_t m = 0; m < loads.size(); ++m) {
+      const Marker& marker = system.marker(static_cast<int>(m));
+      if (!loads[m] || marker.body != b) continue;
+      if (loads[m] & kMarkerForce) F.middleCols(col, 3) = marker.shape_t.transpose(), col += 3;
+      if (loads[m] & kMarkerMoment) F.middleCols(col, 3) = marker.shape_r.transpose(), col += 3;
     }
     F.rightCols(9) = model.Ibar.transpose();
     const Eigen::LDLT<Eigen::MatrixXd> Kldlt(K);
@@ -153,7 +177,7 @@ InstalledBases CalcInstalledBases(const System& system, const Eigen::VectorXd& q
     rep.num_available = ne;
     rep.num_dynamic = static_cast<int>(Vd.cols());
     rep.num_quasi_static = static_cast<int>(Vs.cols());
-    rep.num_loaded_markers = static_cast<int>(loaded.size());
+    rep.num_loaded_markers = num_loaded;
     rep.dynamic_band_hz = r.dynamic_band_hz;
     rep.highest_kept_hz = highest;
     rep.first_left_out_hz = first_out;

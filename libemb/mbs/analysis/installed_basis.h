@@ -14,9 +14,10 @@
 ///     modal mass) and rotated to the Ritz vectors of the body's own K, M in that span (so
 ///     each has a frequency, the modal velocity tolerance and the reports use it).
 ///  2. Quasi-static coordinates V_s: the static responses K^-1 F of the body to every load
-///     it can feel: the shapes of its loaded markers (a marker used by a joint, motion,
-///     coupler or force element), F = Phi_m^T (forces) and Psi_m^T (moments), and its
-///     inertia loads (the rows of Ibar: centrifugal and frame-acceleration loads of a
+///     it can feel: the shapes of its loaded markers, F = Phi_m^T for the forces and
+///     Psi_m^T for the moments a marker can carry (the constraint kernels' structure: a
+///     point-on-axis joint puts only a force on its point's marker; the force elements'
+///     ForceElement::MarkerLoads), and its inertia loads (the rows of Ibar: centrifugal and frame-acceleration loads of a
 ///     spinning body), M-orthogonalised against V_d, orthonormalised, Ritz-rotated. They
 ///     are massless (ElasticModel::MakeQuasiStatic): at every instant they take the static
 ///     response to the loads, so the static compliance of the full basis at every loaded

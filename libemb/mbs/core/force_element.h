@@ -59,6 +59,11 @@ struct EventResponse {
   std::vector<EventNote> notes;
 };
 
+/// What an element can apply at one of its markers (bit flags): a force, a moment about the
+/// marker, or both. A flexible body needs static shapes only for the loads it can feel
+/// (installed_basis.h).
+enum MarkerLoad : unsigned { kMarkerForce = 1u, kMarkerMoment = 2u, kMarkerForceAndMoment = 3u };
+
 class ForceElement {
  public:
   explicit ForceElement(std::string name) : name_(std::move(name)) {}
@@ -77,6 +82,9 @@ class ForceElement {
   double CalcDissipatedPower(const ForceContext& ctx) const { return DoCalcDissipatedPower(ctx); }
   /// Markers this element reads (to validate marker indices at Finalize).
   std::vector<int> markers() const { return DoMarkers(); }
+  /// The loads it can apply at `marker` (one of markers()), at any state: MarkerLoad flags,
+  /// structurally (a zero at one state is not a reason to leave one out). Default: both.
+  unsigned MarkerLoads(int marker) const { return DoMarkerLoads(marker); }
   /// Continuous-angle slots it needs in the ConstraintWorkspace (e.g. a crank angle over a
   /// 720 degree cycle).
   int num_angle_slots() const { return DoNumAngleSlots(); }
@@ -116,6 +124,7 @@ class ForceElement {
   virtual double DoCalcPotentialEnergy(const ForceContext&) const { return 0.0; }
   virtual double DoCalcDissipatedPower(const ForceContext&) const { return 0.0; }
   virtual std::vector<int> DoMarkers() const = 0;
+  virtual unsigned DoMarkerLoads(int) const { return kMarkerForceAndMoment; }
   virtual int DoNumAngleSlots() const { return 0; }
   virtual bool DoCalcLoad(const ForceContext&, Eigen::Matrix<double, 6, 1>*) const {
     return false;

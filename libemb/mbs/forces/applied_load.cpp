@@ -129,4 +129,10 @@ void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
   jac.ScatterTo(sink);
 }
 
+unsigned AppliedLoad::DoMarkerLoads(int marker) const {
+  if (marker == marker_) return kind_ == Kind::kForce ? kMarkerForce : kMarkerMoment;
+  if (marker == reaction_marker_) return kMarkerForceAndMoment;
+  return 0u;
+}
+
 }  // namespace emb::mbs

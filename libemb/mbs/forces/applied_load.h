@@ -45,6 +45,9 @@ class AppliedLoad final : public ForceElement {
   void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const override;
   void DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const override;
   std::vector<int> DoMarkers() const override;
+  /// The loaded marker: a force (at its origin) or a torque; the reaction marker: both (the
+  /// opposite load acts at the loaded marker's point); the argument joint's markers: none.
+  unsigned DoMarkerLoads(int marker) const override;
   int DoNumAngleSlots() const override { return argument_.joint_angle ? 1 : 0; }
 
  private:

@@ -123,4 +123,12 @@ double Bushing::DoCalcDissipatedPower(const ForceContext& ctx) const {
   return s.xi_dot.dot(d_ * s.xi_dot);
 }
 
+unsigned Bushing::DoMarkerLoads(int marker) const {
+  if (marker != i_) return kMarkerForceAndMoment;
+  // The moment on I is -(K xi + D xi')_rotational: rows 3..5 of K and D.
+  const bool moment = k_.bottomRows<3>().cwiseAbs().maxCoeff() > 0.0 ||
+                      d_.bottomRows<3>().cwiseAbs().maxCoeff() > 0.0;
+  return moment ? kMarkerForceAndMoment : kMarkerForce;
+}
+
 }  // namespace emb::mbs

@@ -45,6 +45,9 @@ class Bushing : public ForceElement {
   double DoCalcPotentialEnergy(const ForceContext& ctx) const override;
   double DoCalcDissipatedPower(const ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override { return {i_, j_}; }
+  /// I: the force at p_WI, and a moment only with rotational (or coupling) stiffness or
+  /// damping; J: both (the force acts at p_WI, off J's origin).
+  unsigned DoMarkerLoads(int marker) const override;
   bool DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const override;
   bool DoReportsLoad() const override { return true; }
 

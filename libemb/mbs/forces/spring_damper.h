@@ -24,6 +24,8 @@ class TranslationalSpringDamper final : public ForceElement {
   double DoCalcPotentialEnergy(const ForceContext& ctx) const override;
   double DoCalcDissipatedPower(const ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override { return {i_, j_}; }
+  /// A force at each marker's origin, no moment.
+  unsigned DoMarkerLoads(int) const override { return kMarkerForce; }
 
  private:
   struct State {
@@ -60,6 +62,8 @@ class RotationalSpringDamper final : public ForceElement {
   double DoCalcPotentialEnergy(const ForceContext& ctx) const override;
   double DoCalcDissipatedPower(const ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override { return {i_, j_}; }
+  /// A moment about the joint axis (the angle kernel's gradient), no force.
+  unsigned DoMarkerLoads(int) const override { return kMarkerMoment; }
   int DoNumAngleSlots() const override { return 1; }
 
  private:
