@@ -51,6 +51,8 @@ class ClutchDamper final : public mbs::ForceElement {
   double DoCalcPotentialEnergy(const mbs::ForceContext& ctx) const override;
   double DoCalcDissipatedPower(const mbs::ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override { return {term_.marker_i, term_.marker_j}; }
+  /// The angle depends on the markers' orientations only: moments.
+  unsigned DoMarkerLoads(int) const override { return mbs::kMarkerMoment; }
   int DoNumAngleSlots() const override { return 1; }
   bool DoCalcLoad(const mbs::ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const override;
   bool DoReportsLoad() const override { return true; }

@@ -59,6 +59,14 @@ std::vector<int> Lash::DoMarkers() const {
   return m;
 }
 
+unsigned Lash::DoMarkerLoads(int marker) const {
+  unsigned loads = 0;
+  for (const CoordinateTerm& t : terms_)
+    if (marker == t.marker_i || marker == t.marker_j)
+      loads |= t.angle() ? mbs::kMarkerMoment : mbs::kMarkerForceAndMoment;
+  return loads;
+}
+
 int Lash::state_slot(const mbs::ForceContext& ctx) const {
   return ctx.angle_slot < 0 ? -1 : ctx.angle_slot + NumAngleTerms(terms_);
 }

@@ -89,6 +89,9 @@ class Lash final : public mbs::ForceElement {
   double DoCalcPotentialEnergy(const mbs::ForceContext& ctx) const override;
   double DoCalcDissipatedPower(const mbs::ForceContext& ctx) const override;
   std::vector<int> DoMarkers() const override;
+  /// An angle coordinate depends on the markers' orientations only: moments; a translation
+  /// also on their positions.
+  unsigned DoMarkerLoads(int marker) const override;
   int DoNumAngleSlots() const override { return NumAngleTerms(terms_); }
   bool DoCalcLoad(const mbs::ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const override;
   bool DoReportsLoad() const override { return true; }
