@@ -20,6 +20,8 @@ The benchmark scripts call one subcommand each, which turns raw outputs into "da
   web-width NAME B=RUN.json ...      `emb compare --json` per web width B [m]
   inline4 NAME DIR RUN ...           `emb run` outputs DIR/RUN.{json,csv} against DIR/ref
   profile NAME DIR                   perf reports and run summary of inline4_profile.sh
+  clonk NAME DIR RUN ...             driveline_clonk.sh: `emb run` and clonk_plots.py outputs
+                                     DIR/RUN.{json,csv}, DIR/RUN_metrics.json against the first
 All take --command "...". Run with /usr/bin/python3 (inline4 needs numpy, reduce-modes
 matplotlib for its plot).
 """
@@ -292,6 +294,52 @@ def collect_inline4(directory, names):
     return {"cycles": cycles, "reference": "ref", "runs": rows}
 
 
+def collect_clonk(directory, names):
+    """driveline_clonk.sh: `emb run --json` summaries, the CSV channels and clonk_plots.py's
+    metrics of each run against the first (the reference)."""
+    import numpy as np
+
+    def read(name):
+        csv = np.genfromtxt(os.path.join(directory, name + ".csv"), delimiter=",", names=True)
+        return (csv, load(os.path.join(directory, name + ".json"))["summary"],
+                load(os.path.join(directory, name + "_metrics.json")))
+
+    ref, ref_summary, ref_metrics = read(names[0])
+
+    def rms(x):
+        return float(np.sqrt(np.mean(x ** 2)))
+
+    rows = []
+    for name in names:
+        run, s, m = read(name)
+        n = min(len(run), len(ref))
+        t_end = float(s["t_reached"])
+        row = {"name": name, "status": s["status"], "modal_coordinates": s["modal_coordinates"],
+               "rtol": s["rtol"], "steps": s["steps"], "events": s.get("events", 0),
+               "restarts": s.get("restarts", 0), "contacts": s.get("contacts", 0),
+               "seconds_run": s["seconds_run"], "t_end": t_end,
+               "seconds_per_simulated_second": s["seconds_run"] / t_end,
+               "events_per_simulated_second": s.get("events", 0) / t_end}
+        for channel, key in [("gearbox_lashTz", "gear_torque"), ("tube_midan", "tube_accel")]:
+            x, r = run[channel][:n], ref[channel][:n]
+            if key == "tube_accel":  # the vibration: mean (centripetal) part removed
+                x, r = x - np.mean(x), r - np.mean(r)
+            row[key + "_rms_error_pct"] = 100 * rms(x - r) / rms(r)
+        windows = []
+        for w, wr in zip(m["windows"], ref_metrics["windows"]):
+            diff = [a - b for a, b in zip(w["band_levels_db"], wr["band_levels_db"])]
+            windows.append({"start": w["start"], "peak_accel": w["peak_accel"],
+                            "rms_accel": w["rms_accel"], "band_levels_db": w["band_levels_db"],
+                            "band_error_db": diff,
+                            "max_abs_band_error_db": max(abs(d) for d in diff),
+                            "peak_sound_power_level_db": w.get("peak_sound_power_level_db")})
+        row["windows"] = windows
+        row["elements"] = m["elements"]
+        rows.append(row)
+    return {"reference": names[0], "band_centres_hz": ref_metrics["windows"][0]["band_centres_hz"]
+            if ref_metrics["windows"] else [], "runs": rows}
+
+
 def collect_profile(directory):
     def shares(path, key):
         out = []
@@ -325,7 +373,7 @@ def collect_run(program):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("kind", choices=["run", "merge", "modes", "reduce-sizes", "reduce-modes", "stiffening",
-                                    "compare", "web-width", "inline4", "profile"])
+                                    "compare", "web-width", "inline4", "profile", "clonk"])
     p.add_argument("name", help="results file name: benchmarks/results/NAME.json")
     p.add_argument("inputs", nargs="*")
     p.add_argument("--command", help="the command line that ran the benchmark (default: PROGRAM)")
@@ -356,6 +404,7 @@ def main():
             "web-width": lambda: collect_web_width(a.inputs, a.route),
             "inline4": lambda: collect_inline4(a.inputs[0], a.inputs[1:]),
             "profile": lambda: collect_profile(a.inputs[0]),
+            "clonk": lambda: collect_clonk(a.inputs[0], a.inputs[1:]),
         }
         data = collectors[a.kind]()
     write_result(a.name, command, data)

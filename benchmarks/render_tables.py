@@ -272,6 +272,37 @@ def inline4_models(res):
     return table(INLINE4_HEADER, inline4_rows(doc, names)), [doc]
 
 
+def driveline_clonk(res):
+    doc = res("driveline_clonk")
+    names = {"ref": "CMS to 5 kHz, rtol 1e-8 (reference)", "cms5k": "CMS to 5 kHz",
+             "cms2k": "CMS to 2 kHz (scene default)", "cms2k_rtol1e-5": "CMS to 2 kHz",
+             "beam": "beam tube"}
+    rows = []
+    for r in doc["data"]["runs"]:
+        tip = r["windows"][1] if len(r["windows"]) > 1 else (r["windows"] or [{}])[0]
+        rows.append([names.get(r["name"], r["name"]), r["modal_coordinates"], f"{r['rtol']:.0e}",
+                     r["status"], r["steps"], r["events"], r["contacts"],
+                     num(r["seconds_run"], ".1f"), num(r["seconds_per_simulated_second"], ".1f"),
+                     num(r["events_per_simulated_second"], ".0f"),
+                     num(r["gear_torque_rms_error_pct"], ".2g"), num(r["tube_accel_rms_error_pct"], ".2g"),
+                     num(tip.get("peak_accel"), ".3g"), num(tip.get("max_abs_band_error_db"), ".1f"),
+                     num(tip.get("peak_sound_power_level_db"), ".1f")])
+    return table(["tube", "modal coords", "rtol", "status", "steps", "events", "contacts", "wall s",
+                  "wall s per simulated s", "events per simulated s", "gear torque error %",
+                  "surface accel error %", "tip-in peak accel m/s²", "tip-in max band error dB",
+                  "tip-in peak L_W dB"], rows), [doc]
+
+
+def driveline_clonk_bands(res):
+    doc = res("driveline_clonk")
+    centres = doc["data"]["band_centres_hz"]
+    rows = []
+    for r in doc["data"]["runs"]:
+        for w in r["windows"]:
+            rows.append([r["name"], num(w["start"], ".3f")] + [num(x, ".1f") for x in w["band_levels_db"]])
+    return table(["run", "window from s"] + [f"{c} Hz" for c in centres], rows), [doc]
+
+
 def inline4_profile(res):
     doc = res("inline4_profile")
     lib = doc["data"]["by_library"][:8]
@@ -330,7 +361,8 @@ def mbs_residual(res):
 TABLES = {f.__name__: f for f in [
     crank_modes, block_solve, crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
-    inline4_profile, mbs_work_precision, mbs_multiplier_rule, mbs_chains, mbs_residual]}
+    inline4_profile, mbs_work_precision, mbs_multiplier_rule, mbs_chains, mbs_residual,
+    driveline_clonk, driveline_clonk_bands]}
 
 
 def render_table(name, res):

@@ -16,7 +16,7 @@ include(CMakePackageConfigHelpers)
 
 # Every library target of libemb, by its exported name (emb_<name> -> emb::<name>).
 set(EMB_EXPORTED_MODULES common mesh linalg fe beam io cms compare integrators mbs_core
-    mbs_constraints mbs_forces mbs_analysis mbs_flexible mbs engine results scene)
+    mbs_constraints mbs_forces mbs_analysis mbs_flexible mbs engine driveline results scene)
 foreach(m IN LISTS EMB_EXPORTED_MODULES)
   set_target_properties(emb_${m} PROPERTIES EXPORT_NAME ${m})
   add_library(emb::${m} ALIAS emb_${m})
@@ -35,6 +35,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/libemb/ DESTINATION ${CMAKE_INSTALL_INCL
         PATTERN "klu_linear_solver.h" EXCLUDE
         PATTERN "beam_part_reader.h" EXCLUDE
         PATTERN "engine_parts.h" EXCLUDE
+        PATTERN "driveline_parts.h" EXCLUDE
+        PATTERN "output_point_reader.h" EXCLUDE
         PATTERN "scene_parts.h" EXCLUDE)
 
 set(EMB_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/emb)

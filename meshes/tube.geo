@@ -50,6 +50,16 @@
 //                     it.  Costs ~10-30 s of meshing.             -
 //   incomplete 1      Mesh.SecondOrderIncomplete (1: Hex20, 0: Hex27) -
 //   order_linear 0    Mesh.SecondOrderLinear (0: mid-nodes on geometry) -
+//   yoke_ears 0       1 (hex = 1): also define Surfaces "end_a_ear1" (tag 5),
+//                     "end_a_ear2" (6), "end_b_ear1" (7), "end_b_ear2" (8): the
+//                     sectors of each end annulus between 0 and 90 (ear1) and
+//                     between 180 and 270 degrees (ear2) about x, the two
+//                     opposite arcs through which a universal joint's yoke ears
+//                     put the torque into the tube. Interfaces on them (RBE2)
+//                     leave the other two sectors free: the end face can
+//                     ovalise, so end loads reach the shell (ovalling) modes,
+//                     which an axisymmetric end attachment cannot excite.
+//                     Nothing else changes (same mesh).                   -
 //   beam_parts 0      1: also define Physical Volume "beam_segment_tube"
 //                     (tag 1001, the same volumes as "tube") for the beam
 //                     generator (libemb/beam): one prismatic segment along
@@ -88,7 +98,9 @@ DefineConstant[
   order_linear = {0, Name "Parameters/Mesh/order_linear", Choices{0, 1},
              Help "Mesh.SecondOrderLinear: 0 = high-order nodes on the geometry"},
   beam_parts = {0,  Name "Parameters/Beam/beam_parts", Choices{0, 1},
-             Help "1: also name the tube volume(s) for the beam generator"}
+             Help "1: also name the tube volume(s) for the beam generator"},
+  yoke_ears = {0,   Name "Parameters/Tube/yoke_ears", Choices{0, 1},
+             Help "1 (hex = 1): also groups end_a_ear1/2, end_b_ear1/2, two opposite sectors of each end"}
 ];
 
 Ro = D / 2;
@@ -169,6 +181,23 @@ Physical Surface("inner", 4) = {inner[]};
 Physical Volume("tube", 1) = {vols[]};
 If (beam_parts)
   Physical Volume("beam_segment_tube", 1001) = {vols[]};
+EndIf
+If (yoke_ears)
+  If (!hex)
+    Error("tube: yoke_ears needs hex = 1 (the end sectors of the swept mesh)");
+  EndIf
+  // The sectors between 0 and 90 (ear1) and between 180 and 270 degrees (ear2) of each end.
+  ear1_a[] = Surface In BoundingBox{-eps, -eps, -eps, eps, Ro + eps, Ro + eps};
+  ear2_a[] = Surface In BoundingBox{-eps, -Ro - eps, -Ro - eps, eps, eps, eps};
+  ear1_b[] = Surface In BoundingBox{L - eps, -eps, -eps, L + eps, Ro + eps, Ro + eps};
+  ear2_b[] = Surface In BoundingBox{L - eps, -Ro - eps, -Ro - eps, L + eps, eps, eps};
+  If (#ear1_a[] != 1 || #ear2_a[] != 1 || #ear1_b[] != 1 || #ear2_b[] != 1)
+    Error("tube: expected one end sector per ear group");
+  EndIf
+  Physical Surface("end_a_ear1", 5) = {ear1_a[]};
+  Physical Surface("end_a_ear2", 6) = {ear2_a[]};
+  Physical Surface("end_b_ear1", 7) = {ear1_b[]};
+  Physical Surface("end_b_ear2", 8) = {ear2_b[]};
 EndIf
 
 // ---------------------------------------------------------------- mesh

@@ -72,6 +72,19 @@ void DaeProblem::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<cons
   std::copy(dense.data(), dense.data() + dense.size(), jacobian->valuePtr());
 }
 
+bool DaeProblem::CalcRoots(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                           const Eigen::Ref<const Eigen::VectorXd>& yp,
+                           Eigen::Ref<Eigen::VectorXd> g) const {
+  const int n = size();
+  EMB_CHECK(y.size() == n && yp.size() == n && g.size() == num_roots());
+  try {
+    return DoCalcRoots(t, y, yp, g) && g.allFinite();
+  } catch (const NumericalError& e) {
+    recoverable_failure_ = e.what();
+    return false;
+  }
+}
+
 Eigen::VectorXd DaeProblem::DifferentialMask() const {
   Eigen::VectorXd mask = DoDifferentialMask();
   EMB_CHECK(mask.size() == size());

@@ -69,6 +69,18 @@ class DaeProblem {
   /// 1 for a differential component, 0 for an algebraic one (size n).
   Eigen::VectorXd DifferentialMask() const;
 
+  /// Number of root (event) functions g(t, y, y') whose sign changes the integrator locates
+  /// (contact onset and separation of impact elements, ...). Default 0: no events.
+  int num_roots() const { return DoNumRoots(); }
+
+  /// g = G(t, y, y') (size num_roots()). Each g_i must be continuous along the solution
+  /// between two events; a sign change between two steps is an event, located in time by
+  /// the integrator (IdaSolver: IDA's root finding, to ~100 unit round-offs of t). Returns
+  /// false for a non-finite value. A NumericalError of the implementation is kept as for
+  /// CalcResidual() and false is returned.
+  bool CalcRoots(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                 const Eigen::Ref<const Eigen::VectorXd>& yp, Eigen::Ref<Eigen::VectorXd> g) const;
+
   /// A human-readable name of component i ("body crank: q_w", "joint pin: lambda[2]"),
   /// used in failure reports. Default "y[i]".
   std::string ComponentName(int i) const { return DoComponentName(i); }
@@ -93,6 +105,12 @@ class DaeProblem {
                                     const Eigen::Ref<const Eigen::VectorXd>& yp,
                                     SparseMatrixd* jacobian) const;
   virtual Eigen::VectorXd DoDifferentialMask() const = 0;
+  virtual int DoNumRoots() const { return 0; }
+  virtual bool DoCalcRoots(double, const Eigen::Ref<const Eigen::VectorXd>&,
+                           const Eigen::Ref<const Eigen::VectorXd>&,
+                           Eigen::Ref<Eigen::VectorXd>) const {
+    return true;
+  }
   virtual std::vector<std::vector<int>> DoDenseBlocks() const { return {}; }
   virtual std::string DoComponentName(int i) const;
 

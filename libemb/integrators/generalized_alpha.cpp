@@ -51,6 +51,10 @@ GeneralizedAlphaSolver::GeneralizedAlphaSolver(const DaeProblem& problem, double
                "generalized-alpha: expected initial values of size " << n << ", got "
                                                                       << y0.size() << " and "
                                                                       << yp0.size());
+  EMB_THROW_IF(problem.num_roots() > 0,
+               "generalized-alpha does not locate events, and this problem has "
+                   << problem.num_roots()
+                   << " event function(s) (impact/lash elements); use the IDA integrator");
   coef_ = GeneralizedAlphaCoefficients::FromRhoInf(options.rho_inf);
   EMB_THROW_IF(!(options.rtol > 0.0) || !(options.atol > 0.0) || !(options.algebraic_atol >= 0.0),
                "generalized-alpha: expected rtol > 0, atol > 0 and algebraic_atol >= 0, got "

@@ -51,6 +51,7 @@ IntegratorStatus StatusOf(int flag) {
     case IDA_LSOLVE_FAIL:
       return IntegratorStatus::kLinearSolverFailure;
     case IDA_RES_FAIL:
+    case IDA_RTFUNC_FAIL:
     case IDA_REP_RES_ERR:
     case IDA_FIRST_RES_FAIL:
       return IntegratorStatus::kResidualFailure;
@@ -132,6 +133,19 @@ struct IdaSolver::Impl {
     }
   }
 
+  // Root (event) functions: g(t, y, y'); a non-finite value or a NumericalError of the
+  // problem ends the solve with IDA_RTFUNC_FAIL (reported as kResidualFailure).
+  static int Roots(realtype t, N_Vector y, N_Vector yp, realtype* g, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      Eigen::Map<Eigen::VectorXd> gv(g, self->problem->num_roots());
+      return self->problem->CalcRoots(t, View(y), View(yp), gv) ? 0 : -1;
+    } catch (...) {
+      self->pending = std::current_exception();
+      return -1;
+    }
+  }
+
   static void ErrorHandler(int, const char* module, const char* function, char* msg, void* user) {
     auto* self = static_cast<Impl*>(user);
     self->last_message = std::string(module) + "/" + function + ": " + msg;
@@ -199,6 +213,11 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
   if (std::isfinite(options.stop_time) && !options.stop_at_outputs)
     CheckSetup(IDASetStopTime(m.mem, options.stop_time), "IDASetStopTime");
   limiter_count_.assign(n, 0);
+  if (problem.num_roots() > 0) {
+    CheckSetup(IDARootInit(m.mem, problem.num_roots(), &Impl::Roots), "IDARootInit");
+    // A root function that is zero at a restart (an event just handled) is normal here.
+    CheckSetup(IDASetNoInactiveRootWarn(m.mem), "IDASetNoInactiveRootWarn");
+  }
   linear_solver_ = ResolveLinearSolverKind(
       options.linear_solver,
       problem.has_jacobian() && options.use_analytic_jacobian && problem.has_sparse_jacobian(), n,
@@ -236,6 +255,14 @@ void IdaSolver::Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::
                "IDA reinit: expected values of size " << problem_.size());
   View(m.y) = y0;
   View(m.yp) = yp0;
+  // IDAReInit zeroes IDA's counters: keep what they counted so far.
+  before_reinit_ = stats();
+  if (linear_solver_ == LinearSolverKind::kKlu) {  // emb's KLU counts on by itself
+    before_reinit_.full_factorizations = 0;
+    before_reinit_.refactorizations = 0;
+  }
+  root_.reset();
+  after_root_ = false;
   CheckSetup(IDAReInit(m.mem, t0, m.y, m.yp), "IDAReInit");
   if (std::isfinite(options_.stop_time) && !options_.stop_at_outputs)
     CheckSetup(IDASetStopTime(m.mem, options_.stop_time), "IDASetStopTime");
@@ -253,6 +280,9 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
   }
   m.last_message.clear();
   problem_.ClearRecoverableFailure();
+  // An event found beyond an earlier output time: report it once it is reached; before,
+  // read the values off the step that found it.
+  if (root_) return ReportPendingRoot(t_out);
   realtype t_reached = t_;
   int flag = 0;
   long steps = 0;  // IDA's own max_num_steps counts per IDASolve call, i.e. per step here
@@ -266,13 +296,19 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
       }
       flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_ONE_STEP);
       if (flag >= 0) RecordStepLimiter();
+      if (flag == IDA_ROOT_RETURN) break;
     }
   } else {
     // Step past t_out if the error test allows (never past stop_time), then read the values
     // at t_out off IDA's interpolating polynomial.
     realtype t_cur = t_;
     if (IDAGetCurrentTime(m.mem, &t_cur) < 0) t_cur = t_;
-    while (flag >= 0 && t_cur < t_out) {
+    // After an event IDA's last step may reach past t_out; step on anyway, so that IDA checks
+    // the rest of that step for further events before the values are read off it.
+    bool after_root = after_root_;
+    after_root_ = false;
+    while (flag >= 0 && (t_cur < t_out || after_root)) {
+      after_root = false;
       if (steps++ >= options_.max_num_steps) {
         flag = IDA_TOO_MUCH_WORK;
         break;
@@ -280,10 +316,11 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
       flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_ONE_STEP);
       if (flag < 0) break;
       RecordStepLimiter();
+      if (flag == IDA_ROOT_RETURN) break;
       t_cur = t_reached;
       if (flag == IDA_TSTOP_RETURN) break;  // at stop_time: nothing beyond it
     }
-    if (flag >= 0) {
+    if (flag >= 0 && flag != IDA_ROOT_RETURN) {
       const double t_end = std::min(t_out, static_cast<double>(t_cur));
       CheckSetup(IDAGetDky(m.mem, t_end, 0, m.y), "IDAGetDky");
       CheckSetup(IDAGetDky(m.mem, t_end, 1, m.yp), "IDAGetDky");
@@ -294,6 +331,15 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
     std::exception_ptr e = m.pending;
     m.pending = nullptr;
     std::rethrow_exception(e);
+  }
+  if (flag == IDA_ROOT_RETURN) {  // y, y' are the values at the root t_reached
+    root_.emplace();
+    root_->t = t_reached;
+    root_->y = View(m.y);
+    root_->yp = View(m.yp);
+    root_->directions.assign(static_cast<std::size_t>(problem_.num_roots()), 0);
+    CheckSetup(IDAGetRootInfo(m.mem, root_->directions.data()), "IDAGetRootInfo");
+    return ReportPendingRoot(t_out);
   }
   t_ = t_reached;
   y_ = View(m.y);
@@ -334,6 +380,30 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
   return report;
 }
 
+IntegratorReport IdaSolver::ReportPendingRoot(double t_out) {
+  Impl& m = *impl_;
+  IntegratorReport report;
+  if (root_->t <= t_out) {
+    t_ = root_->t;
+    y_ = root_->y;
+    yp_ = root_->yp;
+    report.t = t_;
+    report.root_found = true;
+    report.root_directions = root_->directions;
+    root_.reset();
+    after_root_ = true;
+    return report;
+  }
+  // The root lies in IDA's last step, beyond t_out: its polynomial holds t_out.
+  CheckSetup(IDAGetDky(m.mem, t_out, 0, m.y), "IDAGetDky");
+  CheckSetup(IDAGetDky(m.mem, t_out, 1, m.yp), "IDAGetDky");
+  t_ = t_out;
+  y_ = View(m.y);
+  yp_ = View(m.yp);
+  report.t = t_out;
+  return report;
+}
+
 void IdaSolver::RecordStepLimiter() {
   Impl& m = *impl_;
   N_Vector w = m.scratch;
@@ -355,21 +425,22 @@ std::vector<StepLimiter> IdaSolver::StepLimiters(int max_count) const {
 }
 
 IntegratorStats IdaSolver::stats() const {
-  IntegratorStats s;
+  IntegratorStats s = before_reinit_;
   void* mem = impl_->mem;
   long v = 0;
-  if (IDAGetNumSteps(mem, &v) >= 0) s.steps = v;
-  if (IDAGetNumResEvals(mem, &v) >= 0) s.residual_evals = v;
-  if (IDAGetNumJacEvals(mem, &v) >= 0) s.jacobian_evals = v;
+  if (IDAGetNumSteps(mem, &v) >= 0) s.steps += v;
+  if (IDAGetNumResEvals(mem, &v) >= 0) s.residual_evals += v;
+  if (IDAGetNumJacEvals(mem, &v) >= 0) s.jacobian_evals += v;
   if (linear_solver_ == LinearSolverKind::kKlu) {
     const KluStats& k = KluFactorizationOf(impl_->ls).stats();
     s.full_factorizations = k.full_factorizations;
     s.refactorizations = k.refactorizations;
   } else if (IDAGetNumLinSolvSetups(mem, &v) >= 0) {
-    s.full_factorizations = v;  // every dense setup is one LU with pivoting
+    s.full_factorizations += v;  // every dense setup is one LU with pivoting
   }
-  if (IDAGetNumErrTestFails(mem, &v) >= 0) s.error_test_failures = v;
-  if (IDAGetNumNonlinSolvConvFails(mem, &v) >= 0) s.nonlinear_convergence_failures = v;
+  if (IDAGetNumErrTestFails(mem, &v) >= 0) s.error_test_failures += v;
+  if (problem_.num_roots() > 0 && IDAGetNumGEvals(mem, &v) >= 0) s.root_evals += v;
+  if (IDAGetNumNonlinSolvConvFails(mem, &v) >= 0) s.nonlinear_convergence_failures += v;
   int q = 0;
   if (IDAGetLastOrder(mem, &q) >= 0) s.last_order = q;
   realtype h = 0.0;

@@ -10,6 +10,7 @@
 #include <exception>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -84,9 +85,15 @@ class IdaSolver final : public DaeIntegrator {
   /// never taken beyond it). On success y() and yp() are the values at t_out.
   /// On failure they are the last values IDA accepted and the report says where.
   /// Exceptions thrown by the problem are re-thrown here.
+  /// With root functions (DaeProblem::num_roots() > 0, IDARootInit) it stops early at the
+  /// first sign change of any of them at or before t_out: report.root_found, t() the located
+  /// time, y() and yp() the values there; call AdvanceTo again to go on (after Reinitialize()
+  /// if the problem changed its equations at the event). An event IDA finds in a step past
+  /// t_out is kept and reported by the call that reaches it.
   IntegratorReport AdvanceTo(double t_out) override;
 
-  /// Restarts from new values at t0 (after a discontinuity or a projection).
+  /// Restarts from new values at t0 (after a discontinuity or a projection). stats() keeps
+  /// counting across restarts.
   void Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
 
   /// The linear solver in use (kAuto resolved at construction).
@@ -116,6 +123,16 @@ class IdaSolver final : public DaeIntegrator {
   double t_{0.0};
   Eigen::VectorXd y_, yp_;
   std::vector<long> limiter_count_;  // per component: steps it limited
+  IntegratorStats before_reinit_;  // counters up to the last Reinitialize (IDA zeroes its own)
+  // An event IDA located beyond the output time asked for: reported when reached.
+  struct PendingRoot {
+    double t{0.0};
+    Eigen::VectorXd y, yp;
+    std::vector<int> directions;
+  };
+  std::optional<PendingRoot> root_;
+  bool after_root_{false};  // an event was just reported: IDA's last step may reach past it
+  IntegratorReport ReportPendingRoot(double t_out);
 };
 
 }  // namespace emb

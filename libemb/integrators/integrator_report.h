@@ -34,6 +34,12 @@ struct IntegratorReport {
   std::string worst_component_name;
   double worst_weighted_error{0.0};  ///< |e_i| * w_i (1 = at the tolerance)
   std::string message;               ///< the integrator's own message
+  /// An event: AdvanceTo stopped early, at t, where root function i changed sign
+  /// (DaeProblem::CalcRoots). root_directions[i] is +1 (g_i increasing), -1 (decreasing)
+  /// or 0 (no change) for every root function. The status is kSuccess; y() and y'() are the
+  /// values at the root (IDA: interpolated, on the far side of the sign change).
+  bool root_found{false};
+  std::vector<int> root_directions;
   bool ok() const { return status == IntegratorStatus::kSuccess; }
 };
 
@@ -49,6 +55,7 @@ struct IntegratorStats {
   long refactorizations{0};
   long error_test_failures{0};
   long nonlinear_convergence_failures{0};
+  long root_evals{0};  ///< evaluations of the root (event) functions
   int last_order{0};  ///< BDF order of the last step (IDA); 2 for generalized-alpha
   double last_step{0.0};
 };

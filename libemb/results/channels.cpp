@@ -20,6 +20,17 @@ int ForceElementIndex(const mbs::System& system, const std::string& name) {
     if (system.force_elements()[k]->name() == name) return static_cast<int>(k);
   return -1;
 }
+// Index of channel "<probe>.<channel>" in Sample::probes, or -1.
+int ProbeChannel(const mbs::System& system, const std::string& name) {
+  int offset = 0;
+  for (const auto& p : system.probes()) {
+    for (int k = 0; k < p->num_channels(); ++k)
+      if (name == p->name() + "." + p->channels()[static_cast<std::size_t>(k)]) return offset + k;
+    offset += p->num_channels();
+  }
+  return -1;
+}
+
 int SensorIndex(const mbs::System& system, const std::string& name) {
   for (std::size_t k = 0; k < system.sensors().size(); ++k)
     if (system.sensors()[k].name == name) return static_cast<int>(k);
@@ -58,6 +69,8 @@ std::vector<std::string> ValidChannelNames(const mbs::System& system) {
     if (mbs::HasJointCoordinate(e, mbs::JointCoordinate::kTranslation))
       for (const char* c : {"travel", "travel_rate"}) n.push_back(e.name + "." + c);
   }
+  for (const auto& p : system.probes())
+    for (const auto& c : p->channels()) n.push_back(p->name() + "." + c);
   for (const char* c : {"kinetic", "gravity", "elastic", "total"})
     n.push_back(std::string("energy.") + c);
   n.push_back("residual.position");
@@ -108,6 +121,8 @@ ChannelSet::ChannelSet(const mbs::System& system, const std::vector<std::string>
       ch = {Channel::Kind::kEnergy, 0, comp_index({"kinetic", "gravity", "elastic", "total"})};
     } else if (owner == "residual") {
       ch = {Channel::Kind::kResidual, 0, comp_index({"position", "velocity"})};
+    } else if (const int probe = ProbeChannel(system, c); probe >= 0) {
+      ch = {Channel::Kind::kProbe, probe, 0};
     } else if (SensorIndex(system, owner) >= 0) {
       ch = {Channel::Kind::kSensor, SensorIndex(system, owner),
             comp_index({"dx", "dy", "dz", "rx", "ry", "rz"})};
@@ -167,6 +182,8 @@ double ChannelSet::Value(const mbs::Sample& s, int k) const {
       return s.sensors(c.index, c.component);
     case Channel::Kind::kJoint:
       return s.joints(c.index, c.component);
+    case Channel::Kind::kProbe:
+      return s.probes[c.index];
     case Channel::Kind::kForce:
       return s.reactions(c.index, c.component);
     case Channel::Kind::kTorque:

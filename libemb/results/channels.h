@@ -9,7 +9,8 @@
 /// <force element>.F.norm (|F|), <sensor>.{dx,dy,dz,rx,ry,rz}, <joint>.angle (rad,
 /// unwrapped) and <joint>.angle_rate (rad/s) of revolute and cylindrical joints,
 /// <joint>.travel (m) and <joint>.travel_rate (m/s) of translational and cylindrical joints
-/// (mbs/analysis/joint_coordinates.h),
+/// (mbs/analysis/joint_coordinates.h), <output point>.<channel>
+/// (probes: u|v|a.{x,y,z,n}, power; mbs/flexible/output_points.h),
 /// energy.{kinetic,gravity,elastic,total}, residual.{position,velocity}.
 
 #include <string>
@@ -47,7 +48,8 @@ class ChannelSet {
       kForceElement,
       kForceElementNorm,
       kSensor,
-      kJoint
+      kJoint,
+      kProbe
     } kind;
     int index;      // body, reaction port, force element, sensor or joint element
     int component;  // 0..5

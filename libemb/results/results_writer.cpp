@@ -118,6 +118,7 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
     file_.WriteDoubles("/model/num_modes", counts, {static_cast<std::uint64_t>(counts.size())});
     eta_ = file_.AddSeries("/state/eta", L.num_elastic_total());
     eta_dot_ = file_.AddSeries("/state/eta_dot", L.num_elastic_total());
+    eta_ddot_ = file_.AddSeries("/state/eta_ddot", L.num_elastic_total());
     file_.SetAttribute("/state/eta", "columns",
                        std::string("modal coordinates of /model/flexible_bodies, body after "
                                    "body (/model/num_modes each) [kg^0.5 m]"));
@@ -133,6 +134,22 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
                        std::string("per /model/force_elements: force x y z [N] and moment x y z "
                                    "[N m] on the first marker's body, in the second marker's "
                                    "axes (NaN: not reported)"));
+  }
+  if (!system.probes().empty()) {
+    std::vector<std::string> names, channels;
+    for (const auto& p : system.probes()) {
+      names.push_back(p->name());
+      for (const auto& c : p->channels()) channels.push_back(p->name() + "." + c);
+    }
+    file_.WriteStrings("/model/output_points", names);
+    file_.WriteStrings("/model/output_point_channels", channels);
+    probes_ = file_.AddSeries("/output_points", system.num_probe_channels());
+    file_.SetAttribute("/output_points", "columns",
+                       std::string("per /model/output_point_channels (mbs/flexible/"
+                                   "output_points.h): u elastic displacement [m], v velocity "
+                                   "[m/s], a acceleration [m/s^2] in the part's axes, n along "
+                                   "the point's direction; power: integral of v_n^2 over a "
+                                   "surface [m^4/s^2]"));
   }
   if (!sensors.empty()) {
     sensors_ = file_.AddSeries("/sensors", 6 * static_cast<int>(sensors.size()));
@@ -173,11 +190,13 @@ void ResultsWriter::Write(const mbs::Sample& s) {
           s.joints.row(joint_elements_[k]).transpose();
     file_.Append(joints_, row.data());
   }
+  if (probes_ >= 0) file_.Append(probes_, s.probes.data());
   if (eta_ >= 0) {
     const mbs::StateLayout& L = system_.layout();
     const int rigid_q = L.nq() - L.num_elastic_total(), rigid_v = L.nv() - L.num_elastic_total();
     file_.Append(eta_, s.q.data() + rigid_q);
     file_.Append(eta_dot_, s.v.data() + rigid_v);
+    file_.Append(eta_ddot_, s.vdot.data() + rigid_v);
   }
   file_.Append(v_, s.v.data());
   file_.Append(vdot_, s.vdot.data());
@@ -215,9 +234,10 @@ std::uint64_t ResultsWriter::BytesPerSample(const mbs::System& system) {
   const std::uint64_t nb = system.layout().num_moving();
   const std::uint64_t np = system.reaction_ports().size();
   const std::uint64_t doubles = 1 + 7 * nb + 6 * nb + 6 * nb + 3 * nb + system.num_equations() +
-                                6 * np + 5 + 2 + 2 * system.layout().num_elastic_total() +
+                                6 * np + 5 + 2 + 3 * system.layout().num_elastic_total() +
                                 6 * system.force_elements().size() + 6 * system.sensors().size() +
-                                mbs::kJointCoordinateColumns * CoordinateJoints(system).size();
+                                mbs::kJointCoordinateColumns * CoordinateJoints(system).size() +
+                                static_cast<std::uint64_t>(system.num_probe_channels());
   return 8 * doubles;
 }
 
@@ -230,7 +250,29 @@ void ResultsWriter::Finish(const mbs::RunResult& r) {
     file_.SetAttribute("/", "multiplier_atol", r.multiplier_atol);
     file_.SetAttribute("/", "linear_solver", std::string(Name(r.linear_solver)));
   }
+  WriteEvents(r.events);
   file_.Flush();
+}
+
+void ResultsWriter::WriteEvents(const mbs::EventLog& log) {
+  if (log.num_events == 0 && log.contacts.empty()) return;
+  file_.SetAttribute("/", "num_events", static_cast<long long>(log.num_events));
+  file_.SetAttribute("/", "num_restarts", static_cast<long long>(log.num_restarts));
+  std::vector<double> rows;
+  std::vector<std::string> names;
+  for (const mbs::ContactRecord& c : log.contacts) {
+    rows.insert(rows.end(), {static_cast<double>(c.element_index), static_cast<double>(c.side),
+                             c.t_onset, c.impact_velocity, c.peak_force, c.t_separation,
+                             c.rebound_velocity});
+    names.push_back(c.element);
+  }
+  file_.WriteDoubles("/events/contacts", rows, {log.contacts.size(), 7});
+  file_.WriteStrings("/events/elements", names);
+  file_.SetAttribute("/events/contacts", "columns",
+                     std::string("force element index (/model/force_elements), side (+1 upper "
+                                 "stop / drive flank, -1 lower / coast), t_onset [s], closing "
+                                 "speed, peak force [N or N m], t_separation [s] (NaN: still "
+                                 "closed), opening speed [m/s or rad/s of the coordinate]"));
 }
 
 void ResultsWriter::RecordSteadyState(const SteadyStateReport& report,

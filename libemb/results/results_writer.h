@@ -50,10 +50,20 @@
 ///   /joints             [N, 4 nj] per joint: angle (rad, unwrapped across turns), angle
 ///                       rate (rad/s), travel (m), travel rate (m/s); NaN where the joint has
 ///                       no such coordinate (mbs/analysis/joint_coordinates.h) (version 4)
+///   with output points (probes, mbs/flexible/output_points.h)
+///   /model/output_points, /model/output_point_channels  names, "<point>.<channel>"
+///   /output_points      [N, channels] their values (units in the dataset's attribute)
 ///   with flexible bodies also
 ///   /model/flexible_bodies [nf] names, /model/num_modes [nf]
-///   /state/eta, /state/eta_dot [N, sum num_modes] modal coordinates and rates, body after
-///                       body (/state/q and /state/v hold the rigid-body part only)
+///   /state/eta, /state/eta_dot, /state/eta_ddot [N, sum num_modes] modal coordinates,
+///                       rates and accelerations, body after body (/state/q, /state/v and
+///                       /state/vdot hold the rigid-body part only)
+///   with impact elements (dynamic runs with events, mbs/analysis/event_handling.h)
+///   /events/contacts    [nc, 7] per contact: force element index, side (+1 upper stop,
+///                       -1 lower), t_onset [s], closing speed, peak force [N or N m],
+///                       t_separation [s] (NaN: closed at the end), opening speed
+///   /events/elements    [nc] the force element of each contact; root attributes
+///                       num_events (located events) and num_restarts (law switches)
 
 #include <fstream>
 #include <memory>
@@ -99,8 +109,9 @@ class ResultsWriter {
   const mbs::System& system_;
   TimeSeriesFile file_;
   int time_, q_, v_, vdot_, euler_, lambda_, force_, torque_, energy_, residuals_;
-  int eta_{-1}, eta_dot_{-1}, loads_{-1}, sensors_{-1}, joints_{-1};
+  int eta_{-1}, eta_dot_{-1}, eta_ddot_{-1}, loads_{-1}, sensors_{-1}, joints_{-1}, probes_{-1};
   std::vector<int> joint_elements_;  // System::elements() index of each /model/joints entry
+  void WriteEvents(const mbs::EventLog& log);
 };
 
 /// A CSV file with a header line "t,<channel>,..." and one line per sample; the channels

@@ -59,10 +59,17 @@ BeamPartSpec ReadBeamPart(const YAML::Node& node, const std::string& file) {
   s.placement.omega_W = r.GetVector3("angular_velocity", Eigen::Vector3d::Zero());
   // The keys of `model: rigid|cms` parts from a body file may stay in the entry, so that a
   // scene switches models with the one word `model:` (they are not used here).
-  for (const char* key : {"body_file", "modes", "fmax_hz", "dynamic_band_hz", "basis",
+  for (const char* key : {"modes", "fmax_hz", "dynamic_band_hz", "basis",
                           "quasi_static_relaxation", "geometric_stiffening",
                           "expect_mesh_hash", "modal_coordinates"})
     r.Optional(key);
+  if (r.Has("body_file")) {
+    s.body_file = r.GetString("body_file");
+    if (std::filesystem::path(s.body_file).is_relative())
+      s.body_file = (std::filesystem::path(file).parent_path() / s.body_file).string();
+  } else {
+    r.Optional("body_file");
+  }
   r.Finish();
   return s;
 }

@@ -34,6 +34,9 @@ struct BeamPartSpec {
   std::string geometry;  ///< path of the .geo
   BeamGenerationOptions generation;
   mbs::BeamPartPlacement placement;
+  /// The part's body file (the `model: cms` key, kept for a one-word switch), resolved like
+  /// the geometry; empty if not given. Output points take the part's mesh from it.
+  std::string body_file;
 };
 
 /// True if a body entry of a scene asks for `model: beam`.

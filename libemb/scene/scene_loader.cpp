@@ -18,6 +18,7 @@
 #include "libemb/mbs/forces/spring_damper.h"
 #include "libemb/results/channels.h"
 #include "libemb/scene/beam_part_reader.h"
+#include "libemb/scene/output_point_reader.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
 #include "libemb/scene/yaml_reader.h"
@@ -33,6 +34,7 @@ using Eigen::Vector3d;
 struct Parts {
   std::map<std::string, mbs::FlexiblePart> from_body_files;
   std::map<std::string, mbs::BeamPart> beams;
+  std::map<std::string, BeamPartOutputs> beam_outputs;  // the same, for output points
   /// Parts with `basis: installed` (the analysis builds their basis at the start).
   std::vector<mbs::InstalledBasisRequest> installed_bases;
 };
@@ -132,6 +134,8 @@ void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOpti
           inputs->push_back(spec.geometry);
           parts->beams[name] = mbs::AddBeamPart(
               sys, name, MakeBeamModelFromGeometry(spec.geometry, spec.generation), spec.placement);
+          parts->beam_outputs[name] = {parts->beams[name], spec.placement, spec.body_file};
+          if (!spec.body_file.empty()) inputs->push_back(spec.body_file);
           return;
         }
         const std::string model = rb.GetString("model", "rigid");
@@ -171,9 +175,10 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
                          << ": marker '" << name << "' frame: expected 'body' or 'world', got '"
                          << frame << "'");
         const std::string interface = r.GetString("interface", "");
-        EMB_THROW_IF(!interface.empty() && r.Has("position"),
-                     Where(file, node) << ": marker '" << name
-                                       << "': give either an interface or a position, not both");
+        // With an interface, a position (part/mesh coordinates) is the point of a beam part's
+        // interface node body the marker sits at; on a body-file part it must be the
+        // interface's point (checked below).
+        const bool at_point = r.Has("position");
         const Vector3d p = r.GetVector3("position", Vector3d::Zero());
         Matrix3d R = Matrix3d::Identity();
         if (const YAML::Node o = r.Optional("orientation"))
@@ -183,7 +188,17 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
         // interface, with the orientation in part axes (mbs/flexible/beam_part.h).
         if (const auto beam = parts.beams.find(body);
             beam != parts.beams.end() && !interface.empty()) {
-          mbs::AddInterfaceMarker(sys, beam->second, name, interface, R);
+          if (!at_point) {
+            mbs::AddInterfaceMarker(sys, beam->second, name, interface, R);
+            return;
+          }
+          // At part point p on the interface's node body (a beam section is rigid); axes R in
+          // the part frame, as the interface marker's (which has the part's axes).
+          const mbs::Marker& itf = sys->marker(sys->FindMarker(beam->second.FindInterface(interface).marker));
+          const mbs::BeamPartPlacement& pl = parts.beam_outputs.at(body).placement;
+          const mbs::RigidBody& nb = sys->body(itf.body);
+          sys->AddMarker(name, nb.name, nb.R_WB.transpose() * (pl.p_WP + pl.R_WP * p - nb.p_WB),
+                         itf.R_BM * R);
           return;
         }
         const int b = sys->FindBody(body);
@@ -193,6 +208,16 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
           EMB_THROW_IF(
               part == parts.from_body_files.end(),
               "marker '" << name << "': body '" << body << "' has no body_file, so no interfaces");
+          if (at_point) {
+            const Vector3d q = part->second.interface_points.at(
+                static_cast<std::size_t>(part->second.FindInterface(interface)));
+            EMB_THROW_IF((q - p).norm() > 1e-9 * std::max(1.0, q.norm()),
+                         Where(file, node) << ": marker '" << name << "': position "
+                                           << p.transpose() << " is not the point of interface '"
+                                           << interface << "' (" << q.transpose()
+                                           << "); a marker on a part from a body file sits on "
+                                              "its interface's point");
+          }
           mbs::AddInterfaceMarker(sys, part->second, name, interface, R);
           return;
         }
@@ -297,6 +322,7 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   s->ida.max_step = r.GetDouble("max_step", s->ida.max_step, R::NonNegative("s"));
   s->ida.max_num_steps =
       r.GetInt("max_steps", static_cast<int>(s->ida.max_num_steps), 1, 1000000000);
+  s->max_events = r.GetInt("max_events", static_cast<int>(s->max_events), 1, 1000000000);
   try {
     s->ida.linear_solver = ParseLinearSolverKind(r.GetString("linear_solver", "auto"));
     s->integrator = mbs::ParseDynamicIntegrator(r.GetString("integrator", Name(s->integrator)));
@@ -411,6 +437,8 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   if (const YAML::Node n = r.Optional("couplers")) ReadCouplers(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("forces")) ReadForces(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("sensors")) ReadSensors(n, source, &scene.system);
+  if (const YAML::Node n = r.Optional("output_points"))
+    ReadOutputPoints(n, source, &scene.system, parts.from_body_files, parts.beam_outputs);
   YAML::Node analysis_node = r.Optional("analysis");
   if (analysis_node) ReadAnalysis(analysis_node, source, &scene.analysis, &scene.steady_state);
   scene.analysis.installed_bases = parts.installed_bases;

@@ -11,6 +11,7 @@
 #include "libemb/mbs/core/expression_function.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/forces/spring_damper.h"
+#include "libemb/scene/driveline_parts.h"
 #include "libemb/scene/engine_parts.h"
 
 namespace emb::scene {
@@ -278,6 +279,10 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
       sys->AddForceElement(std::make_shared<mbs::Bushing>(name, i, j, K, D));
     } else if (type == "journal-bearing") {
       ReadJournalBearing(r, name, sys);
+    } else if (type == "lash") {
+      ReadLash(r, name, sys);
+    } else if (type == "clutch-damper") {
+      ReadClutchDamper(r, name, sys);
     } else if (type == "force" || type == "torque") {
       const int m = sys->FindMarker(r.GetString("marker"));
       const std::string frame = r.GetString("frame", "world");
@@ -327,10 +332,10 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
       EMB_THROW(InputError,
                 what << ": unknown type '" << type
                      << "': expected one of spring-damper, rotational-spring-damper, "
-                        "bushing, journal-bearing, force, torque"
+                        "bushing, journal-bearing, lash, clutch-damper, force, torque"
                      << DidYouMean(type, {"spring-damper", "rotational-spring-damper",
-                                               "bushing", "journal-bearing", "force",
-                                               "torque"}));
+                                               "bushing", "journal-bearing", "lash",
+                                               "clutch-damper", "force", "torque"}));
     }
     r.Finish();
   });

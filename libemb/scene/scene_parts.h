@@ -34,7 +34,7 @@ mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
 mbs::JointCoordinate ReadCoordinate(MapReader& r, const std::string& key);
 
 /// The 'forces' list: spring-damper, rotational-spring-damper, bushing, journal-bearing,
-/// force, torque.
+/// lash, clutch-damper, force, torque.
 void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sys);
 
 }  // namespace emb::scene

@@ -12,7 +12,10 @@ following the run's modal coordinates; and bad input (an unknown body, a body fi
 without mesh shapes) exits non-zero with the thing named and no output written.
 Engine plots: the tube spinning about its axis for one 720-degree cycle gives the trace and
 order-spectrum PNGs (written, valid PNG), and an unknown channel is an error naming it.
+Clonk plots (tools/plots/clonk_plots.py): a lash run with output points on the vibrating tube
+gives its five PNGs and metrics that count the results file's contacts.
 """
+import json
 import os
 import shutil
 import subprocess
@@ -168,6 +171,62 @@ def check_readme_example(work):
             check(f.read(8) == PNG_MAGIC, "%s is a PNG" % path)
 
 
+CLONK_PLOTS = os.path.join(SOURCE, "tools", "plots", "clonk_plots.py")
+
+
+def check_clonk_plots(work, num_modes):
+    """clonk_plots.py on a run with a lash (two discs that hit its stops) and output points on
+    the vibrating coarse tube: the five PNGs, the contacts counted as the results file lists
+    them, eleven 1/3-octave bands per clonk window, and an unknown channel named."""
+    eta0 = ", ".join(repr(1e-4 * (k + 1)) for k in range(num_modes))
+    with open(os.path.join(work, "clonk.yaml"), "w") as f:
+        f.write("""bodies:
+  - {name: a, mass: 1.0, inertia: [0.01, 0.01, 0.02], angular_velocity: [0, 0, 5]}
+  - {name: b, mass: 1.0, inertia: [0.025, 0.025, 0.05], position: [0.2, 0, 0]}
+  - {name: tube, model: cms, body_file: tube.h5, position: [0, 1, 0], modal_coordinates: [%s]}
+markers:
+  - {name: ga, body: ground, frame: world, position: [0, 0, 0]}
+  - {name: gb, body: ground, frame: world, position: [0.2, 0, 0]}
+  - {name: ha, body: a}
+  - {name: hb, body: b}
+joints:
+  - {name: ja, type: revolute, i: ha, j: ga}
+  - {name: jb, type: revolute, i: hb, j: gb}
+forces:
+  - {name: mesh, type: lash, joint1: ja, joint2: jb, ratio: 2.0, lash: 0.02,
+     contact: {law: hunt-crossley, stiffness: 2.0e3, restitution: 0.7}}
+output_points:
+  - {name: mid, body: tube, position: [0.3, 0, 0.045], direction: radial,
+     axis: {point: [0, 0, 0], direction: [1, 0, 0]}}
+  - {name: noise, body: tube, group: outer, quantity: radiated_power}
+analysis: {type: dynamic, t_end: 0.03, output_step: 1.0e-4, rtol: 1.0e-7}
+""" % eta0)
+    r = run([EMB, "run", "clonk.yaml", "-q", "-o", "clonk.h5"], work)
+    if r.returncode != 0:
+        sys.exit("emb run failed: " + r.stderr)
+    plots = ["/usr/bin/python3", CLONK_PLOTS, "clonk.h5", "--out", "clonk_png", "--json",
+             "--window", "0.005"]
+    r = run(plots + ["--accel", "mid.a.n", "--power", "noise.power"], work)
+    check(r.returncode == 0, "clonk_plots.py exit code 0: " + r.stderr)
+    metrics = json.loads(r.stdout) if r.returncode == 0 else {"elements": {}, "windows": []}
+    with h5py.File(os.path.join(work, "clonk.h5"), "r") as f:
+        contacts = f["events/contacts"][()]
+    check(len(contacts) >= 2 and metrics["elements"].get("mesh", {}).get("contacts") == len(contacts),
+          "clonk_plots counts the results file's contacts (%d)" % len(contacts))
+    check(len(metrics["windows"]) >= 1 and all(len(w["band_levels_db"]) == 11 for w in metrics["windows"]),
+          "eleven 1/3-octave bands per clonk window")
+    for png in ("impacts", "surface", "spectrogram", "bands", "noise"):
+        path = os.path.join(work, "clonk_png", "clonk_%s.png" % png)
+        ok = os.path.exists(path)
+        if ok:
+            with open(path, "rb") as fp:
+                ok = fp.read(8) == PNG_MAGIC and os.path.getsize(path) > 1000
+        check(ok, "clonk_plots.py wrote a PNG clonk_%s.png" % png)
+    r = run(plots + ["--accel", "nowhere.a.n"], work)
+    check(r.returncode != 0 and "nowhere.a.n" in r.stderr,
+          "unknown output point channel: non-zero exit naming it (%s)" % r.stderr.strip()[-200:])
+
+
 def main():
     work = tempfile.mkdtemp(prefix="emb_animate_")
     check_readme_example(work)
@@ -237,6 +296,7 @@ def main():
         check(not os.path.exists(os.path.join(work, out)), "%s: no output written" % what)
 
     check_engine_plots(work)
+    check_clonk_plots(work, num_modes)
     if failures:
         sys.exit("%d check(s) failed; files kept in %s" % (len(failures), work))
     shutil.rmtree(work)

@@ -28,8 +28,9 @@ DEPENDS = {
     "mbs/analysis": ["mbs/forces", "integrators"],
     "mbs/flexible": ["mbs/forces", "beam", "cms"],
     "engine": ["mbs/forces"],
+    "driveline": ["mbs/forces"],
     "results": ["mbs/analysis", "io"],
-    "scene": ["mbs/analysis", "mbs/flexible", "engine", "results"],
+    "scene": ["mbs/analysis", "mbs/flexible", "engine", "driveline", "results"],
 }
 
 

@@ -25,6 +25,7 @@
 #include "tools/emb/common_options.h"
 #include "tools/emb/interrupt.h"
 #include "tools/emb/progress_display.h"
+#include "tools/emb/table.h"
 
 namespace emb::cli {
 namespace {
@@ -209,6 +210,12 @@ struct RunCommand {
       s.Add("error_test_failures", "error test failures", r.ida_stats.error_test_failures);
       s.Add("newton_failures", "Newton convergence failures",
             r.ida_stats.nonlinear_convergence_failures);
+      if (r.events.num_events > 0 || !r.events.contacts.empty()) {
+        s.Add("events", "events located (contacts, separations, force peaks)",
+              r.events.num_events);
+        s.Add("restarts", "integrator restarts at events", r.events.num_restarts);
+        s.Add("contacts", "contacts of impact elements", static_cast<long long>(r.events.contacts.size()));
+      }
       nlohmann::json limiters = nlohmann::json::array();
       std::string limiter_text;
       for (const auto& [name, share] : r.step_limiters) {
@@ -233,10 +240,33 @@ struct RunCommand {
     s.Add("seconds_assembly", "time assembly [s]", t_prepare);
     s.Add("seconds_run", "time run [s]", t_run);
     if (!h5.empty()) s.Add("output", "written", h5 + (csv_path.empty() ? "" : " and " + csv_path));
-    if (out.json)
-      PrintJson({{"summary", s.ToJson()}});
-    else
+    // Every contact (also in the results file, /events/contacts); the text shows the first.
+    constexpr std::size_t kContactsShown = 20;
+    Table contacts("contacts (all in /events/contacts of the results file)",
+                   {"element", "side", "t_onset", "closing_speed", "peak_force", "t_separation",
+                    "opening_speed"},
+                   {"element", "side", "t_onset [s]", "closing speed", "peak force",
+                    "t_separation [s]", "opening speed"});
+    for (std::size_t i = 0; i < r.events.contacts.size(); ++i) {
+      if (!out.json && i == kContactsShown) break;
+      const mbs::ContactRecord& c = r.events.contacts[i];
+      contacts.AddRow({c.element, static_cast<long long>(c.side), c.t_onset, c.impact_velocity,
+                       c.peak_force, c.t_separation, c.rebound_velocity});
+    }
+    contacts.set_precision(6);
+    if (out.json) {
+      nlohmann::json j = {{"summary", s.ToJson()}};
+      if (!r.events.contacts.empty()) j["contacts"] = contacts.ToJson();
+      PrintJson(j);
+    } else {
       s.Print(std::cout);
+      if (!r.events.contacts.empty()) {
+        std::cout << "\n";
+        contacts.Print(std::cout);
+        if (r.events.contacts.size() > kContactsShown)
+          std::cout << "... " << r.events.contacts.size() - kContactsShown << " more\n";
+      }
+    }
     if (r.ok() && steady && !steady->report().converged)
       EMB_THROW(NumericalError,
                 "no periodic steady state in " << sc.steady_state.max_cycles

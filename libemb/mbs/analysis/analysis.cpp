@@ -10,6 +10,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/analysis/analysis_internal.h"
+#include "libemb/mbs/analysis/event_handling.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
 #include "libemb/mbs/constraints/out_of_plane.h"
 #include "libemb/integrators/generalized_alpha.h"
@@ -237,6 +238,12 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
         RotationVectorFromRotation(J.R_WM.transpose() * I.R_WM).transpose();
   }
   s.joints = CalcJointCoordinates(system, bodies);
+  s.probes.resize(system.num_probe_channels());
+  int offset = 0;
+  for (const auto& probe : system.probes()) {
+    probe->Eval(system, bodies, vdot, s.probes.segment(offset, probe->num_channels()));
+    offset += probe->num_channels();
+  }
   s.energies = CalcEnergies(system, bodies, t, workspace);
   if (c.phi.size()) {
     s.position_residual = c.phi.cwiseAbs().maxCoeff();
@@ -425,17 +432,51 @@ std::unique_ptr<DaeIntegrator> MakeIntegrator(const System& sys, const GglDae& d
   return std::make_unique<GeneralizedAlphaSolver>(dae, settings.t_start, y, yp, g);
 }
 
+// Consistent accelerations and multipliers at (t, q, v) with the force laws in force, the
+// elements' discrete states settled on them (event_handling.h): an element that switches
+// changes the accelerations, so solve again (a few rounds at most: each switch is a contact
+// closing or opening at this instant).
+static AccelerationSolution SettledAccelerations(const System& sys, const GglDae& dae, double t,
+                                                 const Eigen::VectorXd& q,
+                                                 const Eigen::VectorXd& v, EventLog* log) {
+  constexpr int kMaxRounds = 8;
+  AccelerationSolution acc = SolveAccelerations(sys, q, v, t, &dae.workspace());
+  if (dae.num_roots() == 0) return acc;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    if (!SettleEventStates(sys, dae, t, q, v, acc.vdot, log)) break;
+    acc = SolveAccelerations(sys, q, v, t, &dae.workspace());
+  }
+  return acc;
+}
+
+// A clean restart after an event at the integrator's time: the same q and v, consistent
+// accelerations and multipliers with the force laws now in force, mu = 0.
+static void RestartAfterEvent(const System& sys, const GglDae& dae, DaeIntegrator* ida,
+                              EventLog* log) {
+  const GglLayout& G = dae.ggl_layout();
+  const Eigen::VectorXd q = ida->y().segment(G.q(), G.nq());
+  const Eigen::VectorXd v = ida->y().segment(G.v(), G.nv());
+  const AccelerationSolution acc = SettledAccelerations(sys, dae, ida->t(), q, v, log);
+  Eigen::VectorXd y, yp;
+  dae.MakeInitialValues(q, v, acc.vdot, acc.lambda, &y, &yp);
+  ida->Reinitialize(ida->t(), y, yp);
+}
+
 RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
                      const SampleSink& sink, const ProgressFn& progress, const StopFn& stop) {
   const System& sys = run.system;
   const GglDae dae(sys);
   const GglLayout& G = dae.ggl_layout();
   ConstraintWorkspace& ws = dae.workspace();
+  // Elements with events keep their discrete state from event to event.
+  ws.set_events_active(dae.num_roots() > 0);
   AssemblePositions(sys, run.q0, settings.t_start, &ws, settings.assembly);  // sets angle branches
-  const AccelerationSolution acc = SolveAccelerations(sys, run.q0, run.v0, settings.t_start, &ws);
+  RunResult r;
+  r.events.open.assign(sys.force_elements().size(), -1);
+  const AccelerationSolution acc =
+      SettledAccelerations(sys, dae, settings.t_start, run.q0, run.v0, &r.events);
   Eigen::VectorXd y, yp;
   dae.MakeInitialValues(run.q0, run.v0, acc.vdot, acc.lambda, &y, &yp);
-  RunResult r;
   IdaOptions options = settings.ida;
   EMB_THROW_IF(!(settings.atol_floor_relative >= 0.0) ||
                    !(settings.multiplier_atol_relative >= 0.0) ||
@@ -490,7 +531,19 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
   r.num_samples = 1;
   r.t_reached = times[0];
   for (long long k = 1; k < times.size(); ++k) {
-    const IntegratorReport rep = ida.AdvanceTo(times[k]);
+    IntegratorReport rep = ida.AdvanceTo(times[k]);
+    // Events (event_handling.h): stop at each one, let the elements switch, restart cleanly.
+    while (rep.ok() && rep.root_found) {
+      if (r.events.num_events >= settings.max_events) {
+        rep.status = IntegratorStatus::kOtherFailure;
+        rep.message = "event limit analysis.max_events = " + std::to_string(settings.max_events) +
+                      " reached (contacts chattering?)";
+        break;
+      }
+      if (HandleEvents(sys, dae, ida.t(), ida.y(), ida.yp(), rep.root_directions, &r.events))
+        RestartAfterEvent(sys, dae, &ida, &r.events);
+      rep = ida.AdvanceTo(times[k]);
+    }
     const Eigen::VectorXd& yk = ida.y();
     const Eigen::VectorXd& ypk = ida.yp();
     r.t_reached = ida.t();

@@ -24,6 +24,7 @@
 #include "libemb/integrators/ida_solver.h"
 #include "libemb/mbs/analysis/installed_basis.h"
 #include "libemb/mbs/constraints/assembly.h"
+#include "libemb/mbs/analysis/event_handling.h"
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/mbs/core/dynamics.h"
 #include "libemb/mbs/core/system.h"
@@ -141,6 +142,9 @@ struct AnalysisSettings {
   /// Dynamic analysis: how flexible bodies start. kQuasiStatic removes the free vibration
   /// an undeformed start excites (issue 19); a start that does not converge is an error.
   ElasticStart elastic_start{ElasticStart::kAsGiven};
+  /// Dynamic analysis with impact elements: the run stops (integrator failure, with the
+  /// count) after this many events, e.g. contacts chattering without end (event_handling.h).
+  long max_events{1000000};
   /// Flexible bodies to give an installed basis (installed_basis.h) at the assembled start
   /// before anything else runs: their modal coordinates become the installed modes of the
   /// model up to each body's band plus massless static responses at their loaded markers.
@@ -182,6 +186,8 @@ struct Sample {
   /// (joint_coordinates.h), NaN where the element has no such coordinate; RunAnalysis
   /// unwraps the angles from sample to sample.
   Eigen::MatrixXd joints;
+  /// The probes' channels (System::probes, probe.h), probe after probe.
+  Eigen::VectorXd probes;
   Energies energies;
   double position_residual{0.0};  ///< max |Phi|
   double velocity_residual{0.0};  ///< max |C v + Phi_t|
@@ -234,6 +240,9 @@ struct RunResult {
   int newton_iterations{0};  ///< kinematic/static: total
   StaticReport static_report;  ///< static/quasi-static: the last (or failed) solve
   bool stopped{false};  ///< dynamic analysis: ended before t_end by the caller's StopFn
+  /// Dynamic analysis: the events located (contact onset, separation, force peaks) and the
+  /// contacts of impact elements (event_handling.h).
+  EventLog events;
   /// Dynamic analysis: the unknowns that limited the step size most often (named as in
   /// GglDae::ComponentName) with the share of the accepted steps each limited.
   std::vector<std::pair<std::string, double>> step_limiters;

@@ -15,7 +15,9 @@ GglDae::GglDae(const System& system)
     : system_(system),
       layout_(system.layout().nq(), system.layout().nv(), system.num_equations(),
               system.layout().num_moving()),
-      ws_(std::make_unique<GglWorkspace>(system)) {}
+      ws_(std::make_unique<GglWorkspace>(system)) {
+  InitRoots();
+}
 
 GglDae::~GglDae() = default;
 

@@ -77,6 +77,11 @@ class GglDae final : public DaeProblem {
 
   ConstraintWorkspace& workspace() const { return ws_->constraint; }
 
+  /// The event functions of the force elements (ForceElement::CalcEventFunctions), element
+  /// after element: force element k owns roots [root_offset(k), root_offset(k) + its
+  /// num_event_functions()). -1 if it has none.
+  int root_offset(int k) const { return root_offset_.at(k); }
+
  protected:
   int DoSize() const override { return layout_.size(); }
   bool DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
@@ -91,6 +96,10 @@ class GglDae final : public DaeProblem {
   /// through the mass, stiffness and geometric-stiffness terms and the marker maps).
   std::vector<std::vector<int>> DoDenseBlocks() const override;
   std::string DoComponentName(int i) const override;
+  int DoNumRoots() const override { return num_roots_; }
+  bool DoCalcRoots(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                   const Eigen::Ref<const Eigen::VectorXd>& yp,
+                   Eigen::Ref<Eigen::VectorXd> g) const override;
   bool DoHasSparseJacobian() const override { return true; }
   void DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                             const Eigen::Ref<const Eigen::VectorXd>& yp,
@@ -109,6 +118,9 @@ class GglDae final : public DaeProblem {
   GglLayout layout_;
   // The evaluation scratch (the System stays immutable; const evaluations fill it).
   std::unique_ptr<GglWorkspace> ws_;
+  std::vector<int> root_offset_;  // per force element (ggl_dae_events.cpp)
+  int num_roots_{0};
+  void InitRoots();
 };
 
 }  // namespace emb::mbs

@@ -22,6 +22,16 @@ double ConstraintWorkspace::Unwrap(int slot, double raw, double hint) {
   return a;
 }
 
+double ConstraintWorkspace::state(int slot) const {
+  EMB_CHECK(slot >= 0 && slot < static_cast<int>(angle_.size()));
+  return angle_[slot];
+}
+
+void ConstraintWorkspace::set_state(int slot, double value) {
+  EMB_CHECK(slot >= 0 && slot < static_cast<int>(angle_.size()));
+  angle_[slot] = value;
+}
+
 void ConstraintWorkspace::Reset() {
   for (double& a : angle_) a = std::numeric_limits<double>::quiet_NaN();
 }

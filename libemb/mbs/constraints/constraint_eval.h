@@ -19,19 +19,30 @@ namespace emb::mbs {
 
 class System;
 
-/// Continuous (unwrapped) values of the angle kernels, one slot each: the mutable part of
-/// a run. A slot starts unset; its first value is taken on the branch nearest to the
-/// equation's target (f(t) for a motion) and later values within +-pi of the previous one.
+/// The mutable part of a run: continuous (unwrapped) values of the angle kernels, one slot
+/// each, and the discrete states of force elements (contacts open or closed, ...). An angle
+/// slot starts unset; its first value is taken on the branch nearest to the equation's target
+/// (f(t) for a motion) and later values within +-pi of the previous one. A state slot starts
+/// NaN (the element derives its state from the configuration).
 class ConstraintWorkspace {
  public:
   explicit ConstraintWorkspace(const System& system);
   /// The continuous angle for raw atan2 value `raw` [rad].
   double Unwrap(int slot, double raw, double hint);
+  /// A force element's state slot (force_element.h), NaN until set.
+  double state(int slot) const;
+  void set_state(int slot, double value);
+  /// True while a dynamic analysis locates events (IDA root finding, event_handling.h):
+  /// elements with discrete states then keep them from event to event. False (statics,
+  /// linearisation, ...): they take the state their configuration implies at every call.
+  bool events_active() const { return events_active_; }
+  void set_events_active(bool active) { events_active_ = active; }
   /// Forgets all slots (e.g. before a new assembly).
   void Reset();
 
  private:
   std::vector<double> angle_;
+  bool events_active_{false};
 };
 
 /// The constraint Jacobian C (m x nv), row-major sparse.

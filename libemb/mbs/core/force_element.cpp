@@ -22,6 +22,25 @@ void ForceElement::AddForceJacobian(const ForceContext& ctx, ForceJacobianSink* 
   DoAddForceJacobian(ctx, sink);
 }
 
+void ForceElement::CalcEventFunctions(const ForceContext& ctx,
+                                      Eigen::Ref<Eigen::VectorXd> g) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr);
+  EMB_CHECK(g.size() == num_event_functions());
+  DoCalcEventFunctions(ctx, g);
+}
+
+EventResponse ForceElement::HandleEvent(const ForceContext& ctx, const int* crossed) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr && ctx.workspace != nullptr);
+  EMB_CHECK(crossed != nullptr || num_event_functions() == 0);
+  return DoHandleEvent(ctx, crossed);
+}
+
+EventResponse ForceElement::SettleEventState(const ForceContext& ctx) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr && ctx.workspace != nullptr &&
+            ctx.vdot != nullptr);
+  return DoSettleEventState(ctx);
+}
+
 void AddWrench(const StateLayout& layout, const MarkerKinematics& M, const Eigen::Vector3d& p_WQ,
                const Eigen::Vector3d& F_W, const Eigen::Vector3d& T_W,
                Eigen::Ref<Eigen::VectorXd> f) {

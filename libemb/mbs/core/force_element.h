@@ -25,13 +25,38 @@ struct ForceContext {
   const std::vector<BodyKinematics>* bodies{nullptr};
   double t{0.0};
   ConstraintWorkspace* workspace{nullptr};  ///< may be null: angles are then wrapped
-  int angle_slot{-1};                       ///< this element's first slot (System::Finalize)
+  /// This element's first workspace slot (System::Finalize): its num_angle_slots() angle
+  /// slots, then its num_state_slots() state slots.
+  int angle_slot{-1};
   /// Every marker's kinematics at the same state (CalcAllMarkerKinematics), computed once
   /// for all elements; null: Marker() evaluates a marker on demand.
   const std::vector<MarkerKinematics>* markers{nullptr};
+  /// Event functions only (may be null elsewhere): the accelerations v' (size nv).
+  const Eigen::VectorXd* vdot{nullptr};
 
   /// Marker m at this state: the shared one, or evaluated into `scratch` (and returned).
   const MarkerKinematics& Marker(int m, MarkerKinematics* scratch) const;
+};
+
+/// What an element reports at an event (HandleEvent), for the run's list of contacts.
+struct EventNote {
+  enum class Kind {
+    kContactOnset,  ///< a contact closed: velocity = closing speed, force = force just after
+    kPeakForce,     ///< a local maximum of the contact force: force
+    kSeparation,    ///< the contact opened: velocity = opening speed, force = 0
+  };
+  Kind kind{Kind::kContactOnset};
+  int side{0};           ///< which stop of the element (+1 upper / drive, -1 lower / coast)
+  double velocity{0.0};  ///< [m/s or rad/s of the element's coordinate]
+  double force{0.0};     ///< [N or N m]
+};
+
+/// An element's answer to an event.
+struct EventResponse {
+  /// True if its discrete state changed (its force law switched): the integrator must
+  /// restart from consistent accelerations and multipliers at this time.
+  bool restart{false};
+  std::vector<EventNote> notes;
 };
 
 /// What an element can apply at one of its markers (bit flags): a force, a moment about the
@@ -72,6 +97,27 @@ class ForceElement {
   /// True if CalcLoad() reports a load (then the results have F/T channels for it).
   bool reports_load() const { return DoReportsLoad(); }
 
+  /// Events (impacts, stops). An element with a discrete state (e.g. a contact open or
+  /// closed) keeps it in num_state_slots() workspace slots after its angle slots; they are
+  /// NaN at the start of a run (the element then takes the state the configuration implies).
+  int num_state_slots() const { return DoNumStateSlots(); }
+  /// Number of event functions (constant). Their sign changes are located in time by the
+  /// integrator (DaeProblem::CalcRoots through the GGL DAE) and passed to HandleEvent().
+  int num_event_functions() const { return DoNumEventFunctions(); }
+  /// g (size num_event_functions()) at the context's state; ctx.vdot holds the
+  /// accelerations. Continuous in time between two events.
+  void CalcEventFunctions(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> g) const;
+  /// Called when some of the event functions changed sign: crossed[i] is +1 (g_i rose
+  /// through 0), -1 (fell) or 0, for i < num_event_functions(). Updates the element's
+  /// state slots in ctx.workspace (non-null) and says whether the run must restart.
+  EventResponse HandleEvent(const ForceContext& ctx, const int* crossed) const;
+  /// At the start of a run and after every restart, with consistent accelerations in
+  /// ctx.vdot: switches the discrete state if the motion leaves it at once (an open stop
+  /// already penetrated or being entered from rest, a closed one that pulls or is being
+  /// left), which no sign change of an event function would reveal (a function that is zero
+  /// at a restart is not watched until it leaves zero). restart = true if it switched.
+  EventResponse SettleEventState(const ForceContext& ctx) const;
+
  protected:
   virtual void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const = 0;
   virtual void DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const = 0;
@@ -84,6 +130,11 @@ class ForceElement {
     return false;
   }
   virtual bool DoReportsLoad() const { return false; }
+  virtual int DoNumStateSlots() const { return 0; }
+  virtual int DoNumEventFunctions() const { return 0; }
+  virtual void DoCalcEventFunctions(const ForceContext&, Eigen::Ref<Eigen::VectorXd>) const {}
+  virtual EventResponse DoHandleEvent(const ForceContext&, const int*) const { return {}; }
+  virtual EventResponse DoSettleEventState(const ForceContext&) const { return {}; }
 
  private:
   std::string name_;

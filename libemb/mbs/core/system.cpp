@@ -197,6 +197,25 @@ void System::AddSensor(const std::string& name, const std::string& marker_i,
   sensors_.push_back({name, FindMarker(marker_i), FindMarker(marker_j)});
 }
 
+void System::AddProbe(std::shared_ptr<const Probe> probe) {
+  CheckNotFinalized("AddProbe");
+  EMB_CHECK(probe != nullptr);
+  CheckNewName(probe->name(), "probe");
+  for (const auto& p : probes_)
+    EMB_THROW_IF(p->name() == probe->name(), "output point '" << probe->name()
+                                                              << "' is defined twice");
+  for (int b : probe->bodies())
+    EMB_THROW_IF(b < 0 || b >= num_bodies(),
+                 "output point '" << probe->name() << "': no body with index " << b);
+  probes_.push_back(std::move(probe));
+}
+
+int System::num_probe_channels() const {
+  int n = 0;
+  for (const auto& p : probes_) n += p->num_channels();
+  return n;
+}
+
 void System::Finalize() {
   CheckNotFinalized("Finalize");
   std::vector<int> ne;
@@ -234,7 +253,8 @@ void System::Finalize() {
   }
   force_angle_slot_.clear();
   for (const auto& fe : forces_) {
-    const int n = fe->num_angle_slots();
+    // Angle slots, then state slots (force_element.h).
+    const int n = fe->num_angle_slots() + fe->num_state_slots();
     force_angle_slot_.push_back(n > 0 ? num_angle_slots_ : -1);
     num_angle_slots_ += n;
   }
@@ -289,6 +309,8 @@ System System::WithElasticBases(const std::vector<ElasticBasisChange>& changes) 
       m.shape_t = m.shape_t * c.T;
       m.shape_r = m.shape_r * c.T;
     }
+    for (auto& p : s.probes_)
+      if (auto q = p->WithElasticBasis(c.body, c.T)) p = std::move(q);
   }
   s.Finalize();
   return s;

@@ -13,6 +13,7 @@
 #include "libemb/mbs/core/body.h"
 #include "libemb/mbs/core/force_element.h"
 #include "libemb/mbs/core/joint.h"
+#include "libemb/mbs/core/probe.h"
 #include "libemb/mbs/core/state_layout.h"
 #include "libemb/mbs/core/time_function.h"
 
@@ -111,6 +112,9 @@ class System {
   /// Adds a sensor of marker I relative to marker J (output only).
   void AddSensor(const std::string& name, const std::string& marker_i,
                  const std::string& marker_j);
+  /// Adds a probe (output only, probe.h). @throws InputError for a duplicate name or a body
+  /// index it reads that does not exist.
+  void AddProbe(std::shared_ptr<const Probe> probe);
   /// Gravity acceleration in W [m/s^2].
   void SetGravity(const Eigen::Vector3d& g_W) { gravity_W_ = g_W; }
 
@@ -141,9 +145,13 @@ class System {
   int num_equations() const { return static_cast<int>(equations_.size()); }
   const std::vector<std::shared_ptr<const ForceElement>>& force_elements() const { return forces_; }
   const std::vector<Sensor>& sensors() const { return sensors_; }
+  const std::vector<std::shared_ptr<const Probe>>& probes() const { return probes_; }
+  /// Sum of the probes' channel counts.
+  int num_probe_channels() const;
   const Eigen::Vector3d& gravity() const { return gravity_W_; }
   int num_angle_slots() const { return num_angle_slots_; }
-  /// First angle slot of force element k (-1 if it needs none).
+  /// First workspace slot of force element k (-1 if it needs none): its angle slots, then
+  /// its state slots (ForceElement::num_state_slots).
   int force_angle_slot(int k) const { return force_angle_slot_.at(k); }
   /// Reaction ports (set by Finalize): port e < elements().size() is element e's first port;
   /// the second ports of the couplers follow in element order.
@@ -177,6 +185,7 @@ class System {
   std::vector<ScalarEquation> equations_;
   std::vector<std::shared_ptr<const ForceElement>> forces_;
   std::vector<Sensor> sensors_;
+  std::vector<std::shared_ptr<const Probe>> probes_;
   std::vector<std::string> removed_;
   Eigen::Vector3d gravity_W_{Eigen::Vector3d::Zero()};
   StateLayout layout_;
