@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "libemb/common/parallel.h"
+
 namespace emb {
 
 std::optional<KroneckerIdentityMatrix> KroneckerIdentityMatrix::Detect(const SparseMatrix& A,
@@ -65,6 +67,13 @@ void KroneckerIdentityMatrix::Multiply(const double* x, double* y) const {
   for (int b = 0; b < nb; ++b)
     for (int p = outer[b]; p < outer[b + 1]; ++p)
       for (int i = 0; i < k_; ++i) y[k_ * inner[p] + i] += val[p] * x[k_ * b + i];
+}
+
+void KroneckerIdentityMatrix::Multiply(const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) const {
+  Y.resize(X.rows(), X.cols());
+  // Columns are independent: they run concurrently.
+  ParallelFor(static_cast<int>(X.cols()),
+              [&](int j) { Multiply(X.col(j).data(), Y.col(j).data()); });
 }
 
 }  // namespace emb

@@ -102,4 +102,10 @@ Eigen::MatrixXd ShiftInvertSolver::Solve(const Eigen::MatrixXd& B, const Eigen::
   return X;
 }
 
+void ShiftInvertSolver::ProjectOntoConstraints(Eigen::MatrixXd& X) const {
+  EMB_CHECK(ok_);
+  if (C_.rows() == 0) return;
+  X.noalias() -= Y_ * S_.solve(C_ * X);
+}
+
 }  // namespace emb

@@ -48,6 +48,11 @@ class ShiftInvertSolver {
   /// for Q = 0).
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& B, const Eigen::MatrixXd& Q = {}) const;
 
+  /// X ← X − A⁻¹Cᵀ S⁻¹ C X: the A-orthogonal projection onto C x = 0 (no-op without
+  /// constraints). Removes the constraint violation that cancellation in a Krylov
+  /// orthogonalisation amplifies (range(A⁻¹Cᵀ) is what a constrained solve already subtracts).
+  void ProjectOntoConstraints(Eigen::MatrixXd& X) const;
+
   int rows() const { return static_cast<int>(K_.rows()); }
   const SparseMatrix& K() const { return K_; }
   const SparseMatrix& M() const { return M_; }
