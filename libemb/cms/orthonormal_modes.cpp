@@ -36,6 +36,10 @@ OrthonormalModes Orthonormalise(const Eigen::MatrixXd& K, const Eigen::MatrixXd&
   int keep = 0;
   for (int i = 0; i < nr; ++i) keep += me.eigenvalues()[i] > dmin;
   out.num_dropped = nr - keep;
+  double dkept = dmax;
+  for (int i = 0; i < nr; ++i)
+    if (me.eigenvalues()[i] > dmin) dkept = std::min(dkept, me.eigenvalues()[i]);
+  out.mass_condition = dkept > 0.0 ? dmax / dkept : 1.0;
   Eigen::MatrixXd Z(nr, keep);
   for (int i = 0, k = 0; i < nr; ++i)
     if (me.eigenvalues()[i] > dmin) Z.col(k++) = me.eigenvectors().col(i) / std::sqrt(me.eigenvalues()[i]);

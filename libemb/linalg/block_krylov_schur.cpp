@@ -8,6 +8,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/common/parallel.h"
+#include "libemb/common/timer.h"
 
 namespace emb {
 namespace {
@@ -180,16 +181,22 @@ class Process {
   int block_solves() const { return block_solves_; }
   int products() const { return products_; }
   int replaced() const { return replaced_; }
+  double seconds_solve() const { return seconds_solve_; }
+  double seconds_inner() const { return seconds_inner_; }
 
  private:
   void Solve(const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) {
+    const Stopwatch sw;
     op_.solve(X, Y);
+    seconds_solve_ += sw.seconds();
     EMB_CHECK(Y.rows() == n_ && Y.cols() == X.cols());
     ++block_solves_;
     solved_ += static_cast<int>(X.cols());
   }
   void Inner(const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) {
+    const Stopwatch sw;
     op_.inner(X, Y);
+    seconds_inner_ += sw.seconds();
     EMB_CHECK(Y.rows() == n_ && Y.cols() == X.cols());
     products_ += static_cast<int>(X.cols());
   }
@@ -276,6 +283,7 @@ class Process {
   int k_{0}, nlock_{0};
   std::vector<double> locked_theta_;
   int block_solves_{0}, solved_{0}, products_{0}, replaced_{0};
+  double seconds_solve_{0.0}, seconds_inner_{0.0};
 };
 
 }  // namespace
@@ -313,6 +321,7 @@ BlockKrylovResult SolveBlockKrylovSchur(const BlockOperators& op, const BlockKry
   const int r_known = static_cast<int>(known.vectors.cols());
   EMB_THROW_IF(r_known >= nev, "block Krylov-Schur: " << r_known << " known eigenvectors, but only "
                                                        << nev << " wanted");
+  const Stopwatch total;
   Process process(op, range, b, m, o.seed);
   if (r_known > 0) process.Deflate(known.vectors, known.inner_vectors, known.theta);
   auto finish = [&](BlockKrylovStatus status) {
@@ -321,6 +330,9 @@ BlockKrylovResult SolveBlockKrylovSchur(const BlockOperators& op, const BlockKry
     r.vectors_solved = process.solves();
     r.inner_products = process.products();
     r.num_replaced = process.replaced();
+    r.seconds_solve = process.seconds_solve();
+    r.seconds_inner = process.seconds_inner();
+    r.seconds_total = total.seconds();
     return r;
   };
   if (!process.Start()) return finish(BlockKrylovStatus::kBreakdown);

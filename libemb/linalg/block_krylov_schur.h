@@ -82,6 +82,10 @@ struct BlockKrylovResult {
   int num_replaced{0};        ///< directions that vanished and were replaced by random ones
   int block_size{0};          ///< b actually used
   int max_basis{0};           ///< m actually used
+  double seconds_solve{0.0};  ///< wall time in S
+  double seconds_inner{0.0};  ///< wall time in B
+  double seconds_total{0.0};  ///< wall time of the whole process (the rest: orthogonalisation,
+                              ///< Rayleigh–Ritz, restarts)
 };
 
 /// Eigenvectors known beforehand (e.g. a purified null space): locked from the start, returned

@@ -77,6 +77,8 @@ struct EigenResult {
   std::string method;                ///< "block", "lanczos" or "dense"
   FactorInfo factor;                 ///< the factorisation of K − σM
   PhaseTimes times;                  ///< "factorisation", "eigen-solve", "checks"
+  PhaseTimes block_times;            ///< inside the block eigen-solve: "null space", "solves",
+                                     ///< "mass products", "orthogonalisation and Rayleigh-Ritz"
   bool ok() const { return status == EigenStatus::kSuccess; }
 };
 
