@@ -123,6 +123,12 @@ void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, const Sp
     MPhi = MPhi * Q;
     r.eigenvalues = ritz.eigenvalues;
   }
+  // Signs and degenerate rotations canonical (issue 12); K Φ and M Φ follow.
+  {
+    const Eigen::MatrixXd R = CanonicalizeEigenvectors(Phi, r.eigenvalues);
+    KPhi = (KPhi * R).eval();
+    MPhi = (MPhi * R).eval();
+  }
   Eigen::LLT<Eigen::MatrixXd> cct;
   ResidualProjection outside_constraints;
   if (C.rows() > 0) {
