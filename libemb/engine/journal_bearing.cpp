@@ -135,7 +135,9 @@ JournalBearing::FilmLoad JournalBearing::CalcFilmLoad(const RelativeMotion& rel,
 }
 
 void JournalBearing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
-  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const MarkerPair markers(ctx, i_, j_);
+  const MarkerKinematics& I = markers.I;
+  const MarkerKinematics& J = markers.J;
   const FilmLoad load = CalcFilmLoad(CalcRelativeMotion(I, J), ctx.t);
   const Eigen::Vector3d F_W = J.R_WM * Eigen::Vector3d(load.force.x(), load.force.y(), 0.0);
   const Eigen::Vector3d T_W = J.R_WM.col(2) * load.torque;
@@ -143,7 +145,7 @@ void JournalBearing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::Vect
 }
 
 bool JournalBearing::DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* out) const {
-  const FilmLoad load = CalcFilmLoad(CalcRelativeMotion(CalcMarkerPair(ctx, i_, j_)), ctx.t);
+  const FilmLoad load = CalcFilmLoad(CalcRelativeMotion(MarkerPair(ctx, i_, j_)), ctx.t);
   *out << load.force.x(), load.force.y(), 0.0, 0.0, 0.0, load.torque;
   return true;
 }
@@ -154,8 +156,9 @@ void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSi
   using Eigen::MatrixXd;
   using Eigen::Vector2d;
   using Eigen::Vector3d;
-  const MarkerPair markers = CalcMarkerPair(ctx, i_, j_);
-  const auto& [I, J] = markers;
+  const MarkerPair markers(ctx, i_, j_);
+  const MarkerKinematics& I = markers.I;
+  const MarkerKinematics& J = markers.J;
   const RelativeMotion rel = CalcRelativeMotion(markers);
   const Vector2d e = rel.x.head<2>(), e_dot = rel.x_dot.head<2>();
   const double w = rel.w.z();
@@ -209,7 +212,7 @@ void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSi
 }
 
 double JournalBearing::DoCalcDissipatedPower(const ForceContext& ctx) const {
-  const RelativeMotion rel = CalcRelativeMotion(CalcMarkerPair(ctx, i_, j_));
+  const RelativeMotion rel = CalcRelativeMotion(MarkerPair(ctx, i_, j_));
   const FilmLoad load = CalcFilmLoad(rel, ctx.t);
   return -(load.force.dot(rel.x_dot.head<2>()) + load.torque * rel.w.z());
 }

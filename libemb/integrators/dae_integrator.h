@@ -5,6 +5,7 @@
 /// BDF) and GeneralizedAlphaSolver (second order, numerically damped) implement it.
 
 #include <Eigen/Dense>
+#include <vector>
 
 #include "libemb/integrators/integrator_report.h"
 #include "libemb/integrators/linear_solver_kind.h"
@@ -27,6 +28,9 @@ class DaeIntegrator {
   virtual LinearSolverKind linear_solver() const = 0;
   /// Structural non-zeros of the iteration matrix.
   virtual long jacobian_nonzeros() const = 0;
+  /// The components that limited the step size most often (StepLimiter), most frequent
+  /// first, at most `max_count`: what to look at when a run takes many small steps.
+  virtual std::vector<StepLimiter> StepLimiters(int max_count) const = 0;
 };
 
 }  // namespace emb

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <string>
+#include <vector>
 
 #include "libemb/integrators/matrix_assembler.h"
 
@@ -51,6 +52,11 @@ class DaeProblem {
   /// True if CalcSparseJacobian() assembles a genuinely sparse matrix. Otherwise
   /// CalcSparseJacobian() stores the dense CalcJacobian() result with all n^2 entries.
   bool has_sparse_jacobian() const { return DoHasSparseJacobian(); }
+  /// Disjoint groups of unknowns that the iteration matrix couples densely among themselves
+  /// but only sparsely with the rest (a flexible body's modal coordinates and rates): a
+  /// sparse linear solver may eliminate them as dense blocks (block_elimination_lu.h).
+  /// Empty by default.
+  std::vector<std::vector<int>> DenseBlocks() const { return DoDenseBlocks(); }
 
   /// J = dF/dy + cj dF/dy' as a compressed-column matrix. On the first call (J empty,
   /// 0 x 0) the problem builds the structure: every entry that can be non-zero at any
@@ -87,6 +93,7 @@ class DaeProblem {
                                     const Eigen::Ref<const Eigen::VectorXd>& yp,
                                     SparseMatrixd* jacobian) const;
   virtual Eigen::VectorXd DoDifferentialMask() const = 0;
+  virtual std::vector<std::vector<int>> DoDenseBlocks() const { return {}; }
   virtual std::string DoComponentName(int i) const;
 
  private:

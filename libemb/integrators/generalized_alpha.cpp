@@ -89,6 +89,7 @@ GeneralizedAlphaSolver::GeneralizedAlphaSolver(const DaeProblem& problem, double
   r_.resize(n);
   delta_.resize(n);
   last_error_ = Eigen::VectorXd::Zero(n);
+  limiter_count_.assign(n, 0);
   Reinitialize(t0, y0, yp0);
 }
 
@@ -111,6 +112,10 @@ void GeneralizedAlphaSolver::Reinitialize(double t0, const Eigen::VectorXd& y0,
 }
 
 long GeneralizedAlphaSolver::jacobian_nonzeros() const { return matrix_->stats().nonzeros; }
+
+std::vector<StepLimiter> GeneralizedAlphaSolver::StepLimiters(int max_count) const {
+  return TopStepLimiters(limiter_count_, max_count);
+}
 
 void GeneralizedAlphaSolver::UpdateWeights() {
   weights_ = (options_.rtol * y_.cwiseAbs() + atol_).cwiseInverse();
@@ -276,6 +281,11 @@ IntegratorReport GeneralizedAlphaSolver::AdvanceTo(double t_out) {
       case StepOutcome::kAccepted: {
         ++steps;
         ++stats_.steps;
+        if (last_error_.size() && last_error_.cwiseAbs().maxCoeff() > 0.0) {
+          Eigen::Index worst = 0;
+          last_error_.cwiseAbs().maxCoeff(&worst);
+          ++limiter_count_[worst];
+        }
         consecutive_error_failures = 0;
         if (last) t_ = t_out;  // exactly, whatever the round-off of t_ + h
         double ratio = error > 0.0 ? kSafety * std::pow(error, -1.0 / 3.0) : kMaxRatio;

@@ -50,6 +50,7 @@
 #include <Eigen/Dense>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "libemb/integrators/dae_problem.h"
 #include "libemb/integrators/dae_integrator.h"
@@ -123,6 +124,7 @@ class GeneralizedAlphaSolver final : public DaeIntegrator {
   const Eigen::VectorXd& y() const override { return y_; }
   const Eigen::VectorXd& yp() const override { return yp_; }
   IntegratorStats stats() const override;
+  std::vector<StepLimiter> StepLimiters(int max_count) const override;
 
  private:
   enum class StepOutcome { kAccepted, kErrorTestFailed, kNewtonFailed, kSingular };
@@ -153,6 +155,7 @@ class GeneralizedAlphaSolver final : public DaeIntegrator {
   long steps_since_matrix_{0};
   double newton_rate_{20.0};  // last Newton contraction rate (first-iteration test)
   Eigen::VectorXd last_error_;  // weighted local error estimate of the last tested step
+  std::vector<long> limiter_count_;  // per component: accepted steps it limited
   // Scratch.
   Eigen::VectorXd r_, delta_;
   IntegratorStats stats_;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/integrators/klu_linear_solver.h"
@@ -64,7 +65,7 @@ struct IdaSolver::Impl {
   const DaeProblem* problem{nullptr};
   SUNContext ctx{nullptr};
   void* mem{nullptr};
-  N_Vector y{nullptr}, yp{nullptr}, id{nullptr}, scratch{nullptr};
+  N_Vector y{nullptr}, yp{nullptr}, id{nullptr}, scratch{nullptr}, error{nullptr};
   SUNMatrix a{nullptr};
   SUNLinearSolver ls{nullptr};
   std::exception_ptr pending;  // an exception thrown inside a callback, re-thrown later
@@ -76,7 +77,7 @@ struct IdaSolver::Impl {
     if (mem) IDAFree(&mem);
     if (ls) SUNLinSolFree(ls);
     if (a) SUNMatDestroy(a);
-    for (N_Vector v : {y, yp, id, scratch})
+    for (N_Vector v : {y, yp, id, scratch, error})
       if (v) N_VDestroy(v);
     if (ctx) SUNContext_Free(&ctx);
   }
@@ -190,6 +191,9 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
   if (options.initial_step > 0.0)
     CheckSetup(IDASetInitStep(m.mem, options.initial_step), "IDASetInitStep");
   if (options.max_step > 0.0) CheckSetup(IDASetMaxStep(m.mem, options.max_step), "IDASetMaxStep");
+  if (std::isfinite(options.stop_time) && !options.stop_at_outputs)
+    CheckSetup(IDASetStopTime(m.mem, options.stop_time), "IDASetStopTime");
+  limiter_count_.assign(n, 0);
   linear_solver_ = ResolveLinearSolverKind(
       options.linear_solver,
       problem.has_jacobian() && options.use_analytic_jacobian && problem.has_sparse_jacobian(), n,
@@ -203,7 +207,7 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
     jacobian_nonzeros_ = static_cast<long>(m.sparse.nonZeros());
     const auto nnz = static_cast<sunindextype>(std::max<Eigen::Index>(1, m.sparse.nonZeros()));
     m.a = CheckPtr(SUNSparseMatrix(n, n, nnz, CSC_MAT, m.ctx), "SUNSparseMatrix");
-    m.ls = MakeKluLinearSolver(m.ctx);
+    m.ls = MakeKluLinearSolver(m.ctx, problem.DenseBlocks());
     CheckSetup(IDASetLinearSolver(m.mem, m.ls, m.a), "IDASetLinearSolver");
     CheckSetup(IDASetJacFn(m.mem, &Impl::SparseJacobian), "IDASetJacFn");
   } else {
@@ -228,6 +232,8 @@ void IdaSolver::Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::
   View(m.y) = y0;
   View(m.yp) = yp0;
   CheckSetup(IDAReInit(m.mem, t0, m.y, m.yp), "IDAReInit");
+  if (std::isfinite(options_.stop_time) && !options_.stop_at_outputs)
+    CheckSetup(IDASetStopTime(m.mem, options_.stop_time), "IDASetStopTime");
   t_ = t0;
   y_ = y0;
   yp_ = yp0;
@@ -240,11 +246,45 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
     report.t = t_;
     return report;
   }
-  CheckSetup(IDASetStopTime(m.mem, t_out), "IDASetStopTime");
-  realtype t_reached = t_;
   m.last_message.clear();
   problem_.ClearRecoverableFailure();
-  const int flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_NORMAL);
+  realtype t_reached = t_;
+  int flag = 0;
+  long steps = 0;  // IDA's own max_num_steps counts per IDASolve call, i.e. per step here
+  if (options_.stop_at_outputs) {
+    CheckSetup(IDASetStopTime(m.mem, t_out), "IDASetStopTime");
+    // One step at a time to count what limits each step; IDA stops exactly at t_out.
+    while (flag >= 0 && t_reached < t_out) {
+      if (steps++ >= options_.max_num_steps) {
+        flag = IDA_TOO_MUCH_WORK;
+        break;
+      }
+      flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_ONE_STEP);
+      if (flag >= 0) RecordStepLimiter();
+    }
+  } else {
+    // Step past t_out if the error test allows (never past stop_time), then read the values
+    // at t_out off IDA's interpolating polynomial.
+    realtype t_cur = t_;
+    if (IDAGetCurrentTime(m.mem, &t_cur) < 0) t_cur = t_;
+    while (flag >= 0 && t_cur < t_out) {
+      if (steps++ >= options_.max_num_steps) {
+        flag = IDA_TOO_MUCH_WORK;
+        break;
+      }
+      flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_ONE_STEP);
+      if (flag < 0) break;
+      RecordStepLimiter();
+      t_cur = t_reached;
+      if (flag == IDA_TSTOP_RETURN) break;  // at stop_time: nothing beyond it
+    }
+    if (flag >= 0) {
+      const double t_end = std::min(t_out, static_cast<double>(t_cur));
+      CheckSetup(IDAGetDky(m.mem, t_end, 0, m.y), "IDAGetDky");
+      CheckSetup(IDAGetDky(m.mem, t_end, 1, m.yp), "IDAGetDky");
+      t_reached = t_end;
+    }
+  }
   if (m.pending) {
     std::exception_ptr e = m.pending;
     m.pending = nullptr;
@@ -258,8 +298,13 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
 
   report.status = StatusOf(flag);
   report.message = m.last_message;
-  if (linear_solver_ == LinearSolverKind::kKlu && !KluFactorizationOf(m.ls).message().empty())
-    report.message += " (" + KluFactorizationOf(m.ls).message() + ")";
+  if (flag == IDA_TOO_MUCH_WORK && report.message.empty()) {
+    std::ostringstream o;
+    o << options_.max_num_steps << " steps taken before reaching t = " << t_out;
+    report.message = o.str();
+  }
+  if (linear_solver_ == LinearSolverKind::kKlu && !KluSolverMessage(m.ls).empty())
+    report.message += " (" + KluSolverMessage(m.ls) + ")";
   if (!problem_.last_recoverable_failure().empty())
     report.message += "; last failed evaluation: " + problem_.last_recoverable_failure();
   realtype h = 0.0;
@@ -282,6 +327,26 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
     N_VDestroy(e);
   }
   return report;
+}
+
+void IdaSolver::RecordStepLimiter() {
+  Impl& m = *impl_;
+  N_Vector w = m.scratch;
+  if (m.error == nullptr) m.error = CheckPtr(N_VClone(m.scratch), "N_VClone");
+  if (IDAGetErrWeights(m.mem, w) < 0 || IDAGetEstLocalErrors(m.mem, m.error) < 0) return;
+  const auto e = View(m.error), wt = View(w), id = View(m.id);
+  Eigen::Index worst = -1;
+  double largest = -1.0;
+  for (Eigen::Index i = 0; i < e.size(); ++i) {
+    if (options_.suppress_algebraic && id[i] == 0.0) continue;
+    const double x = std::abs(e[i]) * wt[i];
+    if (x > largest) largest = x, worst = i;
+  }
+  if (worst >= 0) ++limiter_count_[worst];
+}
+
+std::vector<StepLimiter> IdaSolver::StepLimiters(int max_count) const {
+  return TopStepLimiters(limiter_count_, max_count);
 }
 
 IntegratorStats IdaSolver::stats() const {

@@ -5,6 +5,7 @@
 /// generalized-alpha so that the analyses handle both alike.
 
 #include <string>
+#include <vector>
 
 namespace emb {
 
@@ -51,5 +52,18 @@ struct IntegratorStats {
   int last_order{0};  ///< BDF order of the last step (IDA); 2 for generalized-alpha
   double last_step{0.0};
 };
+
+/// A component that limited the step size: in `steps` accepted steps it had the largest
+/// weighted local error estimate |e_i| w_i of all error-tested components (the one the
+/// step-size controller answered to).
+struct StepLimiter {
+  int component{-1};
+  long steps{0};
+};
+
+/// The `max_count` components with the most steps in `steps_per_component` (ties: lower
+/// index first), zero counts left out.
+std::vector<StepLimiter> TopStepLimiters(const std::vector<long>& steps_per_component,
+                                         int max_count);
 
 }  // namespace emb

@@ -70,7 +70,8 @@ const char* KluStatusName(int status) {
 
 }  // namespace
 
-KluFactorization::KluFactorization() : klu_(std::make_unique<Klu>()) {}
+KluFactorization::KluFactorization(bool refactor)
+    : klu_(std::make_unique<Klu>()), refactor_(refactor) {}
 KluFactorization::~KluFactorization() = default;
 
 KluStatus KluFactorization::Failed(const char* call) {
@@ -160,7 +161,7 @@ KluStatus KluFactorization::Factor(const CscView& a) {
     const KluStatus s = Analyze(a);
     if (s != KluStatus::kOk) return s;
   }
-  if (k.numeric != nullptr) {
+  if (k.numeric != nullptr && refactor_) {
     if (AcceptRefactor(a)) {
       ++stats_.refactorizations;
       return KluStatus::kOk;

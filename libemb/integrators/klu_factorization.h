@@ -72,7 +72,10 @@ class KluFactorization {
   /// matrix and corrects by iterating.
   static constexpr double kMinGrowthRatio = 1e-2;
 
-  KluFactorization();
+  /// `refactor`: follow the refactorisation policy of the file comment; false: factor every
+  /// matrix with pivoting (for matrices whose pivot order does not carry over, e.g. a Schur
+  /// complement whose entries move with cj through an eliminated block).
+  explicit KluFactorization(bool refactor = true);
   ~KluFactorization();
   KluFactorization(const KluFactorization&) = delete;
   KluFactorization& operator=(const KluFactorization&) = delete;
@@ -101,6 +104,7 @@ class KluFactorization {
   bool AcceptRefactor(const CscView& a);
 
   std::unique_ptr<Klu> klu_;
+  bool refactor_{true};
   KluStats stats_;
   std::string message_;
 };

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "libemb/common/error.h"
+#include "libemb/integrators/block_elimination_lu.h"
 
 namespace emb {
 
@@ -14,6 +15,7 @@ namespace {
 
 struct Content {
   KluFactorization klu;
+  std::unique_ptr<BlockEliminationLu> blocks;  // set: block elimination instead of klu
   int last_flag{SUNLS_SUCCESS};
 };
 
@@ -46,7 +48,8 @@ int Setup(SUNLinearSolver s, SUNMatrix a) {
   const CscView view{SUNSparseMatrix_Columns(a), SUNSparseMatrix_IndexPointers(a),
                      SUNSparseMatrix_IndexValues(a), SUNSparseMatrix_Data(a)};
   try {
-    return c.last_flag = FlagOf(c.klu.Factor(view), SUNLS_LUFACT_FAIL);
+    return c.last_flag = FlagOf(c.blocks ? c.blocks->Factor(view) : c.klu.Factor(view),
+                                SUNLS_LUFACT_FAIL);
   } catch (const std::exception&) {  // a malformed matrix; never across the C boundary
     return c.last_flag = SUNLS_ILL_INPUT;
   }
@@ -56,7 +59,9 @@ int Solve(SUNLinearSolver s, SUNMatrix, N_Vector x, N_Vector b, realtype) {
   Content& c = ContentOf(s);
   N_VScale(1.0, b, x);
   try {
-    return c.last_flag = FlagOf(c.klu.Solve(N_VGetArrayPointer(x)), SUNLS_PACKAGE_FAIL_REC);
+    double* data = N_VGetArrayPointer(x);
+    return c.last_flag =
+               FlagOf(c.blocks ? c.blocks->Solve(data) : c.klu.Solve(data), SUNLS_PACKAGE_FAIL_REC);
   } catch (const std::exception&) {  // no valid factors
     return c.last_flag = SUNLS_PACKAGE_FAIL_UNREC;
   }
@@ -72,8 +77,10 @@ int Free(SUNLinearSolver s) {
 
 }  // namespace
 
-SUNLinearSolver MakeKluLinearSolver(SUNContext ctx) {
+SUNLinearSolver MakeKluLinearSolver(SUNContext ctx,
+                                    const std::vector<std::vector<int>>& dense_blocks) {
   auto content = std::make_unique<Content>();
+  if (!dense_blocks.empty()) content->blocks = std::make_unique<BlockEliminationLu>(dense_blocks);
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (s == nullptr) EMB_THROW(InternalError, "SUNDIALS SUNLinSolNewEmpty returned NULL");
   s->ops->gettype = GetType;
@@ -89,7 +96,14 @@ SUNLinearSolver MakeKluLinearSolver(SUNContext ctx) {
 
 const KluFactorization& KluFactorizationOf(SUNLinearSolver solver) {
   EMB_CHECK(solver != nullptr && solver->ops->setup == Setup);
-  return ContentOf(solver).klu;
+  const Content& c = ContentOf(solver);
+  return c.blocks ? c.blocks->schur() : c.klu;
+}
+
+std::string KluSolverMessage(SUNLinearSolver solver) {
+  EMB_CHECK(solver != nullptr && solver->ops->setup == Setup);
+  const Content& c = ContentOf(solver);
+  return c.blocks ? c.blocks->message() : c.klu.message();
 }
 
 }  // namespace emb

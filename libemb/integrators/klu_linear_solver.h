@@ -17,15 +17,23 @@
 
 #include <sundials/sundials_linearsolver.h>
 
+#include <vector>
+
 #include "libemb/integrators/klu_factorization.h"
 
 namespace emb {
 
 /// A new solver for CSC SUNSparseMatrix iteration matrices; release with SUNLinSolFree.
-/// @throws InternalError if SUNDIALS cannot allocate it.
-SUNLinearSolver MakeKluLinearSolver(SUNContext ctx);
+/// With `dense_blocks` (DaeProblem::DenseBlocks) the matrix is factored by block elimination
+/// (block_elimination_lu.h): the dense blocks by dense LU, the rest by KLU on their Schur
+/// complement. @throws InternalError if SUNDIALS cannot allocate it.
+SUNLinearSolver MakeKluLinearSolver(SUNContext ctx,
+                                    const std::vector<std::vector<int>>& dense_blocks = {});
 
-/// The factorisation inside a solver made by MakeKluLinearSolver (counters, last message).
+/// The KLU factorisation inside a solver made by MakeKluLinearSolver (counters, last
+/// message): of the whole matrix, or of the Schur complement with dense blocks.
 const KluFactorization& KluFactorizationOf(SUNLinearSolver solver);
+/// Why the solver's last setup or solve failed (empty otherwise).
+std::string KluSolverMessage(SUNLinearSolver solver);
 
 }  // namespace emb

@@ -59,7 +59,8 @@ BeamPartSpec ReadBeamPart(const YAML::Node& node, const std::string& file) {
   s.placement.omega_W = r.GetVector3("angular_velocity", Eigen::Vector3d::Zero());
   // The keys of `model: rigid|cms` parts from a body file may stay in the entry, so that a
   // scene switches models with the one word `model:` (they are not used here).
-  for (const char* key : {"body_file", "modes", "fmax_hz", "dynamic_band_hz", "geometric_stiffening",
+  for (const char* key : {"body_file", "modes", "fmax_hz", "dynamic_band_hz", "basis",
+                          "quasi_static_relaxation", "geometric_stiffening",
                           "expect_mesh_hash", "modal_coordinates"})
     r.Optional(key);
   r.Finish();

@@ -33,6 +33,8 @@ using Eigen::Vector3d;
 struct Parts {
   std::map<std::string, mbs::FlexiblePart> from_body_files;
   std::map<std::string, mbs::BeamPart> beams;
+  /// Parts with `basis: installed` (the analysis builds their basis at the start).
+  std::vector<mbs::InstalledBasisRequest> installed_bases;
 };
 
 // A path in the scene relative to the scene file's directory.
@@ -68,7 +70,23 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   const std::string name = rb.GetString("name");
   const std::string path = ScenePath(file, rb.GetString("body_file"));
   inputs->push_back(path);
-  const mbs::FlexibleBodyOptions options = ReadFlexibleBodyOptions(rb, flexible);
+  mbs::FlexibleBodyOptions options = ReadFlexibleBodyOptions(rb, flexible);
+  const std::string basis = rb.GetString("basis", "free-free");
+  EMB_THROW_IF(basis != "free-free" && basis != "installed",
+               what << " basis: expected 'free-free' or 'installed', got '" << basis << "'");
+  if (basis == "installed" && flexible) {
+    EMB_THROW_IF(options.modes.dynamic_band_hz < 0.0,
+                 what << ": basis 'installed' needs dynamic_band_hz (the band of installed "
+                         "modes to keep dynamic) [Hz]");
+    mbs::InstalledBasisRequest request{name, options.modes.dynamic_band_hz};
+    request.relaxation = rb.GetDouble("quasi_static_relaxation", request.relaxation,
+                                      NumberRange::Closed(0.0, 10.0));
+    parts->installed_bases.push_back(request);
+    options.modes.dynamic_band_hz = -1.0;  // the installed basis decides what is quasi-static
+  } else {
+    EMB_THROW_IF(rb.Has("quasi_static_relaxation"),
+                 what << ": quasi_static_relaxation is for basis 'installed'");
+  }
   const std::string expect_mesh_hash = rb.GetString("expect_mesh_hash", "");
   mbs::PartPlacement placement;
   placement.p_WM = rb.GetVector3("position", Vector3d::Zero());
@@ -365,6 +383,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   if (const YAML::Node n = r.Optional("sensors")) ReadSensors(n, source, &scene.system);
   YAML::Node analysis_node = r.Optional("analysis");
   if (analysis_node) ReadAnalysis(analysis_node, source, &scene.analysis, &scene.steady_state);
+  scene.analysis.installed_bases = parts.installed_bases;
   if (const YAML::Node n = r.Optional("output")) ReadOutput(n, source, &scene.output);
   r.Finish();
   scene.system.Finalize();

@@ -9,9 +9,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "libemb/common/error.h"
 
@@ -225,6 +230,97 @@ TEST(IdaSolver, TooMuchWorkIsAStatusWithTimeAndComponent) {
   EXPECT_EQ(r.worst_component, 0);  // the algebraic one is not error-tested
   EXPECT_EQ(r.worst_component_name, "y[0]");
   EXPECT_FALSE(r.message.empty());
+}
+
+TEST(IdaSolver, OutputTimesAreInterpolatedAndLeaveTheStepsAlone) {
+  // 1000 output times or one: the same internal steps (IDA steps past an output time and
+  // the values there come from its interpolating polynomial); cutting the steps at every
+  // output time (stop_at_outputs) takes more.
+  const DecayDae dae(true);
+  IdaOptions o;
+  o.rtol = 1e-8;
+  o.atol = 1e-10;
+  o.stop_time = 1.0;
+  auto run = [&](int outputs, bool stop) {
+    IdaOptions oo = o;
+    oo.stop_at_outputs = stop;
+    IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), oo);
+    double worst = 0.0, worst_rate = 0.0;
+    for (int k = 1; k <= outputs; ++k) {
+      const double t = static_cast<double>(k) / outputs;
+      EXPECT_TRUE(ida.AdvanceTo(t).ok());
+      EXPECT_DOUBLE_EQ(ida.t(), t);
+      worst = std::max(worst, std::abs(ida.y()[0] - std::exp(-kRate * t)));
+      // y' from the polynomial too: the ODE y' = -k y holds at the output time.
+      worst_rate = std::max(worst_rate, std::abs(ida.yp()[0] + kRate * ida.y()[0]) / kRate);
+    }
+    return std::make_tuple(ida.stats().steps, worst, worst_rate);
+  };
+  const auto [one_steps, one_error, one_rate] = run(1, false);
+  const auto [many_steps, many_error, many_rate] = run(1000, false);
+  const auto [cut_steps, cut_error, cut_rate] = run(1000, true);
+  EXPECT_EQ(many_steps, one_steps);
+  EXPECT_GT(cut_steps, 2 * one_steps);
+  // The interpolant is as accurate as the steps (global error ~ 10 rtol, MatchesClosedForm).
+  EXPECT_LT(many_error, 10.0 * o.rtol);
+  EXPECT_LT(one_error, 10.0 * o.rtol);
+  EXPECT_LT(cut_error, 10.0 * o.rtol);
+  // Its derivative is one order less accurate than its value, ~ the local error over the
+  // step (O(h^q) against O(h^(q+1))): measured 160 rtol between the steps, 24 rtol at the
+  // steps' ends (BDF's own y'); 1000 rtol keeps margin and still fails an interpolant of the
+  // wrong order or at the wrong time (a first-order error here is ~1e-4).
+  constexpr double kRateTolerance = 1000.0;
+  EXPECT_LT(many_rate, kRateTolerance * o.rtol);
+  EXPECT_LT(one_rate, kRateTolerance * o.rtol);
+  EXPECT_LT(cut_rate, kRateTolerance * o.rtol);
+}
+
+TEST(IdaSolver, NeverStepsBeyondTheStopTime) {
+  // A residual that throws beyond t = 0.5 is never evaluated there with stop_time 0.5.
+  const DecayDae dae(true, /*throw_at_half=*/true);
+  IdaOptions o;
+  o.stop_time = 0.5;
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
+  for (double t : {0.1, 0.25, 0.4999, 0.5}) {
+    ASSERT_TRUE(ida.AdvanceTo(t).ok());
+    EXPECT_DOUBLE_EQ(ida.t(), t);
+  }
+}
+
+// y0' = -y0 (slow) and y1' = cos(w t) (y1 = sin(w t) / w, fast): the fast one sets the steps.
+class SlowAndFast final : public DaeProblem {
+ public:
+  static constexpr double kOmega = 200.0;  // [rad/s]
+
+ protected:
+  int DoSize() const override { return 2; }
+  bool DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                      const Eigen::Ref<const Eigen::VectorXd>& yp,
+                      Eigen::Ref<Eigen::VectorXd> r) const override {
+    r[0] = yp[0] + y[0];
+    r[1] = yp[1] - std::cos(kOmega * t);
+    return true;
+  }
+  Eigen::VectorXd DoDifferentialMask() const override { return Eigen::Vector2d(1.0, 1.0); }
+  std::string DoComponentName(int i) const override { return i == 0 ? "slow" : "fast"; }
+};
+
+TEST(IdaSolver, StepLimitersNameTheComponentThatSetsTheSteps) {
+  const SlowAndFast dae;
+  IdaOptions o;
+  o.rtol = 1e-6;
+  o.atol = 1e-9;
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(-1.0, 1.0), o);
+  ASSERT_TRUE(ida.AdvanceTo(1.0).ok());
+  const std::vector<StepLimiter> l = ida.StepLimiters(2);
+  ASSERT_FALSE(l.empty());
+  EXPECT_EQ(l[0].component, 1);
+  // The fast oscillation has 32 periods in the run; the slow decay limits only the first
+  // steps, before the oscillation's amplitude has built up in the error estimate.
+  EXPECT_GT(static_cast<double>(l[0].steps), 0.9 * static_cast<double>(ida.stats().steps));
+  long total = 0;
+  for (const StepLimiter& s : l) total += s.steps;
+  EXPECT_LE(total, ida.stats().steps);
 }
 
 TEST(IdaSolver, ExceptionInResidualIsRethrown) {

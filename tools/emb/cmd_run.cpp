@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
@@ -208,6 +209,19 @@ struct RunCommand {
       s.Add("error_test_failures", "error test failures", r.ida_stats.error_test_failures);
       s.Add("newton_failures", "Newton convergence failures",
             r.ida_stats.nonlinear_convergence_failures);
+      nlohmann::json limiters = nlohmann::json::array();
+      std::string limiter_text;
+      for (const auto& [name, share] : r.step_limiters) {
+        limiters.push_back({{"unknown", name}, {"share", share}});
+        std::ostringstream o;
+        o << (limiter_text.empty() ? "" : "; ") << name << " " << std::lround(100.0 * share)
+          << " %";
+        limiter_text += o.str();
+      }
+      if (out.json)
+        s.Add("step_limiters", "step size limited by", limiters);
+      else if (!limiter_text.empty())
+        s.Add("step_limiters", "step size limited by", limiter_text);
     } else {
       s.Add("newton_iterations", "Newton iterations", r.newton_iterations);
     }

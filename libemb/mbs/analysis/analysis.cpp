@@ -127,7 +127,30 @@ PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
       AssemblePositions(run.system, a.q, settings.t_start, &ws2, settings.assembly);
   if (!a2.converged) EMB_THROW(InputError, "the model cannot be assembled: " << a2.message);
   run.q0 = a2.q;
-  if (settings.type == AnalysisType::kDynamic || settings.type == AnalysisType::kAssemble) {
+  const bool moving =
+      settings.type == AnalysisType::kDynamic || settings.type == AnalysisType::kAssemble;
+  if (!settings.installed_bases.empty()) {
+    // The installed modes about the assembled start (with its velocities: centrifugal terms).
+    Eigen::VectorXd v0 = Eigen::VectorXd::Zero(run.system.layout().nv());
+    if (moving)
+      v0 = ProjectVelocities(run.system, run.q0, run.system.InitialVelocities(),
+                             settings.t_start, &ws2)
+               .v;
+    const AccelerationSolution acc =
+        SolveAccelerations(run.system, run.q0, v0, settings.t_start, &ws2);
+    const InstalledBases ib = CalcInstalledBases(run.system, run.q0, v0, settings.t_start,
+                                                 acc.lambda, &ws2, settings.installed_bases);
+    System changed = run.system.WithElasticBases(ib.changes);
+    run.q0 = MapElasticCoordinates(run.system, changed, ib.changes, run.q0, true);
+    run.system = std::move(changed);
+    run.bases = ib.reports;
+    ws2 = ConstraintWorkspace(run.system);
+    const AssemblyResult a3 =
+        AssemblePositions(run.system, run.q0, settings.t_start, &ws2, settings.assembly);
+    if (!a3.converged) EMB_THROW(InputError, "the model cannot be assembled: " << a3.message);
+    run.q0 = a3.q;
+  }
+  if (moving) {
     const VelocityProjection p = ProjectVelocities(
         run.system, run.q0, run.system.InitialVelocities(), settings.t_start, &ws2);
     run.v0 = p.v;
@@ -163,22 +186,25 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
   s.vdot = vdot;
   s.lambda = lambda;
   const auto bodies = CalcBodyKinematics(system, q, v);
-  const ConstraintEval c = CalcConstraints(system, bodies, t, workspace);
+  std::vector<MarkerKinematics> markers;
+  CalcAllMarkerKinematics(system, bodies, &markers);
+  ConstraintEval c;
+  CalcConstraints(system, markers, t, workspace, &c);
   s.reactions = CalcJointReactions(system, bodies, lambda);
   const auto& forces = system.force_elements();
   s.force_loads.setConstant(static_cast<Eigen::Index>(forces.size()), 6,
                             std::numeric_limits<double>::quiet_NaN());
   for (std::size_t k = 0; k < forces.size(); ++k) {
-    const ForceContext ctx{&system, &bodies, t, workspace,
-                           system.force_angle_slot(static_cast<int>(k))};
+    ForceContext ctx{&system, &bodies, t, workspace, system.force_angle_slot(static_cast<int>(k))};
+    ctx.markers = &markers;
     Eigen::Matrix<double, 6, 1> load;
     if (forces[k]->CalcLoad(ctx, &load)) s.force_loads.row(static_cast<Eigen::Index>(k)) = load;
   }
   const auto& sensors = system.sensors();
   s.sensors.resize(static_cast<Eigen::Index>(sensors.size()), 6);
   for (std::size_t k = 0; k < sensors.size(); ++k) {
-    const MarkerKinematics I = CalcMarkerKinematics(system, bodies, sensors[k].marker_i);
-    const MarkerKinematics J = CalcMarkerKinematics(system, bodies, sensors[k].marker_j);
+    const MarkerKinematics& I = markers[sensors[k].marker_i];
+    const MarkerKinematics& J = markers[sensors[k].marker_j];
     s.sensors.row(static_cast<Eigen::Index>(k)) << (J.R_WM.transpose() * (I.p_WM - J.p_WM)).transpose(),
         RotationVectorFromRotation(J.R_WM.transpose() * I.R_WM).transpose();
   }
@@ -360,6 +386,7 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
   if (options.initial_step <= 0.0 && settings.initial_step_fraction > 0.0)
     options.initial_step = settings.initial_step_fraction *
                            std::min(settings.output_step, settings.t_end - settings.t_start);
+  options.stop_time = settings.t_end;
   r.atol = options.atol;
   r.multiplier_atol = options.algebraic_atol;
   const std::unique_ptr<DaeIntegrator> integrator =
@@ -421,6 +448,11 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
         (ida.t() - settings.t_start) / std::max(1e-300, settings.t_end - settings.t_start));
   }
   r.ida_stats = ida.stats();
+  constexpr int kReportedStepLimiters = 5;
+  for (const StepLimiter& l : ida.StepLimiters(kReportedStepLimiters))
+    r.step_limiters.emplace_back(
+        dae.ComponentName(l.component),
+        static_cast<double>(l.steps) / std::max(1L, r.ida_stats.steps));
   return r;
 }
 

@@ -16,11 +16,13 @@
 
 #include <Eigen/Dense>
 #include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
 #include "libemb/common/progress.h"
 #include "libemb/integrators/ida_solver.h"
+#include "libemb/mbs/analysis/installed_basis.h"
 #include "libemb/mbs/constraints/assembly.h"
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/mbs/core/dynamics.h"
@@ -119,6 +121,10 @@ struct AnalysisSettings {
   /// Dynamic analysis: how flexible bodies start. kQuasiStatic removes the free vibration
   /// an undeformed start excites (issue 19); a start that does not converge is an error.
   ElasticStart elastic_start{ElasticStart::kAsGiven};
+  /// Flexible bodies to give an installed basis (installed_basis.h) at the assembled start
+  /// before anything else runs: their modal coordinates become the installed modes of the
+  /// model up to each body's band plus massless static responses at their loaded markers.
+  std::vector<InstalledBasisRequest> installed_bases;
 };
 
 /// A prepared run: the (possibly reduced) system and consistent initial values.
@@ -128,6 +134,8 @@ struct PreparedRun {
   Eigen::VectorXd q0, v0;
   std::vector<std::string> warnings;
   std::string start_note;  ///< the quasi-static elastic start, when asked for
+  /// What the installed bases (AnalysisSettings::installed_bases) kept, per body.
+  std::vector<InstalledBasisReport> bases;
 };
 
 /// Assembles and checks the model. @throws InputError if the assembly does not close
@@ -199,6 +207,9 @@ struct RunResult {
   int newton_iterations{0};  ///< kinematic/static: total
   StaticReport static_report;  ///< static/quasi-static: the last (or failed) solve
   bool stopped{false};  ///< dynamic analysis: ended before t_end by the caller's StopFn
+  /// Dynamic analysis: the unknowns that limited the step size most often (named as in
+  /// GglDae::ComponentName) with the share of the accepted steps each limited.
+  std::vector<std::pair<std::string, double>> step_limiters;
   bool ok() const { return status == RunStatus::kSuccess; }
 };
 

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "libemb/common/error.h"
+#include "libemb/mbs/core/elastic_model.h"
 #include "libemb/mbs/core/dynamics.h"
 #include "libemb/mbs/forces/force_jacobian.h"
 #include "libemb/mbs/core/rotation.h"
@@ -13,7 +15,25 @@ GglDae::GglDae(const System& system)
     : system_(system),
       layout_(system.layout().nq(), system.layout().nv(), system.num_equations(),
               system.layout().num_moving()),
-      workspace_(system) {}
+      ws_(std::make_unique<GglWorkspace>(system)) {}
+
+GglDae::~GglDae() = default;
+
+GglWorkspace::GglWorkspace(const System& system)
+    : constraint(system), flexible(static_cast<std::size_t>(system.num_bodies())) {}
+
+bool GglDae::UpdateKinematics(const Eigen::Ref<const Eigen::VectorXd>& y) const {
+  const StateLayout& L = system_.layout();
+  const GglLayout& G = layout_;
+  const auto q = y.segment(G.q(), G.nq());
+  const auto v = y.segment(G.v(), G.nv());
+  for (int b = 1; b < system_.num_bodies(); ++b)
+    if (!(q.segment<4>(L.quaternion(b)).norm() > 0.0)) return false;  // retry smaller step
+  if (!q.allFinite() || !v.allFinite()) return false;
+  CalcBodyKinematics(system_, q, v, &ws_->bodies);
+  CalcAllMarkerKinematics(system_, ws_->bodies, &ws_->markers);
+  return true;
+}
 
 namespace {
 
@@ -107,11 +127,6 @@ class GglForceSink final : public ForceJacobianSink {
   const BodyBlockEmitter& emit_;
 };
 
-// The map of one side of a kernel term to its body's coordinates (6 x body_nv): the marker
-// map on a flexible body (kinematics.h), I6 on a rigid one.
-Eigen::MatrixXd TermMap(const MarkerKinematics* M) {
-  return M ? M->map : Eigen::MatrixXd(Eigen::MatrixXd::Identity(6, 6));
-}
 
 }  // namespace
 
@@ -120,24 +135,44 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
                             Eigen::Ref<Eigen::VectorXd> r) const {
   const StateLayout& L = system_.layout();
   const GglLayout& G = layout_;
-  const Eigen::VectorXd q = y.segment(G.q(), G.nq());
-  const Eigen::VectorXd v = y.segment(G.v(), G.nv());
-  const Eigen::VectorXd vdot = yp.segment(G.v(), G.nv());
+  GglWorkspace& W = *ws_;
+  if (!UpdateKinematics(y)) return false;
+  const auto q = y.segment(G.q(), G.nq());
+  const auto v = y.segment(G.v(), G.nv());
+  const auto vdot = yp.segment(G.v(), G.nv());
   const auto lambda = y.segment(G.lambda(), G.m());
   const auto mu = y.segment(G.mu(), G.num_mu());
-  for (int b = 1; b < system_.num_bodies(); ++b)
-    if (!(q.segment<4>(L.quaternion(b)).norm() > 0.0)) return false;  // retry smaller step
-  if (!q.allFinite() || !v.allFinite()) return false;
-  const auto bodies = CalcBodyKinematics(system_, q, v);
-  const ConstraintEval c = CalcConstraints(system_, bodies, t, &workspace_);
+  CalcConstraints(system_, W.markers, t, &W.constraint, &W.constraints);
+  const ConstraintEval& c = W.constraints;
+
+  // Generalised forces: gravity and gyroscopic terms, flexible bodies' terms (with their mass
+  // matrices, kept for the dynamic rows), force elements.
+  W.f.setZero(L.nv());
+  for (int b = 1; b < system_.num_bodies(); ++b) {
+    const RigidBody& body = system_.body(b);
+    const BodyKinematics& k = W.bodies[b];
+    const int ne = L.num_elastic(b);
+    if (ne) {
+      const Eigen::Vector3d a_B =
+          k.R_WB.transpose() * (vdot.segment<3>(L.velocity(b)) - system_.gravity());
+      FlexibleTerms& ft = W.flexible[b];
+      CalcFlexibleTerms(*body.elastic, k.p_WB, k.R_WB, k.v_WB, k.omega_B, k.eta, k.eta_dot,
+                        system_.gravity(), a_B, kFlexibleMass | kFlexibleForce, nullptr, &ft);
+      W.f.segment<6>(L.velocity(b)) += ft.force.head<6>();
+      W.f.segment(L.elastic_v(b), ne) += ft.force.tail(ne);
+      continue;
+    }
+    W.f.segment<3>(L.velocity(b)) += body.mass * system_.gravity();
+    W.f.segment<3>(L.angular_velocity(b)) -= k.omega_B.cross(body.inertia_B * k.omega_B);
+  }
+  AddElementForces(system_, W.bodies, W.markers, t, &W.constraint, W.f);
 
   // Kinematic rows: q' - H v + B^T mu, B^T mu = X_b^T (C^T mu)_b + [0; e_b mu_b].
-  const Eigen::VectorXd w = c.jacobian.transpose() * mu.head(G.m());
-  const Eigen::VectorXd f = CalcGeneralizedForces(system_, bodies, t, &workspace_, &vdot);
-  const Eigen::VectorXd reaction = c.jacobian.transpose() * lambda;
+  W.w.noalias() = c.jacobian.transpose() * mu.head(G.m());
+  W.reaction.noalias() = c.jacobian.transpose() * lambda;
   for (int b = 1; b < system_.num_bodies(); ++b) {
     const Eigen::Vector4d e = q.segment<4>(L.quaternion(b));
-    const auto wb = w.segment<6>(L.velocity(b));
+    const auto wb = W.w.segment<6>(L.velocity(b));
     r.segment<3>(G.q() + L.position(b)) =
         yp.segment<3>(G.q() + L.position(b)) - v.segment<3>(L.velocity(b)) + wb.head<3>();
     r.segment<4>(G.q() + L.quaternion(b)) =
@@ -151,28 +186,28 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
       // eta' - eta_dot + (C^T mu)_eta; M(eta) [vdot_b; eta''] - f + C^T lambda.
       r.segment(G.q() + L.elastic_q(b), ne) = yp.segment(G.q() + L.elastic_q(b), ne) -
                                               v.segment(L.elastic_v(b), ne) +
-                                              w.segment(L.elastic_v(b), ne);
-      Eigen::VectorXd a(6 + ne);
-      a << vdot.segment<6>(L.velocity(b)), vdot.segment(L.elastic_v(b), ne);
-      const Eigen::VectorXd Ma =
-          CalcBodyFlexibleTerms(system_, bodies[b], b, nullptr, false).mass * a;
+                                              W.w.segment(L.elastic_v(b), ne);
+      W.accel.resize(6 + ne);
+      W.accel << vdot.segment<6>(L.velocity(b)), vdot.segment(L.elastic_v(b), ne);
+      W.Ma.noalias() = W.flexible[b].mass * W.accel;
       r.segment<6>(G.v() + L.velocity(b)) =
-          Ma.head<6>() - f.segment<6>(L.velocity(b)) + reaction.segment<6>(L.velocity(b));
-      r.segment(G.v() + L.elastic_v(b), ne) = Ma.tail(ne) - f.segment(L.elastic_v(b), ne) +
-                                              reaction.segment(L.elastic_v(b), ne);
+          W.Ma.head<6>() - W.f.segment<6>(L.velocity(b)) + W.reaction.segment<6>(L.velocity(b));
+      r.segment(G.v() + L.elastic_v(b), ne) = W.Ma.tail(ne) - W.f.segment(L.elastic_v(b), ne) +
+                                              W.reaction.segment(L.elastic_v(b), ne);
       continue;
     }
     // Dynamic rows: M v' - f + C^T lambda, M = diag(m I, J_B) per body.
     const RigidBody& body = system_.body(b);
     r.segment<3>(G.v() + L.velocity(b)) = body.mass * yp.segment<3>(G.v() + L.velocity(b)) -
-                                          f.segment<3>(L.velocity(b)) +
-                                          reaction.segment<3>(L.velocity(b));
+                                          W.f.segment<3>(L.velocity(b)) +
+                                          W.reaction.segment<3>(L.velocity(b));
     r.segment<3>(G.v() + L.angular_velocity(b)) =
         body.inertia_B * yp.segment<3>(G.v() + L.angular_velocity(b)) -
-        f.segment<3>(L.angular_velocity(b)) + reaction.segment<3>(L.angular_velocity(b));
+        W.f.segment<3>(L.angular_velocity(b)) + W.reaction.segment<3>(L.angular_velocity(b));
   }
   // Velocity and position constraints.
-  r.segment(G.lambda(), G.m()) = c.jacobian * v + c.phi_t;
+  r.segment(G.lambda(), G.m()).noalias() = c.jacobian * v;
+  r.segment(G.lambda(), G.m()) += c.phi_t;
   r.segment(G.mu(), G.m()) = c.phi;
   return r.allFinite();
 }
@@ -180,15 +215,15 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
 void GglDae::DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                             const Eigen::Ref<const Eigen::VectorXd>& yp,
                             Eigen::Ref<Eigen::MatrixXd> J) const {
-  assembler_.BeginDense(J);
-  AssembleJacobian(t, cj, y, yp, &assembler_);
+  ws_->assembler.BeginDense(J);
+  AssembleJacobian(t, cj, y, yp, &ws_->assembler);
 }
 
 void GglDae::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                                   const Eigen::Ref<const Eigen::VectorXd>& yp,
                                   SparseMatrixd* J) const {
-  assembler_.BeginSparse(J, layout_.size(), layout_.size());
-  AssembleJacobian(t, cj, y, yp, &assembler_);
+  ws_->assembler.BeginSparse(J, layout_.size(), layout_.size());
+  AssembleJacobian(t, cj, y, yp, &ws_->assembler);
 }
 
 void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
@@ -196,14 +231,17 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
                               MatrixAssembler* A) const {
   const StateLayout& L = system_.layout();
   const GglLayout& G = layout_;
+  GglWorkspace& W = *ws_;
   const int m = G.m();
-  const Eigen::VectorXd q = y.segment(G.q(), G.nq());
-  const Eigen::VectorXd v = y.segment(G.v(), G.nv());
+  const bool evaluable = UpdateKinematics(y);
+  EMB_CHECK(evaluable);
+  const auto q = y.segment(G.q(), G.nq());
+  const auto v = y.segment(G.v(), G.nv());
   const auto lambda = y.segment(G.lambda(), m);
   const auto mu = y.segment(G.mu(), G.num_mu());
-  const auto bodies = CalcBodyKinematics(system_, q, v);
-  const ConstraintEval c = CalcConstraints(system_, bodies, t, &workspace_);
-  const Eigen::VectorXd w_all = c.jacobian.transpose() * mu.head(m);
+  CalcConstraints(system_, W.markers, t, &W.constraint, &W.constraints);
+  W.w.noalias() = W.constraints.jacobian.transpose() * mu.head(m);
+  const Eigen::VectorXd& w_all = W.w;
   std::vector<Matrix67> X(system_.num_bodies());
   for (int b = 1; b < system_.num_bodies(); ++b) X[b] = MakeBodyMap(q.segment<4>(L.quaternion(b)));
   const BodyBlockEmitter emit(L, G, X, A);
@@ -211,6 +249,7 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
   // Per body: cj I and the derivative of the maps in the kinematic rows, H, the
   // unit-quaternion multiplier, cj M and the gyroscopic term (flexible bodies: cj M(eta)
   // and the derivatives of their inertia, elastic and gravity terms).
+  const auto vdot = yp.segment(G.v(), G.nv());
   for (int b = 1; b < system_.num_bodies(); ++b) {
     const Eigen::Vector4d e = q.segment<4>(L.quaternion(b));
     const double n2 = e.squaredNorm();
@@ -233,12 +272,18 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
     const int ne = L.num_elastic(b);
     if (ne) {
       const int eq = G.q() + L.elastic_q(b), ev = G.v() + L.elastic_v(b);
-      A->AddBlock(eq, eq, cj * Eigen::MatrixXd::Identity(ne, ne));
-      A->AddBlock(eq, ev, -Eigen::MatrixXd::Identity(ne, ne));
-      Eigen::VectorXd accel(6 + ne);
-      accel << yp.segment<6>(G.v() + L.velocity(b)), yp.segment(G.v() + L.elastic_v(b), ne);
-      const Eigen::VectorXd vdot = yp.segment(G.v(), G.nv());
-      const FlexibleTerms ft = CalcBodyFlexibleTerms(system_, bodies[b], b, &vdot, true, &accel);
+      for (int j = 0; j < ne; ++j) {
+        A->Add(eq + j, eq + j, cj);
+        A->Add(eq + j, ev + j, -1.0);
+      }
+      W.accel.resize(6 + ne);
+      W.accel << yp.segment<6>(G.v() + L.velocity(b)), yp.segment(G.v() + L.elastic_v(b), ne);
+      const BodyKinematics& k = W.bodies[b];
+      const Eigen::Vector3d a_B =
+          k.R_WB.transpose() * (vdot.segment<3>(L.velocity(b)) - system_.gravity());
+      FlexibleTerms& ft = W.flexible[b];
+      CalcFlexibleTerms(*system_.body(b).elastic, k.p_WB, k.R_WB, k.v_WB, k.omega_B, k.eta,
+                        k.eta_dot, system_.gravity(), a_B, kFlexibleDerivatives, &W.accel, &ft);
       // Residual rows M(eta) a - f: d/da = M - df/da, d/dv = -df/dv, d/dx = d(M a)/dx - df/dx.
       emit.Block(b, false, b, false, cj * (ft.mass - ft.force_accel) - ft.damping);
       emit.Block(b, false, b, true, ft.inertia_stiffness - ft.stiffness);
@@ -259,78 +304,85 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
   //   dynamic rows:     lambda_k H_st X_t          (C^T lambda)
   //   lambda row k:     (sum_s v_s^T H_st) X_t,  G_t
   //   mu row k:         G_t X_t;   columns lambda_k / mu_k: G_s^T / X_s^T G_s^T.
-  // The first two are summed over consecutive terms between the same two rigid bodies (the
-  // equations of one joint) and emitted once per run: one set of 7x7 blocks per joint
-  // instead of per equation. A term with a marker on a flexible body works in the body's
-  // coordinates through [I E] (constraint_eval.h) and is emitted on its own.
+  // The first two are linear in the multipliers, so they are summed over consecutive terms
+  // between the same two markers' frames (the equations of one joint) and emitted once per
+  // run. On a flexible side the sum goes through the marker map, map_s^T (sum H) map_t, and
+  // the curvature of the map, d(map^T g)/dx, is linear in the wrench g: one
+  // CalcMarkerCurvature per run and side with the summed lambda_k G_k,s (dynamic rows) and
+  // mu_k G_k,s (kinematic rows), not one per equation.
   using Matrix12 = Eigen::Matrix<double, 12, 12>;
-  Matrix12 H_lambda = Matrix12::Zero(), H_mu = Matrix12::Zero();
-  int run_body[2] = {-1, -1};
-  auto emit_hessians = [&](const int body[2], const Matrix12& Hl, const Matrix12& Hm,
-                           const Eigen::MatrixXd* Ts) {
+  using Vector6 = Eigen::Matrix<double, 6, 1>;
+  struct Run {
+    int body[2]{-1, -1};
+    const MarkerKinematics* marker[2]{nullptr, nullptr};
+    Matrix12 H_lambda{Matrix12::Zero()}, H_mu{Matrix12::Zero()};
+    Vector6 g_lambda[2]{Vector6::Zero(), Vector6::Zero()}, g_mu[2]{Vector6::Zero(), Vector6::Zero()};
+    bool open() const { return body[0] >= 0; }
+  } run;
+  auto side_map = [](const MarkerKinematics* M, const Eigen::Matrix<double, 6, 6>& H_left,
+                     const MarkerKinematics* Mu) {
+    // map_s^T H map_u with the identity for a rigid side.
+    Eigen::MatrixXd out = H_left;
+    if (Mu) out = out * Mu->map;
+    if (M) out = M->map.transpose() * out;
+    return out;
+  };
+  auto flush = [&] {
+    if (!run.open()) return;
     for (int s = 0; s < 2; ++s) {
-      if (L.is_ground(body[s])) continue;
+      if (L.is_ground(run.body[s])) continue;
       for (int u = 0; u < 2; ++u) {
-        if (L.is_ground(body[u])) continue;
-        const Eigen::MatrixXd hm = Ts[s].transpose() * Hm.block<6, 6>(6 * s, 6 * u) * Ts[u];
-        const Eigen::MatrixXd hl = Ts[s].transpose() * Hl.block<6, 6>(6 * s, 6 * u) * Ts[u];
-        emit.Block(body[s], true, body[u], true, hm);
-        emit.Block(body[s], false, body[u], true, hl);
+        if (L.is_ground(run.body[u])) continue;
+        emit.Block(run.body[s], true, run.body[u], true,
+                   side_map(run.marker[s], run.H_mu.block<6, 6>(6 * s, 6 * u), run.marker[u]));
+        emit.Block(run.body[s], false, run.body[u], true,
+                   side_map(run.marker[s], run.H_lambda.block<6, 6>(6 * s, 6 * u), run.marker[u]));
+      }
+      if (run.marker[s]) {
+        emit.Block(run.body[s], false, run.body[s], true,
+                   CalcMarkerCurvature(*run.marker[s], run.g_lambda[s]));
+        emit.Block(run.body[s], true, run.body[s], true,
+                   CalcMarkerCurvature(*run.marker[s], run.g_mu[s]));
       }
     }
+    run = Run{};
   };
-  const Eigen::MatrixXd rigid_maps[2] = {TermMap(nullptr), TermMap(nullptr)};
-  auto flush = [&] {
-    if (run_body[0] < 0) return;
-    emit_hessians(run_body, H_lambda, H_mu, rigid_maps);
-    H_lambda.setZero();
-    H_mu.setZero();
-    run_body[0] = run_body[1] = -1;
-  };
-  VisitKernelTerms(system_, bodies, [&](const KernelTerm& term) {
+  VisitKernelTerms(system_, W.markers, [&](const KernelTerm& term) {
     const int k = term.equation;
     const int body[2] = {term.body_i, term.body_j};
-    const bool flexible = term.marker[0] != nullptr || term.marker[1] != nullptr;
-    const Eigen::MatrixXd T[2] = {TermMap(term.marker[0]), TermMap(term.marker[1])};
-    if (flexible) {
+    const bool same = run.open() && body[0] == run.body[0] && body[1] == run.body[1] &&
+                      term.marker[0] == run.marker[0] && term.marker[1] == run.marker[1];
+    if (!same) {
       flush();
-      emit_hessians(body, lambda[k] * term.hessian, mu[k] * term.hessian, T);
-      // The curvature of the marker maps: d(map^T g)/dx at fixed g, in the dynamic rows
-      // (g = lambda_k gradient) and the kinematic rows (g = mu_k gradient).
-      for (int s = 0; s < 2; ++s) {
-        if (!term.marker[s]) continue;
-        const Eigen::MatrixXd K =
-            CalcMarkerCurvature(*term.marker[s], term.gradient.segment<6>(6 * s).transpose());
-        emit.Block(body[s], false, body[s], true, lambda[k] * K);
-        emit.Block(body[s], true, body[s], true, mu[k] * K);
-      }
-    } else {
-      if (body[0] != run_body[0] || body[1] != run_body[1]) {
-        flush();
-        run_body[0] = body[0];
-        run_body[1] = body[1];
-      }
-      H_lambda += lambda[k] * term.hessian;
-      H_mu += mu[k] * term.hessian;
+      run.body[0] = body[0], run.body[1] = body[1];
+      run.marker[0] = term.marker[0], run.marker[1] = term.marker[1];
+    }
+    run.H_lambda += lambda[k] * term.hessian;
+    run.H_mu += mu[k] * term.hessian;
+    for (int s = 0; s < 2; ++s) {
+      if (!term.marker[s]) continue;
+      run.g_lambda[s] += lambda[k] * term.gradient.segment<6>(6 * s).transpose();
+      run.g_mu[s] += mu[k] * term.gradient.segment<6>(6 * s).transpose();
     }
     // Velocities of the two sides' virtual bodies: map [v_b; eta'_b].
     Eigen::Matrix<double, 12, 1> v_term = Eigen::Matrix<double, 12, 1>::Zero();
-    Eigen::VectorXd vb[2];
     for (int s = 0; s < 2; ++s) {
       if (L.is_ground(body[s])) continue;
-      const int ne = L.num_elastic(body[s]);
-      vb[s].resize(6 + ne);
-      vb[s].head<6>() = v.segment<6>(L.velocity(body[s]));
-      if (ne) vb[s].tail(ne) = v.segment(L.elastic_v(body[s]), ne);
-      v_term.segment<6>(6 * s) = T[s] * vb[s];
+      if (term.marker[s])
+        v_term.segment<6>(6 * s) = VirtualBodyVelocity(*term.marker[s]);
+      else
+        v_term.segment<6>(6 * s) = v.segment<6>(L.velocity(body[s]));
     }
     const Eigen::Matrix<double, 1, 12> v_H = v_term.transpose() * term.hessian;
     for (int s = 0; s < 2; ++s) {
       if (L.is_ground(body[s])) continue;
-      const Eigen::RowVectorXd g = term.gradient.segment<6>(6 * s) * T[s];
-      Eigen::RowVectorXd dv_x = v_H.segment<6>(6 * s) * T[s];
+      const MarkerKinematics* M = term.marker[s];
+      const Eigen::Matrix<double, 1, 6> gs = term.gradient.segment<6>(6 * s);
+      const Eigen::RowVectorXd g = M ? Eigen::RowVectorXd(gs * M->map) : Eigen::RowVectorXd(gs);
+      Eigen::RowVectorXd dv_x =
+          M ? Eigen::RowVectorXd(v_H.segment<6>(6 * s) * M->map) : Eigen::RowVectorXd(v_H.segment<6>(6 * s));
       // The velocity constraint g map V also moves with the map: g d(map V)/dx.
-      if (term.marker[s]) dv_x += term.gradient.segment<6>(6 * s) * term.marker[s]->map_rate;
+      if (M) dv_x += gs * M->map_rate;
       emit.Row(G.lambda() + k, body[s], true, dv_x);
       emit.Row(G.lambda() + k, body[s], false, g);
       emit.Row(G.mu() + k, body[s], true, g);
@@ -344,8 +396,9 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
   GglForceSink sink(emit);
   const auto& forces = system_.force_elements();
   for (std::size_t k = 0; k < forces.size(); ++k) {
-    const ForceContext ctx{&system_, &bodies, t, &workspace_,
-                           system_.force_angle_slot(static_cast<int>(k))};
+    ForceContext ctx{&system_, &W.bodies, t, &W.constraint,
+                     system_.force_angle_slot(static_cast<int>(k))};
+    ctx.markers = &W.markers;
     forces[k]->AddForceJacobian(ctx, &sink);
   }
   A->Finish();
@@ -360,6 +413,20 @@ Eigen::VectorXd GglDae::DoDifferentialMask() const {
     for (int j = 0; j < L.num_elastic(b); ++j)
       if (system_.body(b).elastic->is_quasi_static(j)) mask[layout_.v() + L.elastic_v(b) + j] = 0.0;
   return mask;
+}
+
+std::vector<std::vector<int>> GglDae::DoDenseBlocks() const {
+  const StateLayout& L = system_.layout();
+  std::vector<std::vector<int>> blocks;
+  for (int b = 1; b < system_.num_bodies(); ++b) {
+    const int ne = L.num_elastic(b);
+    if (ne == 0) continue;
+    std::vector<int> unknowns;
+    for (int j = 0; j < ne; ++j) unknowns.push_back(layout_.q() + L.elastic_q(b) + j);
+    for (int j = 0; j < ne; ++j) unknowns.push_back(layout_.v() + L.elastic_v(b) + j);
+    blocks.push_back(std::move(unknowns));
+  }
+  return blocks;
 }
 
 std::string GglDae::DoComponentName(int i) const {

@@ -30,10 +30,12 @@
 /// force terms.
 
 #include <Eigen/Dense>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "libemb/integrators/dae_problem.h"
+#include "libemb/mbs/analysis/ggl_workspace.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
 
 namespace emb::mbs {
@@ -59,11 +61,12 @@ class GglLayout {
   int nq_{0}, nv_{0}, m_{0}, nb_{0};
 };
 
-/// The GGL DAE of a finalized System. Holds a mutable ConstraintWorkspace (continuous
-/// joint angles), so one instance serves one integration at a time.
+/// The GGL DAE of a finalized System. Owns its evaluation scratch (ggl_workspace.h), with the
+/// continuous joint angles, so one instance serves one integration at a time.
 class GglDae final : public DaeProblem {
  public:
   explicit GglDae(const System& system);
+  ~GglDae() override;
 
   const GglLayout& ggl_layout() const { return layout_; }
 
@@ -72,7 +75,7 @@ class GglDae final : public DaeProblem {
                          const Eigen::VectorXd& vdot, const Eigen::VectorXd& lambda,
                          Eigen::VectorXd* y, Eigen::VectorXd* yp) const;
 
-  ConstraintWorkspace& workspace() const { return workspace_; }
+  ConstraintWorkspace& workspace() const { return ws_->constraint; }
 
  protected:
   int DoSize() const override { return layout_.size(); }
@@ -84,6 +87,9 @@ class GglDae final : public DaeProblem {
                       const Eigen::Ref<const Eigen::VectorXd>& yp,
                       Eigen::Ref<Eigen::MatrixXd> jacobian) const override;
   Eigen::VectorXd DoDifferentialMask() const override;
+  /// One block per flexible body: its modal coordinates and rates (dense among themselves
+  /// through the mass, stiffness and geometric-stiffness terms and the marker maps).
+  std::vector<std::vector<int>> DoDenseBlocks() const override;
   std::string DoComponentName(int i) const override;
   bool DoHasSparseJacobian() const override { return true; }
   void DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
@@ -95,11 +101,14 @@ class GglDae final : public DaeProblem {
   void AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                         const Eigen::Ref<const Eigen::VectorXd>& yp,
                         MatrixAssembler* assembler) const;
+  // Body and marker kinematics at y into the workspace; false for a state the residual
+  // cannot be evaluated at (a vanishing quaternion, a non-finite value).
+  bool UpdateKinematics(const Eigen::Ref<const Eigen::VectorXd>& y) const;
 
   const System& system_;
   GglLayout layout_;
-  mutable ConstraintWorkspace workspace_;
-  mutable MatrixAssembler assembler_;  // keeps the sparse structure between calls
+  // The evaluation scratch (the System stays immutable; const evaluations fill it).
+  std::unique_ptr<GglWorkspace> ws_;
 };
 
 }  // namespace emb::mbs

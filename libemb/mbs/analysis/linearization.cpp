@@ -24,10 +24,13 @@ Eigen::MatrixXd CalcTangentStiffness(const System& sys, const Eigen::VectorXd& q
                                      const Eigen::VectorXd& vdot) {
   const StateLayout& L = sys.layout();
   const auto bodies = CalcBodyKinematics(sys, q, v);
+  std::vector<MarkerKinematics> markers;
+  CalcAllMarkerKinematics(sys, bodies, &markers);
   DenseForceJacobian forces(L);
   const auto& elements = sys.force_elements();
   for (std::size_t k = 0; k < elements.size(); ++k) {
-    const ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
+    ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
+    ctx.markers = &markers;
     elements[k]->AddForceJacobian(ctx, &forces);
   }
   Eigen::MatrixXd K = forces.stiffness();
@@ -39,7 +42,7 @@ Eigen::MatrixXd CalcTangentStiffness(const System& sys, const Eigen::VectorXd& q
   for (int b = 1; b < sys.num_bodies(); ++b)
     if (L.num_elastic(b))
       add_body_block(b, b, CalcBodyFlexibleTerms(sys, bodies[b], b, nullptr, true).stiffness);
-  VisitKernelTerms(sys, bodies, [&](const KernelTerm& term) {
+  VisitKernelTerms(sys, markers, [&](const KernelTerm& term) {
     const int body[2] = {term.body_i, term.body_j};
     Eigen::MatrixXd T[2];
     for (int s = 0; s < 2; ++s)
@@ -86,10 +89,13 @@ namespace {
 Eigen::MatrixXd CalcVelocityStiffness(const System& sys, const std::vector<BodyKinematics>& bodies,
                                       double t, ConstraintWorkspace* ws) {
   const StateLayout& L = sys.layout();
+  std::vector<MarkerKinematics> markers;
+  CalcAllMarkerKinematics(sys, bodies, &markers);
   DenseForceJacobian forces(L);
   const auto& elements = sys.force_elements();
   for (std::size_t k = 0; k < elements.size(); ++k) {
-    const ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
+    ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
+    ctx.markers = &markers;
     elements[k]->AddForceJacobian(ctx, &forces);
   }
   Eigen::MatrixXd G = -forces.damping();
@@ -107,6 +113,12 @@ Eigen::MatrixXd CalcVelocityStiffness(const System& sys, const std::vector<BodyK
         Skew(w) * J - Skew(J * w);
   }
   return G;
+}
+
+bool HasQuasiStaticCoordinates(const System& sys) {
+  for (int b = 1; b < sys.num_bodies(); ++b)
+    if (sys.body(b).elastic && sys.body(b).elastic->num_quasi_static() > 0) return true;
+  return false;
 }
 
 }  // namespace
@@ -153,20 +165,41 @@ LinearModes CalcLinearModes(const System& system, const Eigen::VectorXd& q,
     return out;
   }
   // First-order form x' = A x, x = [y; y'].
-  const Eigen::LLT<Eigen::MatrixXd> llt(0.5 * (Mz + Mz.transpose()));
-  if (llt.info() != Eigen::Success)
-    EMB_THROW(NumericalError, "linearised modes: the reduced mass matrix is not positive definite");
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  A.topRightCorner(n, n).setIdentity();
-  A.bottomLeftCorner(n, n) = -llt.solve(Kz);
-  A.bottomRightCorner(n, n) = -llt.solve(Gz);
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
-  if (es.info() != Eigen::Success)
-    EMB_THROW(NumericalError, "linearised modes: the eigen-solve of the first-order form failed");
   std::vector<std::pair<double, double>> pairs;  // (frequency, decay) with Im s > 0
-  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
-    const std::complex<double> s = es.eigenvalues()[i];
-    if (s.imag() > 0.0) pairs.emplace_back(s.imag() / (2 * std::numbers::pi), -s.real());
+  const Eigen::LLT<Eigen::MatrixXd> llt(0.5 * (Mz + Mz.transpose()));
+  if (llt.info() == Eigen::Success && !HasQuasiStaticCoordinates(system)) {
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    A.topRightCorner(n, n).setIdentity();
+    A.bottomLeftCorner(n, n) = -llt.solve(Kz);
+    A.bottomRightCorner(n, n) = -llt.solve(Gz);
+    const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
+    if (es.info() != Eigen::Success)
+      EMB_THROW(NumericalError, "linearised modes: the eigen-solve of the first-order form failed");
+    for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
+      const std::complex<double> s = es.eigenvalues()[i];
+      if (s.imag() > 0.0) pairs.emplace_back(s.imag() / (2 * std::numbers::pi), -s.real());
+    }
+  } else {
+    // Massless (quasi-static) coordinates make M_z singular: the pencil
+    // [0 I; -K -G] x = s [I 0; 0 M] x keeps their finite eigenvalues (relaxations and the
+    // vibrations of what they carry) and puts the massless directions at s = infinity.
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n), B = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    A.topRightCorner(n, n).setIdentity();
+    A.bottomLeftCorner(n, n) = -Kz;
+    A.bottomRightCorner(n, n) = -Gz;
+    B.topLeftCorner(n, n).setIdentity();
+    B.bottomRightCorner(n, n) = 0.5 * (Mz + Mz.transpose());
+    const Eigen::GeneralizedEigenSolver<Eigen::MatrixXd> ges(A, B, false);
+    if (ges.info() != Eigen::Success)
+      EMB_THROW(NumericalError, "linearised modes: the eigen-solve of the first-order pencil failed");
+    const double scale = std::max(1.0, A.cwiseAbs().maxCoeff());
+    for (Eigen::Index i = 0; i < ges.alphas().size(); ++i) {
+      const double beta = ges.betas()[i];
+      if (std::abs(beta) <= 1e-14 * std::abs(ges.alphas()[i]) || beta == 0.0) continue;
+      const std::complex<double> s = ges.alphas()[i] / beta;
+      if (std::abs(s) > 1e8 * scale) continue;  // numerically infinite
+      if (s.imag() > 0.0) pairs.emplace_back(s.imag() / (2 * std::numbers::pi), -s.real());
+    }
   }
   std::sort(pairs.begin(), pairs.end());
   out.frequencies_hz.resize(static_cast<Eigen::Index>(pairs.size()));

@@ -1,5 +1,6 @@
 #include "libemb/mbs/constraints/constraint_eval.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -27,34 +28,44 @@ void ConstraintWorkspace::Reset() {
 
 ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinematics>& bodies,
                                double t, ConstraintWorkspace* workspace) {
+  std::vector<MarkerKinematics> markers;
+  CalcAllMarkerKinematics(system, bodies, &markers);
+  ConstraintEval c;
+  CalcConstraints(system, markers, t, workspace, &c);
+  return c;
+}
+
+void CalcConstraints(const System& system, const std::vector<MarkerKinematics>& markers,
+                     double t, ConstraintWorkspace* workspace, ConstraintEval* out) {
   const StateLayout& L = system.layout();
   const int m = system.num_equations();
-  ConstraintEval c;
+  ConstraintEval& c = *out;
   c.phi.setZero(m);
   c.quadratic.setZero(m);
   c.phi_t.setZero(m);
   c.phi_tt.setZero(m);
-  std::vector<Eigen::Triplet<double, int>> triplets;
-  triplets.reserve(12 * static_cast<std::size_t>(m));
+  std::vector<Eigen::Triplet<double, int>>& entries = c.entries;
+  entries.clear();
   auto add_row = [&](int k, const MarkerKinematics& M, double a,
                      const Eigen::Matrix<double, 1, 6>& d) {
     if (L.is_ground(M.body)) return;
     if (!M.flexible()) {
-      for (int i = 0; i < 6; ++i) triplets.emplace_back(k, L.velocity(M.body) + i, a * d[i]);
+      for (int i = 0; i < 6; ++i) entries.emplace_back(k, L.velocity(M.body) + i, a * d[i]);
       return;
     }
-    const Eigen::RowVectorXd dm = d * M.map;  // through the marker map (kinematics.h)
-    for (int i = 0; i < 6; ++i) triplets.emplace_back(k, L.velocity(M.body) + i, a * dm[i]);
+    c.row_scratch.noalias() = d * M.map;  // through the marker map (kinematics.h)
+    const Eigen::RowVectorXd& dm = c.row_scratch;
+    for (int i = 0; i < 6; ++i) entries.emplace_back(k, L.velocity(M.body) + i, a * dm[i]);
     for (int i = 6; i < dm.size(); ++i)
-      triplets.emplace_back(k, L.elastic_v(M.body) + i - 6, a * dm[i]);
+      entries.emplace_back(k, L.elastic_v(M.body) + i - 6, a * dm[i]);
   };
   for (int k = 0; k < m; ++k) {
     const ScalarEquation& eq = system.equations()[k];
     FunctionValue f;
     if (eq.has_function) f = eq.function.Eval(t);
     for (int term = 0; term < eq.num_terms; ++term) {
-      const MarkerKinematics I = CalcMarkerKinematics(system, bodies, eq.marker_i[term]);
-      const MarkerKinematics J = CalcMarkerKinematics(system, bodies, eq.marker_j[term]);
+      const MarkerKinematics& I = markers[eq.marker_i[term]];
+      const MarkerKinematics& J = markers[eq.marker_j[term]];
       const KernelEval g = EvalKernel(eq.kernel[term], I, J);
       double value = g.value;
       if (eq.angle_slot[term] >= 0) {
@@ -75,19 +86,46 @@ ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinem
       c.phi_tt[k] = -f.d2f;
     }
   }
+  // The entries come in the same order at every state: sum them into the structure found
+  // the first time (setFromTriplets sums shared bodies; so does the slot map).
+  if (c.entry_slot.size() == entries.size() && c.jacobian.rows() == m &&
+      c.jacobian.cols() == L.nv()) {
+    double* values = c.jacobian.valuePtr();
+    std::fill(values, values + c.jacobian.nonZeros(), 0.0);
+    for (std::size_t e = 0; e < entries.size(); ++e) values[c.entry_slot[e]] += entries[e].value();
+    return;
+  }
   c.jacobian.resize(m, L.nv());
-  c.jacobian.setFromTriplets(triplets.begin(), triplets.end());  // sums shared bodies
-  return c;
+  c.jacobian.setFromTriplets(entries.begin(), entries.end());
+  c.jacobian.makeCompressed();
+  c.entry_slot.resize(entries.size());
+  const int* outer = c.jacobian.outerIndexPtr();
+  const int* inner = c.jacobian.innerIndexPtr();
+  for (std::size_t e = 0; e < entries.size(); ++e) {
+    const int row = entries[e].row(), col = entries[e].col();
+    const int* begin = inner + outer[row];
+    const int* end = inner + outer[row + 1];
+    const int* at = std::lower_bound(begin, end, col);
+    EMB_CHECK(at != end && *at == col);
+    c.entry_slot[e] = static_cast<int>(at - inner);
+  }
 }
 
 void VisitKernelTerms(const System& system, const std::vector<BodyKinematics>& bodies,
+                      const std::function<void(const KernelTerm&)>& visit) {
+  std::vector<MarkerKinematics> markers;
+  CalcAllMarkerKinematics(system, bodies, &markers);
+  VisitKernelTerms(system, markers, visit);
+}
+
+void VisitKernelTerms(const System& system, const std::vector<MarkerKinematics>& markers,
                       const std::function<void(const KernelTerm&)>& visit) {
   KernelTerm term;
   for (int k = 0; k < system.num_equations(); ++k) {
     const ScalarEquation& eq = system.equations()[k];
     for (int n = 0; n < eq.num_terms; ++n) {
-      const MarkerKinematics I = CalcMarkerKinematics(system, bodies, eq.marker_i[n]);
-      const MarkerKinematics J = CalcMarkerKinematics(system, bodies, eq.marker_j[n]);
+      const MarkerKinematics& I = markers[eq.marker_i[n]];
+      const MarkerKinematics& J = markers[eq.marker_j[n]];
       const KernelEval g = EvalKernel(eq.kernel[n], I, J);
       const double a = eq.coeff[n];
       term.equation = k;

@@ -46,11 +46,22 @@ struct ConstraintEval {
   Eigen::VectorXd phi_tt;     ///< d2Phi/dt2, m
   /// gamma = -(Cdot v) - Phi_tt (acceleration right-hand side).
   Eigen::VectorXd gamma() const { return -quadratic - phi_tt; }
+
+  /// Scratch of the in-place CalcConstraints: the Jacobian's entries in the order they are
+  /// made and where each lands in `jacobian` (the structure is the same at every state, so
+  /// after the first evaluation the values are summed in place).
+  std::vector<Eigen::Triplet<double, int>> entries;
+  std::vector<int> entry_slot;
+  Eigen::RowVectorXd row_scratch;
 };
 
 /// Evaluates all equations at body kinematics `bodies` and time t.
 ConstraintEval CalcConstraints(const System& system, const std::vector<BodyKinematics>& bodies,
                                double t, ConstraintWorkspace* workspace);
+/// The same from the markers' kinematics at that state (CalcAllMarkerKinematics) into `out`,
+/// reusing its storage: after the first call at a system, no allocation.
+void CalcConstraints(const System& system, const std::vector<MarkerKinematics>& markers,
+                     double t, ConstraintWorkspace* workspace, ConstraintEval* out);
 
 /// One kernel term (coeff g) of equation `equation` between the bodies of markers I and J,
 /// with its Jacobian row and second derivatives in x = [delta p_i, delta pi_i, delta p_j,
@@ -71,6 +82,9 @@ struct KernelTerm {
 /// Calls `visit` for every kernel term of every equation, in equation order (the iteration
 /// matrices of the GGL DAE and of statics are assembled from these). Cost O(m).
 void VisitKernelTerms(const System& system, const std::vector<BodyKinematics>& bodies,
+                      const std::function<void(const KernelTerm&)>& visit);
+/// The same from the markers' kinematics at that state (CalcAllMarkerKinematics).
+void VisitKernelTerms(const System& system, const std::vector<MarkerKinematics>& markers,
                       const std::function<void(const KernelTerm&)>& visit);
 
 /// The equation with the largest |Phi| and its value (for "assembly failed at ..." reports).

@@ -10,12 +10,14 @@ Eigen::MatrixXd CalcJointReactions(const System& system, const std::vector<BodyK
   const StateLayout& L = system.layout();
   const auto& ports = system.reaction_ports();
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(ports.size()), 6);
+  std::vector<MarkerKinematics> markers;
+  CalcAllMarkerKinematics(system, bodies, &markers);
   for (std::size_t p = 0; p < ports.size(); ++p) {
     const ReactionPort& port = ports[p];
     const ConstraintElement& e = system.elements()[port.element];
     if (e.num_equations == 0) continue;
-    const MarkerKinematics I = CalcMarkerKinematics(system, bodies, port.marker_i);
-    const MarkerKinematics J = CalcMarkerKinematics(system, bodies, port.marker_j);
+    const MarkerKinematics& I = markers[port.marker_i];
+    const MarkerKinematics& J = markers[port.marker_j];
     // Generalised loads of this term of the element's equations on the bodies of I and J.
     Eigen::Matrix<double, 6, 1> Q_i = Eigen::Matrix<double, 6, 1>::Zero(), Q_j = Q_i;
     for (int k = e.first_equation; k < e.first_equation + e.num_equations; ++k) {

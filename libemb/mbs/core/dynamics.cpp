@@ -47,13 +47,21 @@ Eigen::MatrixXd CalcMassMatrix(const System& system, const std::vector<BodyKinem
 Eigen::VectorXd CalcElementForces(const System& system, const std::vector<BodyKinematics>& bodies,
                                   double t, ConstraintWorkspace* workspace) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(system.layout().nv());
+  std::vector<MarkerKinematics> markers;
+  CalcAllMarkerKinematics(system, bodies, &markers);
+  AddElementForces(system, bodies, markers, t, workspace, f);
+  return f;
+}
+
+void AddElementForces(const System& system, const std::vector<BodyKinematics>& bodies,
+                      const std::vector<MarkerKinematics>& markers, double t,
+                      ConstraintWorkspace* workspace, Eigen::Ref<Eigen::VectorXd> f) {
   const auto& forces = system.force_elements();
   for (std::size_t k = 0; k < forces.size(); ++k) {
-    const ForceContext ctx{&system, &bodies, t, workspace,
-                           system.force_angle_slot(static_cast<int>(k))};
+    ForceContext ctx{&system, &bodies, t, workspace, system.force_angle_slot(static_cast<int>(k))};
+    ctx.markers = &markers;
     forces[k]->AddForces(ctx, f);
   }
-  return f;
 }
 
 Eigen::VectorXd CalcGeneralizedForces(const System& system,
@@ -95,9 +103,11 @@ Energies CalcEnergies(const System& system, const std::vector<BodyKinematics>& b
     e.gravity -= body.mass * system.gravity().dot(k.p_WB);
   }
   const auto& forces = system.force_elements();
+  std::vector<MarkerKinematics> markers;
+  if (!forces.empty()) CalcAllMarkerKinematics(system, bodies, &markers);
   for (std::size_t k = 0; k < forces.size(); ++k) {
-    const ForceContext ctx{&system, &bodies, t, workspace,
-                           system.force_angle_slot(static_cast<int>(k))};
+    ForceContext ctx{&system, &bodies, t, workspace, system.force_angle_slot(static_cast<int>(k))};
+    ctx.markers = &markers;
     e.elastic += forces[k]->CalcPotentialEnergy(ctx);
     e.dissipated_power += forces[k]->CalcDissipatedPower(ctx);
   }

@@ -42,6 +42,11 @@ FlexibleTerms CalcBodyFlexibleTerms(const System& system, const BodyKinematics& 
 /// Only the force elements' part of f (no gravity, no gyroscopic term).
 Eigen::VectorXd CalcElementForces(const System& system, const std::vector<BodyKinematics>& bodies,
                                   double t, ConstraintWorkspace* workspace = nullptr);
+/// Adds the force elements' part of f to `f` (size nv), with every marker's kinematics at
+/// that state given (CalcAllMarkerKinematics): no marker is evaluated twice.
+void AddElementForces(const System& system, const std::vector<BodyKinematics>& bodies,
+                      const std::vector<MarkerKinematics>& markers, double t,
+                      ConstraintWorkspace* workspace, Eigen::Ref<Eigen::VectorXd> f);
 
 /// Energies at one state [J]. Potential energy of gravity is -sum m_b g . p_WB.
 struct Energies {

@@ -60,6 +60,16 @@ struct ElasticModel {
   void Validate(const std::string& name) const;
   /// The model restricted to modes `keep` (indices into the current modes).
   ElasticModel Subset(const std::vector<int>& keep) const;
+  /// The model in new elastic coordinates xi with eta = T xi (T: ne x n', full column
+  /// rank, columns in the span of the current modes): every invariant is the same integral
+  /// with Phi T for Phi,
+  ///   St' = St T,  Ibar' = Ibar T,  Sbar'_kl = T^T Sbar_kl T,  K' = T^T K T,  D' = T^T D T,
+  ///   K_G' = T^T K_G T,
+  /// so that kinetic, strain and dissipated energies of eta = T xi are those of xi. The
+  /// quasi-static flags are dropped (flag the new coordinates with MakeQuasiStatic) and
+  /// frequencies_hz becomes sqrt(K'_jj / M'_jj) / 2 pi (M' = sum_i Sbar'_ii), exact for
+  /// columns that are M- and K-orthogonal. Cost O(ne^2 n').
+  ElasticModel Transformed(const Eigen::MatrixXd& T) const;
   /// Makes the flagged modes quasi-static (residual flexibility, "mode acceleration"): they
   /// keep their stiffness, damping and every load on them (interface forces, the inertial
   /// loads of the frame's motion through Ibar, gravity), so the static response of the full
@@ -72,6 +82,17 @@ struct ElasticModel {
   /// on each flagged mode. @throws InputError naming `name` otherwise or for a size mismatch.
   void MakeQuasiStatic(const std::vector<bool>& flags, const std::string& name);
   int num_quasi_static() const;
+  /// Number of leading coordinates before a trailing run of quasi-static ones (ne if there
+  /// is none, or if quasi-static coordinates are not all at the end): the inertia terms
+  /// (Sbar) live in the leading block only.
+  int num_leading_dynamic() const;
+  /// Adds tau K_ss to the damping of the flagged coordinates (the block of K among them),
+  /// so that they relax to their static response with the time constant tau [s]. A
+  /// quasi-static coordinate has no inertia of its own; what it carries (a rigid body on the
+  /// static flexibility at an interface) would otherwise vibrate above the band with the
+  /// little damping of the high modes the static shape is made of. Keeps D positive
+  /// semi-definite (adds a positive semi-definite block).
+  void AddRelaxationDamping(const std::vector<bool>& flags, double tau);
   bool is_quasi_static(int j) const { return !quasi_static.empty() && quasi_static[j]; }
 };
 
@@ -96,12 +117,38 @@ struct FlexibleTerms {
   double elastic_energy{0.0};  ///< eta^T K eta / 2
   double gravity_energy{0.0};  ///< -m g.p_WB - g.R c(eta)
   double dissipated_power{0.0};
+
+  /// Scratch of the in-place evaluation (flexible_terms.cpp), kept between calls.
+  struct Scratch {
+    Eigen::MatrixXd Bm, Mre, Mee, G, KG, W;
+    Eigen::VectorXd trB, fe, Kg_eta, tmp;
+  } scratch;
 };
 
-/// Evaluates FlexibleTerms. `a_B` is the frame origin's acceleration less gravity in B for
-/// the translational geometric stiffness (zero if unknown). `accel` (with_derivatives only;
-/// may be null) is the body acceleration [v'_WB, omega'_B, eta''] for inertia_stiffness and
-/// force_accel. Cost O(ne^2).
+/// What CalcFlexibleTerms evaluates (bit flags).
+enum FlexibleTermsParts : unsigned {
+  kFlexibleMass = 1u,         ///< mass
+  kFlexibleForce = 2u,        ///< force
+  kFlexibleEnergies = 4u,     ///< kinetic, elastic, gravity energy, dissipated power
+  kFlexibleDerivatives = 8u,  ///< damping, stiffness (and with accel: inertia_stiffness,
+                              ///< force_accel); implies mass and force
+  kFlexibleAll = 15u,
+};
+
+/// Evaluates the `parts` of FlexibleTerms into `out`, reusing its storage (no allocation
+/// once sized). `a_B` is the frame origin's acceleration less gravity in B for the
+/// translational geometric stiffness (zero if unknown). `accel` (derivatives only; may be
+/// null) is the body acceleration [v'_WB, omega'_B, eta''] for inertia_stiffness and
+/// force_accel. Cost O(ne^2) (the Sbar terms only over the leading dynamic coordinates when
+/// the quasi-static ones are the trailing ones: they have no inertia).
+void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
+                       const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& v_WB,
+                       const Eigen::Vector3d& omega_B, const Eigen::Ref<const Eigen::VectorXd>& eta,
+                       const Eigen::Ref<const Eigen::VectorXd>& eta_dot,
+                       const Eigen::Vector3d& g_W, const Eigen::Vector3d& a_B, unsigned parts,
+                       const Eigen::VectorXd* accel, FlexibleTerms* out);
+
+/// Evaluates FlexibleTerms (all parts; the derivatives if `with_derivatives`).
 FlexibleTerms CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
                                 const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& v_WB,
                                 const Eigen::Vector3d& omega_B, const Eigen::VectorXd& eta,

@@ -5,6 +5,12 @@
 
 namespace emb::mbs {
 
+const MarkerKinematics& ForceContext::Marker(int m, MarkerKinematics* scratch) const {
+  if (markers != nullptr) return (*markers)[m];
+  CalcMarkerKinematics(*system, *bodies, m, scratch);
+  return *scratch;
+}
+
 void ForceElement::AddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
   EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr);
   EMB_CHECK(f.size() == ctx.system->layout().nv());
@@ -33,10 +39,9 @@ void AddMarkerForce(const StateLayout& layout, const MarkerKinematics& M,
     return;
   }
   // Through the marker map (kinematics.h): f6 acts on the marker frame.
-  const Eigen::VectorXd g = M.map.transpose() * f6;
-  const auto ne = g.size() - 6;
-  f.segment<6>(layout.velocity(M.body)) += g.head<6>();
-  f.segment(layout.elastic_v(M.body), ne) += g.tail(ne);
+  const auto ne = M.map.cols() - 6;
+  f.segment<6>(layout.velocity(M.body)).noalias() += M.map.leftCols<6>().transpose() * f6;
+  f.segment(layout.elastic_v(M.body), ne).noalias() += M.map.rightCols(ne).transpose() * f6;
 }
 
 }  // namespace emb::mbs

@@ -26,6 +26,12 @@ struct ForceContext {
   double t{0.0};
   ConstraintWorkspace* workspace{nullptr};  ///< may be null: angles are then wrapped
   int angle_slot{-1};                       ///< this element's first slot (System::Finalize)
+  /// Every marker's kinematics at the same state (CalcAllMarkerKinematics), computed once
+  /// for all elements; null: Marker() evaluates a marker on demand.
+  const std::vector<MarkerKinematics>* markers{nullptr};
+
+  /// Marker m at this state: the shared one, or evaluated into `scratch` (and returned).
+  const MarkerKinematics& Marker(int m, MarkerKinematics* scratch) const;
 };
 
 class ForceElement {

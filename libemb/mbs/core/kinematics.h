@@ -84,9 +84,20 @@ Eigen::Matrix<double, 6, 1> VirtualBodyVelocity(const MarkerKinematics& M);
 /// @pre q.size() == 7 * num_moving_bodies; v empty or 6 * num_moving_bodies.
 std::vector<BodyKinematics> CalcBodyKinematics(const System& system, const Eigen::VectorXd& q,
                                                const Eigen::VectorXd& v);
+/// The same into `bodies`, reusing its storage (no allocation once sized).
+void CalcBodyKinematics(const System& system, const Eigen::Ref<const Eigen::VectorXd>& q,
+                        const Eigen::Ref<const Eigen::VectorXd>& v,
+                        std::vector<BodyKinematics>* bodies);
 
 /// Marker `marker` from the body kinematics.
 MarkerKinematics CalcMarkerKinematics(const System& system,
                                       const std::vector<BodyKinematics>& bodies, int marker);
+/// The same into `out`, reusing its storage (its maps are not reallocated).
+void CalcMarkerKinematics(const System& system, const std::vector<BodyKinematics>& bodies,
+                          int marker, MarkerKinematics* out);
+/// Every marker of `system` (index = marker index) into `markers`, reusing its storage: the
+/// kinematics that constraints, force elements and sensors read at one state, computed once.
+void CalcAllMarkerKinematics(const System& system, const std::vector<BodyKinematics>& bodies,
+                             std::vector<MarkerKinematics>* markers);
 
 }  // namespace emb::mbs

@@ -250,6 +250,42 @@ System System::WithoutEquations(const std::vector<int>& equations) const {
   return s;
 }
 
+System System::WithElasticBases(const std::vector<ElasticBasisChange>& changes) const {
+  EMB_CHECK(finalized_);
+  System s = *this;
+  s.finalized_ = false;
+  s.pending_ = equations_;
+  for (const ElasticBasisChange& c : changes) {
+    EMB_CHECK(c.body >= 1 && c.body < num_bodies());
+    RigidBody& b = s.bodies_[c.body];
+    EMB_THROW_IF(!b.elastic, "body '" << b.name << "': a change of elastic basis needs a "
+                                          "flexible body");
+    const int ne = b.elastic->num_modes();
+    EMB_THROW_IF(c.T.rows() != ne || c.T.cols() == 0,
+                 "body '" << b.name << "': expected a basis change with " << ne
+                          << " rows and at least one column, got " << c.T.rows() << " x "
+                          << c.T.cols());
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(c.T);
+    EMB_THROW_IF(qr.rank() < c.T.cols(), "body '" << b.name << "': the " << c.T.cols()
+                                                   << " new elastic coordinates are dependent (rank "
+                                                   << qr.rank() << ")");
+    auto model = std::make_shared<ElasticModel>(b.elastic->Transformed(c.T));
+    if (c.relaxation_time > 0.0) model->AddRelaxationDamping(c.quasi_static, c.relaxation_time);
+    if (!c.quasi_static.empty()) model->MakeQuasiStatic(c.quasi_static, b.name);
+    model->Validate(b.name);
+    if (b.eta0.size()) b.eta0 = qr.solve(b.eta0);
+    if (b.eta_dot0.size()) b.eta_dot0 = qr.solve(b.eta_dot0);
+    b.elastic = std::move(model);
+    for (Marker& m : s.markers_) {
+      if (m.body != c.body || m.shape_t.size() == 0) continue;
+      m.shape_t = m.shape_t * c.T;
+      m.shape_r = m.shape_r * c.T;
+    }
+  }
+  s.Finalize();
+  return s;
+}
+
 int System::second_reaction_port(int e) const {
   for (std::size_t p = elements_.size(); p < ports_.size(); ++p)
     if (ports_[p].element == e) return static_cast<int>(p);

@@ -37,6 +37,18 @@ struct Sensor {
   int marker_i{-1}, marker_j{-1};
 };
 
+/// A change of the elastic coordinates of flexible body `body`: eta = T xi (ne x n'), with the
+/// new coordinates flagged in `quasi_static` (empty: all dynamic) made quasi-static
+/// (ElasticModel::MakeQuasiStatic). System::WithElasticBases applies it.
+struct ElasticBasisChange {
+  int body{-1};
+  Eigen::MatrixXd T;
+  std::vector<bool> quasi_static;
+  /// > 0: the quasi-static coordinates get the extra damping relaxation_time x K_ss [s]
+  /// (ElasticModel::AddRelaxationDamping).
+  double relaxation_time{0.0};
+};
+
 /// What kind of constraint element produced an equation.
 enum class ElementKind { kJoint, kMotion, kCoupler };
 
@@ -102,6 +114,13 @@ class System {
   /// Builds the scalar equation list and the state layout. No Add* afterwards.
   void Finalize();
   bool finalized() const { return finalized_; }
+
+  /// A copy in which each changed body's modal coordinates are eta = T xi: its elastic model
+  /// ElasticModel::Transformed(T) (then MakeQuasiStatic), its markers' shapes shape T, its
+  /// initial xi the least-squares solution of T xi = eta0 (and the same for the rates).
+  /// @throws InputError naming the body if it is not flexible, T has the wrong number of
+  /// rows or is rank deficient, or a quasi-static coordinate has no damping.
+  System WithElasticBases(const std::vector<ElasticBasisChange>& changes) const;
 
   /// A copy without the given scalar equations (indices into equations()), e.g. the
   /// redundant ones of a DOF report. The copy records what was removed.

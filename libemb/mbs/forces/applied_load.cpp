@@ -41,8 +41,10 @@ std::vector<int> AppliedLoad::DoMarkers() const {
 
 double AppliedLoad::CalcArgument(const ForceContext& ctx) const {
   if (!argument_.joint_angle) return ctx.t;
-  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, argument_.marker_i);
-  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, argument_.marker_j);
+  MarkerKinematics I_own;
+  const MarkerKinematics& I = ctx.Marker(argument_.marker_i, &I_own);
+  MarkerKinematics J_own;
+  const MarkerKinematics& J = ctx.Marker(argument_.marker_j, &J_own);
   double angle = EvalKernel({KernelKind::kAngle, 0, 0}, I, J).value;
   // Without a workspace (e.g. a one-off evaluation) the angle is only known modulo 2 pi.
   if (ctx.workspace != nullptr && ctx.angle_slot >= 0)
@@ -52,7 +54,8 @@ double AppliedLoad::CalcArgument(const ForceContext& ctx) const {
 
 void AppliedLoad::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
   const System& sys = *ctx.system;
-  const MarkerKinematics M = CalcMarkerKinematics(sys, *ctx.bodies, marker_);
+  MarkerKinematics M_own;
+  const MarkerKinematics& M = ctx.Marker(marker_, &M_own);
   const Eigen::Vector3d a_W = frame_ == Frame::kWorld ? direction_ : M.R_WM * direction_;
   const Eigen::Vector3d load = magnitude_(CalcArgument(ctx)) * a_W;
   const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
@@ -60,7 +63,8 @@ void AppliedLoad::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorX
   const Eigen::Vector3d T = kind_ == Kind::kTorque ? load : zero;
   AddWrench(sys.layout(), M, M.p_WM, F, T, f);
   if (reaction_marker_ >= 0) {
-    const MarkerKinematics R = CalcMarkerKinematics(sys, *ctx.bodies, reaction_marker_);
+    MarkerKinematics R_own;
+  const MarkerKinematics& R = ctx.Marker(reaction_marker_, &R_own);
     AddWrench(sys.layout(), R, M.p_WM, -F, -T, f);
   }
 }
@@ -68,22 +72,25 @@ void AppliedLoad::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorX
 void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
   using Eigen::MatrixXd;
   using Eigen::Vector3d;
-  const System& sys = *ctx.system;
   // Slots: the loaded marker's body, the reaction body, the argument joint's two bodies.
-  const MarkerKinematics M = CalcMarkerKinematics(sys, *ctx.bodies, marker_);
+  MarkerKinematics M_own;
+  const MarkerKinematics& M = ctx.Marker(marker_, &M_own);
   const int reaction_slot = reaction_marker_ >= 0 ? 1 : -1;
-  MarkerKinematics R, AI, AJ;
+  MarkerKinematics R_own, AI_own, AJ_own;
+  const MarkerKinematics* R = nullptr;
+  const MarkerKinematics* AI = nullptr;
+  const MarkerKinematics* AJ = nullptr;
   std::vector<const MarkerKinematics*> slots{&M};
   if (reaction_marker_ >= 0) {
-    R = CalcMarkerKinematics(sys, *ctx.bodies, reaction_marker_);
-    slots.push_back(&R);
+    R = &ctx.Marker(reaction_marker_, &R_own);
+    slots.push_back(R);
   }
   const int argument_slot = static_cast<int>(slots.size());
   if (argument_.joint_angle) {
-    AI = CalcMarkerKinematics(sys, *ctx.bodies, argument_.marker_i);
-    AJ = CalcMarkerKinematics(sys, *ctx.bodies, argument_.marker_j);
-    slots.push_back(&AI);
-    slots.push_back(&AJ);
+    AI = &ctx.Marker(argument_.marker_i, &AI_own);
+    AJ = &ctx.Marker(argument_.marker_j, &AJ_own);
+    slots.push_back(AI);
+    slots.push_back(AJ);
   }
   LocalForceJacobian jac(slots);
   const int n = jac.num_columns();
@@ -95,7 +102,7 @@ void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
   MatrixXd dload = MatrixXd::Zero(3, n);
   if (frame_ == Frame::kMarker) dload = -fx.f * Skew(a_W) * dM.rotation_x;
   if (argument_.joint_angle) {
-    const KernelEval g = EvalKernel({KernelKind::kAngle, 0, 0}, AI, AJ);
+    const KernelEval g = EvalKernel({KernelKind::kAngle, 0, 0}, *AI, *AJ);
     Eigen::Matrix<double, 1, 12> dangle;
     dangle << g.d_i, g.d_j;
     dload.middleCols(6 * argument_slot, 12) += (fx.df * argument_.scale) * a_W * dangle;
@@ -112,12 +119,12 @@ void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
   jac.SetSlotForce(0, WrenchForce(M.R_WB, F, T, M.s_W));
   if (reaction_slot >= 0) {
     // The opposite load at the same point p_WM, on the reaction body.
-    const Vector3d r = M.p_WM - (R.p_WM - R.s_W);
+    const Vector3d r = M.p_WM - (R->p_WM - R->s_W);
     MatrixXd dr = dM.point_x;
     dr.block<3, 3>(0, 6 * reaction_slot) -= Eigen::Matrix3d::Identity();
     jac.stiffness.middleRows<6>(6 * reaction_slot) +=
-        WrenchStiffness(R.R_WB, reaction_slot, -F, -T, r, -dF, -dT, dr);
-    jac.SetSlotForce(reaction_slot, WrenchForce(R.R_WB, -F, -T, r));
+        WrenchStiffness(R->R_WB, reaction_slot, -F, -T, r, -dF, -dT, dr);
+    jac.SetSlotForce(reaction_slot, WrenchForce(R->R_WB, -F, -T, r));
   }
   jac.ScatterTo(sink);
 }

@@ -45,7 +45,9 @@ Bushing::State Bushing::Calc(const MarkerKinematics& I, const MarkerKinematics& 
 }
 
 void Bushing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
-  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const MarkerPair markers(ctx, i_, j_);
+  const MarkerKinematics& I = markers.I;
+  const MarkerKinematics& J = markers.J;
   const State s = Calc(I, J);
   const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
   const Eigen::Vector3d F_W = J.R_WM * m.head<3>();
@@ -57,8 +59,9 @@ void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sin
   using Eigen::Matrix3d;
   using Eigen::MatrixXd;
   using Eigen::Vector3d;
-  const MarkerPair markers = CalcMarkerPair(ctx, i_, j_);
-  const auto& [I, J] = markers;
+  const MarkerPair markers(ctx, i_, j_);
+  const MarkerKinematics& I = markers.I;
+  const MarkerKinematics& J = markers.J;
   const State s = Calc(I, J);
   const auto [dI, dJ] = DifferentiateMarkerPair(markers);
   const RelativeMotionDerivatives dr = DifferentiateRelativeMotion(s.rel, I, J, dI, dJ);
@@ -95,7 +98,9 @@ void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sin
 }
 
 bool Bushing::DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const {
-  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const MarkerPair markers(ctx, i_, j_);
+  const MarkerKinematics& I = markers.I;
+  const MarkerKinematics& J = markers.J;
   const State s = Calc(I, J);
   const Vector6d m = -k_ * s.xi - d_ * s.xi_dot;
   *load << m.head<3>(), s.inv_jacobian.transpose() * m.tail<3>();
@@ -103,13 +108,17 @@ bool Bushing::DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* l
 }
 
 double Bushing::DoCalcPotentialEnergy(const ForceContext& ctx) const {
-  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const MarkerPair markers(ctx, i_, j_);
+  const MarkerKinematics& I = markers.I;
+  const MarkerKinematics& J = markers.J;
   const State s = Calc(I, J);
   return 0.5 * s.xi.dot(k_ * s.xi);
 }
 
 double Bushing::DoCalcDissipatedPower(const ForceContext& ctx) const {
-  const auto [I, J] = CalcMarkerPair(ctx, i_, j_);
+  const MarkerPair markers(ctx, i_, j_);
+  const MarkerKinematics& I = markers.I;
+  const MarkerKinematics& J = markers.J;
   const State s = Calc(I, J);
   return s.xi_dot.dot(d_ * s.xi_dot);
 }

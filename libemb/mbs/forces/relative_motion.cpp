@@ -6,11 +6,6 @@
 
 namespace emb::mbs {
 
-MarkerPair CalcMarkerPair(const ForceContext& ctx, int marker_i, int marker_j) {
-  return {CalcMarkerKinematics(*ctx.system, *ctx.bodies, marker_i),
-          CalcMarkerKinematics(*ctx.system, *ctx.bodies, marker_j)};
-}
-
 MarkerPairDerivatives DifferentiateMarkerPair(const MarkerPair& m) {
   return {DifferentiateMarker(m.I, 0, 2), DifferentiateMarker(m.J, 1, 2)};
 }

@@ -25,11 +25,23 @@
 
 namespace emb::mbs {
 
-/// Markers I and J of a two-marker element at the state of a force context.
-struct MarkerPair {
-  MarkerKinematics I, J;
+/// Markers I and J of a two-marker element at the state of a force context: the context's
+/// shared kinematics, or evaluated into the pair's own storage. Not copyable (I and J may
+/// refer into it).
+class MarkerPair {
+ public:
+  MarkerPair(const ForceContext& ctx, int marker_i, int marker_j)
+      : I(ctx.Marker(marker_i, &own_[0])), J(ctx.Marker(marker_j, &own_[1])) {}
+  MarkerPair(const MarkerPair&) = delete;
+  MarkerPair& operator=(const MarkerPair&) = delete;
+
+ private:
+  MarkerKinematics own_[2];
+
+ public:
+  const MarkerKinematics& I;
+  const MarkerKinematics& J;
 };
-MarkerPair CalcMarkerPair(const ForceContext& ctx, int marker_i, int marker_j);
 
 /// Their derivatives in the local slots 0 (I) and 1 (J) of force_jacobian.h.
 struct MarkerPairDerivatives {

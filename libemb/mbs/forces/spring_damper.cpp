@@ -26,8 +26,10 @@ TranslationalSpringDamper::TranslationalSpringDamper(std::string name, int marke
 }
 
 TranslationalSpringDamper::State TranslationalSpringDamper::Calc(const ForceContext& ctx) const {
-  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  MarkerKinematics I_own;
+  const MarkerKinematics& I = ctx.Marker(i_, &I_own);
+  MarkerKinematics J_own;
+  const MarkerKinematics& J = ctx.Marker(j_, &J_own);
   const Eigen::Vector3d d = I.p_WM - J.p_WM;
   State s{d.norm(), 0.0, Eigen::Vector3d::Zero()};
   if (s.length > 0.0) {
@@ -43,8 +45,10 @@ void TranslationalSpringDamper::DoAddForces(const ForceContext& ctx,
   if (s.length <= 0.0) return;
   const double tension = k_ * (s.length - l0_) + c_ * s.rate;
   const System& sys = *ctx.system;
-  const MarkerKinematics I = CalcMarkerKinematics(sys, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(sys, *ctx.bodies, j_);
+  MarkerKinematics I_own;
+  const MarkerKinematics& I = ctx.Marker(i_, &I_own);
+  MarkerKinematics J_own;
+  const MarkerKinematics& J = ctx.Marker(j_, &J_own);
   const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
   AddWrench(sys.layout(), I, I.p_WM, -tension * s.u, zero, f);
   AddWrench(sys.layout(), J, J.p_WM, tension * s.u, zero, f);
@@ -52,8 +56,10 @@ void TranslationalSpringDamper::DoAddForces(const ForceContext& ctx,
 
 void TranslationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
                                                    ForceJacobianSink* sink) const {
-  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  MarkerKinematics I_own;
+  const MarkerKinematics& I = ctx.Marker(i_, &I_own);
+  MarkerKinematics J_own;
+  const MarkerKinematics& J = ctx.Marker(j_, &J_own);
   LocalForceJacobian jac({&I, &J});
   const State s = Calc(ctx);
   jac.SetSlotForce(0, Eigen::Matrix<double, 6, 1>::Zero());
@@ -108,8 +114,10 @@ RotationalSpringDamper::RotationalSpringDamper(std::string name, int marker_i, i
 }
 
 RotationalSpringDamper::State RotationalSpringDamper::Calc(const ForceContext& ctx) const {
-  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  MarkerKinematics I_own;
+  const MarkerKinematics& I = ctx.Marker(i_, &I_own);
+  MarkerKinematics J_own;
+  const MarkerKinematics& J = ctx.Marker(j_, &J_own);
   // x_I closer than this to z_J (|x_I x z_J|^2, i.e. 1e-4 rad) leaves the angle undefined.
   constexpr double kMinProjection = 1e-8;
   const Eigen::Vector3d x_I = I.R_WM.col(0), z_J = J.R_WM.col(2);
@@ -141,8 +149,10 @@ void RotationalSpringDamper::DoAddForces(const ForceContext& ctx,
   const State s = Calc(ctx);
   const double tau = k_ * s.angle + c_ * s.rate;
   const StateLayout& L = ctx.system->layout();
-  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  MarkerKinematics I_own;
+  const MarkerKinematics& I = ctx.Marker(i_, &I_own);
+  MarkerKinematics J_own;
+  const MarkerKinematics& J = ctx.Marker(j_, &J_own);
   AddMarkerForce(L, I, -tau * s.gradient.head<6>().transpose(), f);
   AddMarkerForce(L, J, -tau * s.gradient.tail<6>().transpose(), f);
 }
@@ -150,8 +160,10 @@ void RotationalSpringDamper::DoAddForces(const ForceContext& ctx,
 void RotationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
                                                 ForceJacobianSink* sink) const {
   const State s = Calc(ctx);
-  const MarkerKinematics I = CalcMarkerKinematics(*ctx.system, *ctx.bodies, i_);
-  const MarkerKinematics J = CalcMarkerKinematics(*ctx.system, *ctx.bodies, j_);
+  MarkerKinematics I_own;
+  const MarkerKinematics& I = ctx.Marker(i_, &I_own);
+  MarkerKinematics J_own;
+  const MarkerKinematics& J = ctx.Marker(j_, &J_own);
   const Eigen::Matrix<double, 12, 12> H = EvalKernelHessian({KernelKind::kAngle, 0, 0}, I, J);
   const double tau = k_ * s.angle + c_ * s.rate;
   LocalForceJacobian jac({&I, &J});

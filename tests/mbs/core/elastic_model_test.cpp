@@ -105,5 +105,61 @@ TEST(ElasticModel, EnergiesEqualTheNodeByNodeSumsOnTheMesh) {
               worst_kinetic, worst_gravity, worst_elastic);
 }
 
+// The evaluation runs its inertia (Sbar) products over the leading dynamic coordinates only
+// when the quasi-static ones trail; with them in front it takes the general path. Both must
+// give the same terms, permuted: mass, forces, energies and every derivative.
+TEST(ElasticModel, TrailingQuasiStaticCoordinatesGiveTheSameTermsAsAnyOrder) {
+  testing::BarSpec bar;
+  bar.interfaces = {"x0:rbe2", "x1:rbe3"};
+  bar.modes = 4;
+  bar.damping_ratio = 0.02;
+  bar.stiffening_supports = {"x0"};
+  mbs::ElasticModel trailing = mbs::MakeElasticModel(testing::FlexibleBar(bar), "bar");
+  const int ne = trailing.num_modes();
+  std::vector<bool> flags(ne, false);
+  for (int j = 6; j < ne; ++j) flags[j] = true;  // the 4 highest modes quasi-static
+  // The same model with the coordinates in reverse order: quasi-static ones first.
+  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(ne, ne);
+  for (int j = 0; j < ne; ++j) P(ne - 1 - j, j) = 1.0;
+  mbs::ElasticModel leading = trailing.Transformed(P);
+  std::vector<bool> reversed(flags.rbegin(), flags.rend());
+  trailing.MakeQuasiStatic(flags, "bar");
+  leading.MakeQuasiStatic(reversed, "bar");
+  ASSERT_EQ(trailing.num_leading_dynamic(), 6);
+  ASSERT_EQ(leading.num_leading_dynamic(), ne);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  VectorXd eta(ne), eta_dot(ne), accel(6 + ne);
+  for (int k = 0; k < ne; ++k) eta[k] = 1e-3 * u(rng), eta_dot[k] = u(rng);
+  for (int k = 0; k < 6 + ne; ++k) accel[k] = 100.0 * u(rng);
+  const Vector3d p(0.1, 0.2, 0.3), v(1, -2, 3), w(300, -200, 100), g(0, 0, -9.81),
+      a_B(5.0, -4.0, 3.0);
+  const Matrix3d R = mbs::RotationFromQuaternion(Eigen::Vector4d(0.3, -0.4, 0.5, 0.7));
+  // Body coordinates [rigid 6, eta] of the trailing model from the leading one's: Q.
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(6 + ne, 6 + ne);
+  Q.bottomRightCorner(ne, ne) = P;
+  const VectorXd accel_l = Q.transpose() * accel;
+  const mbs::FlexibleTerms a = mbs::CalcFlexibleTerms(trailing, p, R, v, w, eta, eta_dot, g, a_B,
+                                                      true, &accel);
+  const mbs::FlexibleTerms b = mbs::CalcFlexibleTerms(
+      leading, p, R, v, w, P.transpose() * eta, P.transpose() * eta_dot, g, a_B, true, &accel_l);
+  // The same products of the same numbers in another order (and skipped zeros).
+  constexpr double kRoundOff = 1e-12;
+  auto same = [&](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y, const char* what) {
+    EXPECT_LE((x - Q * y * Q.transpose()).norm(), kRoundOff * std::max(1.0, x.norm())) << what;
+  };
+  same(a.mass, b.mass, "mass");
+  same(a.damping, b.damping, "damping");
+  same(a.stiffness, b.stiffness, "stiffness");
+  same(a.inertia_stiffness, b.inertia_stiffness, "inertia stiffness");
+  same(a.force_accel, b.force_accel, "force_accel");
+  EXPECT_LE((a.force - Q * b.force).norm(), kRoundOff * a.force.norm());
+  EXPECT_NEAR(a.kinetic_energy, b.kinetic_energy, kRoundOff * a.kinetic_energy);
+  // The test is not empty: the quasi-static block of the mass is zero, the dynamic one not.
+  EXPECT_EQ(a.mass.bottomRightCorner(ne - 6, ne - 6).norm(), 0.0);
+  EXPECT_GT(a.mass.block(6, 6, 6, 6).norm(), 0.5);
+  EXPECT_GT(a.stiffness.bottomRightCorner(ne, ne).norm(), 1.0);
+}
+
 }  // namespace
 }  // namespace emb
