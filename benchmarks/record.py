@@ -22,6 +22,8 @@ The benchmark scripts call one subcommand each, which turns raw outputs into "da
   profile NAME DIR                   perf reports and run summary of inline4_profile.sh
   clonk NAME DIR RUN ...             driveline_clonk.sh: `emb run` and clonk_plots.py outputs
                                      DIR/RUN.{json,csv}, DIR/RUN_metrics.json against the first
+  ccx NAME H=EMB.json,EMB.time,CCX.json ...  `emb modes --json` and CalculiX per mesh size H
+                                     (benchmarks/ccx_vs_emb.sh), with a fitted t ∝ DOF^p
 All take --command "...". Run with /usr/bin/python3 (inline4 needs numpy, reduce-modes
 matplotlib for its plot).
 """
@@ -357,6 +359,60 @@ def collect_profile(directory):
             "by_function": shares(os.path.join(directory, "by_function.txt"), "symbol")}
 
 
+def peak_mb_from_time(path):
+    """Peak resident set [MB] from `/usr/bin/time -v`'s report."""
+    with open(path) as f:
+        for line in f:
+            if "Maximum resident set size" in line:
+                return int(line.rsplit(":", 1)[1]) / 1000
+    return None
+
+
+def wall_from_time(path):
+    with open(path) as f:
+        for line in f:
+            if "Elapsed (wall clock)" in line:
+                t = line.rsplit(" ", 1)[1].strip().split(":")
+                return sum(float(x) * 60 ** i for i, x in enumerate(reversed(t)))
+    return None
+
+
+def fit_power(dofs, seconds):
+    """p of t = a·DOF^p by least squares in log-log."""
+    x = [math.log(d) for d in dofs]
+    y = [math.log(t) for t in seconds]
+    mx, my = sum(x) / len(x), sum(y) / len(y)
+    sxx = sum((a - mx) ** 2 for a in x)
+    return sum((a - mx) * (b - my) for a, b in zip(x, y)) / sxx if sxx > 0 else None
+
+
+def collect_ccx(items):
+    runs = []
+    for h, paths in labelled(items):
+        emb_json, emb_time, ccx_json = paths.split(",")
+        r = load(emb_json)
+        s = r["summary"]
+        c = load(ccx_json)
+        emb_hz = [m["frequency_hz"] for m in r["modes"]]
+        ccx_hz = c["frequencies_hz"]
+        elastic = [i for i, m in enumerate(r["modes"]) if m["kind"] == "elastic"]
+        diff = max(abs(emb_hz[i] - ccx_hz[i]) / ccx_hz[i] for i in elastic if i < len(ccx_hz))
+        wall = wall_from_time(emb_time)
+        runs.append({"h_m": float(h), "dofs": s["dofs"], "nnz_factor": s["nnz_factor"],
+                     "emb_seconds": phases(s), "emb_wall_s": wall,
+                     "emb_peak_mb": peak_mb_from_time(emb_time),
+                     "ccx_wall_s": c["seconds"], "ccx_peak_mb": c["peak_memory_mb"],
+                     "ratio": c["seconds"] / wall, "max_rel_freq_diff": diff,
+                     "block_steps": s.get("block_steps"), "solves": s["solves"],
+                     "status": s["status"], "max_backward_error": s["max_backward_error"],
+                     "f7_hz": emb_hz[6] if len(emb_hz) > 6 else None})
+    runs.sort(key=lambda r: r["dofs"])
+    dofs = [r["dofs"] for r in runs]
+    growth = {"emb": fit_power(dofs, [r["emb_wall_s"] for r in runs]),
+              "ccx": fit_power(dofs, [r["ccx_wall_s"] for r in runs])} if len(runs) > 1 else {}
+    return {"runs": runs, "growth_exponent": growth}
+
+
 def collect_merge(items):
     return {"runs": [dict(name=label, **load(path)) for label, path in labelled(items)]}
 
@@ -373,7 +429,7 @@ def collect_run(program):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("kind", choices=["run", "merge", "modes", "reduce-sizes", "reduce-modes", "stiffening",
-                                    "compare", "web-width", "inline4", "profile", "clonk"])
+                                    "compare", "web-width", "inline4", "profile", "clonk", "ccx"])
     p.add_argument("name", help="results file name: benchmarks/results/NAME.json")
     p.add_argument("inputs", nargs="*")
     p.add_argument("--command", help="the command line that ran the benchmark (default: PROGRAM)")
@@ -405,6 +461,7 @@ def main():
             "inline4": lambda: collect_inline4(a.inputs[0], a.inputs[1:]),
             "profile": lambda: collect_profile(a.inputs[0]),
             "clonk": lambda: collect_clonk(a.inputs[0], a.inputs[1:]),
+            "ccx": lambda: collect_ccx(a.inputs),
         }
         data = collectors[a.kind]()
     write_result(a.name, command, data)

@@ -138,6 +138,28 @@ def crank_modes(res):
                  rows), [doc]
 
 
+def ccx_vs_emb(res):
+    doc = res("ccx_vs_emb")
+    rows = []
+    for r in doc["data"]["runs"]:
+        s = r["emb_seconds"]
+        rows.append([r["dofs"], num(r["ccx_wall_s"], ".1f"), num(r["emb_wall_s"], ".2f"),
+                     num(r["ratio"], ".1f"), num(s.get("assembly"), ".2f"),
+                     num(s.get("factorisation"), ".2f"), num(s.get("eigen-solve"), ".2f"),
+                     num(s.get("eigen-solve", 0) / s["factorisation"], ".2f"),
+                     num(s.get("checks"), ".2f"), r["solves"],
+                     num(r["ccx_peak_mb"], ".0f"), num(r["emb_peak_mb"], ".0f"),
+                     num(r["max_rel_freq_diff"], ".1e"), r["status"]])
+    g = doc["data"].get("growth_exponent", {})
+    lines = table(["DOF", "CalculiX s", "emb s", "CalculiX / emb", "assembly s", "factorisation s",
+                   "eigen-solve s", "eigen/factor", "checks s", "solves", "CalculiX MB",
+                   "emb MB", "max \\|Δf\\|/f", "status"], rows)
+    if g:
+        lines += ["", f"Fitted cost growth t ∝ DOF^p: emb p = {num(g.get('emb'), '.2f')}, "
+                      f"CalculiX p = {num(g.get('ccx'), '.2f')}."]
+    return lines, [doc]
+
+
 def block_solve(res):
     doc = res("block_solve")
     rows = []
@@ -359,7 +381,7 @@ def mbs_residual(res):
 
 
 TABLES = {f.__name__: f for f in [
-    crank_modes, block_solve, crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
+    crank_modes, ccx_vs_emb, block_solve, crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
     inline4_profile, mbs_work_precision, mbs_multiplier_rule, mbs_chains, mbs_residual,
     driveline_clonk, driveline_clonk_bands]}

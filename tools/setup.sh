@@ -20,6 +20,7 @@ packages=(
   libmuparser-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3-h5py python3-matplotlib python3-numpy python3-scipy
   clang libclang-rt-14-dev
+  calculix-ccx
 )
 missing=()
 for p in "${packages[@]}"; do

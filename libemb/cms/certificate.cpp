@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "libemb/cms/coupled_model.h"
@@ -12,6 +13,16 @@
 #include "libemb/fe/modal_analysis.h"
 
 namespace emb {
+
+double CertificateLimits::Orthonormality(double mass_condition) {
+  return std::max(kOrthonormality, kRoundOffMultiple * std::numeric_limits<double>::epsilon() *
+                                       std::max(mass_condition, 1.0));
+}
+double CertificateLimits::ConstraintModes(double stiffness_condition) {
+  return std::max(kConstraintModes, kRoundOffMultiple * std::numeric_limits<double>::epsilon() *
+                                        std::max(stiffness_condition, 1.0));
+}
+
 namespace {
 // A small number with its digits ("4.6e-10", not std::to_string's "0.000000").
 std::string Sci(double v) {
@@ -80,11 +91,12 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
   cert.orthonormality_error = modes.orthonormality_error;
   cert.k_diagonality_error = modes.k_diagonality_error;
   cert.rigid_stiffness = modes.rigid_stiffness;
-  if (!(cert.orthonormality_error <= CertificateLimits::kOrthonormality &&
-        cert.k_diagonality_error <= CertificateLimits::kOrthonormality))
+  cert.orthonormality_limit = CertificateLimits::Orthonormality(modes.mass_condition);
+  if (!(cert.orthonormality_error <= cert.orthonormality_limit &&
+        cert.k_diagonality_error <= cert.orthonormality_limit))
     fail("the orthonormalised basis is not M-orthonormal and K-diagonal (errors " +
          Sci(cert.orthonormality_error) + " and " + Sci(cert.k_diagonality_error) + ", limit " +
-         Sci(CertificateLimits::kOrthonormality) + ")");
+         Sci(cert.orthonormality_limit) + " at mass condition " + Sci(modes.mass_condition) + ")");
 
   // 4. Free-free frequencies vs the full model.
   const int ne = static_cast<int>(modes.frequencies_hz.size());
@@ -173,9 +185,11 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
   cert.reduction_log = basis.eig.num_requested > 0 ? EigenLog(basis.eig) : "no eigen-solve";
   cert.constraint_mode_iterations = basis.static_iterations;
   cert.constraint_mode_residual = basis.static_residual;
-  if (!basis.free_free && !(basis.static_residual <= CertificateLimits::kConstraintModes))
+  cert.constraint_mode_limit = CertificateLimits::ConstraintModes(basis.stiffness_condition);
+  if (!basis.free_free && !(basis.static_residual <= cert.constraint_mode_limit))
     fail("the constraint modes are inaccurate (relative residual " +
-         Sci(basis.static_residual) + ", limit " + Sci(CertificateLimits::kConstraintModes) + ")");
+         Sci(basis.static_residual) + ", limit " + Sci(cert.constraint_mode_limit) +
+         " at stiffness condition " + Sci(basis.stiffness_condition) + ")");
   return cert;
 }
 

@@ -36,12 +36,23 @@ struct CertificateOptions {
   EigenSolverOptions solver;  ///< for the reference solve
 };
 
-/// Limits the certificate asserts.
+/// Limits the certificate asserts. The orthonormality and constraint-mode limits are floors:
+/// they grow with the conditioning of the problem (issue 14: a slender bar's correctly computed
+/// basis is orthonormal to 7e-10 because its M̂ spans 1e6 in modal mass), as
+///     limit = max(floor, kRoundOffMultiple · ε · condition),
+/// with the condition of M̂ (OrthonormalModes::mass_condition) and of K_II
+/// (ReductionBasis::stiffness_condition) respectively.
 struct CertificateLimits {
   static constexpr double kMassProperties = 1e-10;  ///< relative error of m, c, I
   static constexpr double kStatic = 1e-8;           ///< relative error of interface displacements
-  static constexpr double kOrthonormality = 1e-10;  ///< ‖XᵀM̂X − I‖, ‖XᵀK̂X − Λ‖/max λ
-  static constexpr double kConstraintModes = 1e-10; ///< relative residual of the static solves
+  static constexpr double kOrthonormality = 1e-10;  ///< floor: ‖XᵀM̂X − I‖, ‖XᵀK̂X − Λ‖/max λ
+  static constexpr double kConstraintModes = 1e-10; ///< floor: relative residual of the static solves
+  /// Round-off of a backward-stable dense eigen-decomposition or solve is a modest multiple of
+  /// ε·condition (the multiple grows with the size, nr ≲ a few hundred here); 100 leaves room
+  /// for that and is still 10⁶ times below an O(1) lost direction at condition 1e8.
+  static constexpr double kRoundOffMultiple = 100.0;
+  static double Orthonormality(double mass_condition);
+  static double ConstraintModes(double stiffness_condition);
 };
 
 struct ModePair {
@@ -65,6 +76,7 @@ struct ReductionCertificate {
   int num_near_zero{0};
   // 3.
   double orthonormality_error{0.0}, k_diagonality_error{0.0}, rigid_stiffness{0.0};
+  double orthonormality_limit{CertificateLimits::kOrthonormality};  ///< as scaled
   // 4.
   bool reference_run{false};
   double fmax_hz{0.0};
@@ -83,6 +95,7 @@ struct ReductionCertificate {
   std::string reduction_log;
   int constraint_mode_iterations{0};
   double constraint_mode_residual{0.0};  ///< relative residual of the constraint modes
+  double constraint_mode_limit{CertificateLimits::kConstraintModes};  ///< as scaled
   // Verdict.
   std::vector<std::string> failures;
   bool passed() const { return failures.empty(); }

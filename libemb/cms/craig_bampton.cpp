@@ -79,7 +79,7 @@ EigenResult SolveSelected(ShiftInvertSolver& solver, int available, const Reduct
                           std::string& note, const ProgressFn& progress) {
   const ModeSelection& sel = o.selection;
   EigenSolverOptions so = o.solver;
-  so.shift = LambdaFromHz(o.shift_hz);
+  so.shift = solver.pinned() ? 0.0 : LambdaFromHz(o.shift_hz);
   const double cutoff = sel.CutoffHz();
   const int limit = available - 1;  // Lanczos needs fewer than the problem size
   EigenResult r = SolveLowestModes(
@@ -304,10 +304,21 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
                "number of modes: " << sel.count << " requested but the interior has only "
                                    << available << " degrees of freedom");
   ShiftInvertSolver solver(KII, MII, C, o.solver.backend);
-  const double sigma = LambdaFromHz(o.shift_hz);
-  if (!solver.Prepare(sigma))
+  const Eigen::MatrixXd R = RigidBodyModes(mesh);
+  // Only RBE3 averages hold the part: K_II is singular and K_II − σM nearly so in the rigid
+  // directions (its constrained solves would cancel rigid parts 1/|σ| large, and the Schur
+  // complement of the averages is ill-conditioned: a slender bar's three RBE3 sections were
+  // refused as "dependent", issue 19). The constrained inverse of K_II itself is applied
+  // instead, through a factorisation pinned 3-2-1 (shift 0): for the fixed-interface modes and
+  // the constraint modes alike. With no slaved unknowns the interior rigid motions are the
+  // full ones.
+  if (slaved.empty()) solver.PinRigidMotions(R, PinUnknowns(mesh, part));
+  const double sigma = slaved.empty() ? 0.0 : LambdaFromHz(o.shift_hz);
+  if (!solver.Prepare(sigma)) {
+    if (slaved.empty()) ThrowUnrestrained(mesh, interfaces, solver.message());
     EMB_THROW(NumericalError, "fixed-interface matrix K_II - sigma M_II (sigma = "
                                   << sigma << ") could not be factorised: " << solver.message());
+  }
   b.times.Add("factorisation", solver.factor_seconds());
   const double threshold = 1e-10 * NormOne(KII) / NormOne(MII);
 
@@ -325,6 +336,8 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
                         std::to_string(rigid) + " fixed-interface modes at 0 Hz");
   }
   const int nm = static_cast<int>(b.eig.eigenvalues.size());
+  if (nm > 0 && b.eig.eigenvalues[0] > 0.0)
+    b.stiffness_condition = std::max(1.0, NormOne(KII) / NormOne(MII) / b.eig.eigenvalues[0]);
   b.mode_frequencies_hz.resize(nm);
   for (int i = 0; i < nm; ++i) b.mode_frequencies_hz[i] = FrequencyHz(b.eig.eigenvalues[i]);
 
@@ -332,17 +345,11 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   sw.Restart();
   if (progress) progress("constraint modes", 0.0);
   const Eigen::MatrixXd rhs = -MultiplyExtended(KIS, TS);
-  const Eigen::MatrixXd R = RigidBodyModes(mesh);
   Eigen::MatrixXd RI(ni, 6);
   for (int k = 0; k < ni; ++k) RI.row(k) = R.row(interior[k]);
   Eigen::MatrixXd Psi;
-  std::unique_ptr<PinnedConstrainedSolver> pinned;
-  if (slaved.empty()) {
-    // Only RBE3 averages hold the part: K_II is singular and K_II − σM nearly so in the rigid
-    // directions; pin it instead (pinned_solver.h: one more factorisation, unshifted). With no
-    // slaved unknowns the interior rigid motions are the full ones.
-    pinned = std::make_unique<PinnedConstrainedSolver>(KII, R, PinUnknowns(mesh, part), C);
-    if (!pinned->ok()) ThrowUnrestrained(mesh, interfaces, pinned->message());
+  const PinnedConstrainedSolver* pinned = solver.pinned();
+  if (pinned) {
     Psi = pinned->Solve(rhs, Q);
     b.static_iterations = PinnedConstrainedSolver::kRefinementSteps;
   } else {

@@ -77,6 +77,11 @@ struct ReductionBasis {
   /// max over ψ of ‖K_II ψ + K_IS u_S‖ outside range(Cᵀ) / (‖K_II ψ‖ + ‖K_IS u_S‖)
   double static_residual{0.0};
   double rigid_correction{0.0};        ///< ‖R_I − Ψ P‖/‖R_I‖ before the rigid correction
+  /// Condition estimate of the interior stiffness the constraint modes solve with:
+  /// (‖K_II‖₁/‖M_II‖₁) / λ₁, the stiffness scale over the lowest fixed-interface eigenvalue
+  /// (1 when no mode was computed). A slender part's K_II is ill-conditioned, and the relative
+  /// residual a correctly rounded solution leaves grows with it.
+  double stiffness_condition{1.0};
   /// Reduced coordinates of the six rigid motions about the origin (translations x, y, z,
   /// rotations x, y, z): (nr × 6), exact by construction.
   Eigen::MatrixXd rigid;

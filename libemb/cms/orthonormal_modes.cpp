@@ -36,6 +36,10 @@ OrthonormalModes Orthonormalise(const Eigen::MatrixXd& K, const Eigen::MatrixXd&
   int keep = 0;
   for (int i = 0; i < nr; ++i) keep += me.eigenvalues()[i] > dmin;
   out.num_dropped = nr - keep;
+  double dkept = dmax;
+  for (int i = 0; i < nr; ++i)
+    if (me.eigenvalues()[i] > dmin) dkept = std::min(dkept, me.eigenvalues()[i]);
+  out.mass_condition = dkept > 0.0 ? dmax / dkept : 1.0;
   Eigen::MatrixXd Z(nr, keep);
   for (int i = 0, k = 0; i < nr; ++i)
     if (me.eigenvalues()[i] > dmin) Z.col(k++) = me.eigenvectors().col(i) / std::sqrt(me.eigenvalues()[i]);
@@ -52,6 +56,7 @@ OrthonormalModes Orthonormalise(const Eigen::MatrixXd& K, const Eigen::MatrixXd&
                                   << rdiag << " of " << rmax << ")");
   const Eigen::MatrixXd Qr = Qfull.leftCols(6), Qc = Qfull.rightCols(keep - 6);
   out.rigid = Z * Qr;
+  CanonicalizeEigenvectors(out.rigid, Eigen::VectorXd::Zero(6));
 
   // Elastic modes in the M̂-orthogonal complement of the rigid motions.
   const Eigen::MatrixXd Kz = Symmetric(Z.transpose() * Ks * Z);
@@ -59,6 +64,9 @@ OrthonormalModes Orthonormalise(const Eigen::MatrixXd& K, const Eigen::MatrixXd&
   if (ke.info() != Eigen::Success) EMB_THROW(NumericalError, "reduced stiffness: eigen-decomposition failed");
   out.eigenvalues = ke.eigenvalues();
   out.elastic = Z * Qc * ke.eigenvectors();
+  // Signs and degenerate rotations canonical (issue 12): the same body file from one BLAS
+  // thread or two. The rigid block is a rotation of an exact basis: canonical as one group.
+  CanonicalizeEigenvectors(out.elastic, out.eigenvalues);
   out.frequencies_hz = out.eigenvalues.unaryExpr([](double l) { return Hz(l); });
 
   // (3) The unconstrained spectrum: exactly six ~0 eigenvalues expected.

@@ -26,6 +26,10 @@ struct OrthonormalModes {
   Eigen::VectorXd rigid_frequencies_hz;
   int num_near_zero{0};
   int num_dropped{0};               ///< dependent basis directions removed in step (1)
+  /// Spectral condition number of M̂ on the kept directions (d_max / d_min of step 1): the
+  /// M̂-orthonormality of X is attainable to ~ε·mass_condition (a basis of modes and
+  /// constraint modes of a slender part spans decades of modal mass).
+  double mass_condition{1.0};
   double orthonormality_error{0.0}; ///< ‖XᵀM̂X − I‖_max (elastic and rigid together)
   /// Largest backward error of the pairs (λ, x) on (K̂, M̂), rigid ones with λ = 0
   /// (linalg/dense_eigen.h).

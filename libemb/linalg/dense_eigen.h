@@ -57,4 +57,15 @@ struct DenseEigenpairs {
 DenseEigenpairs SolveDenseEigenpairs(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
                                      bool check = true);
 
+/// Eigenvectors in a canonical form, so that two runs whose matrices differ by round-off (e.g.
+/// one BLAS thread against two, issue 12) give the same vectors to round-off, not vectors of
+/// the opposite sign or a rotated degenerate pair: within each group of eigenvalues equal to
+/// `group_tolerance` (relative), the columns X_G are rotated so that Wᵀ X_G is lower
+/// triangular with a positive diagonal, W a fixed pseudo-random field of the row index (the
+/// same for every size and run); a single vector so that wᵀx > 0. Orthonormality in any inner
+/// product is kept (the rotation is orthogonal). Returns the rotation R (m × m, block
+/// diagonal): X_new = X_old R, so products such as K X follow as (K X) R. Cost O(n g²) per group.
+Eigen::MatrixXd CanonicalizeEigenvectors(Eigen::MatrixXd& X, const Eigen::VectorXd& lambda,
+                                         double group_tolerance = 1e-8);
+
 }  // namespace emb

@@ -25,15 +25,19 @@
 namespace emb {
 
 enum class EigenMethod {
-  kAuto,     ///< dense for n ≤ 300, Lanczos otherwise
-  kLanczos,  ///< Spectra's shift-invert Lanczos (needs num_modes < n)
+  kAuto,     ///< dense for n ≤ 300, block Krylov–Schur otherwise
+  kBlock,    ///< block shift-invert Krylov–Schur on multi-RHS solves (block_krylov_schur.h)
+  kLanczos,  ///< Spectra's single-vector shift-invert Lanczos (needs num_modes < n)
   kDense,    ///< Eigen's dense generalized solver (small problems, cross-checks)
 };
 
 struct EigenSolverOptions {
   int num_modes{10};             ///< how many eigenpairs nearest the shift
   double shift{-1.0};            ///< σ [rad²/s²]; < 0 for the lowest modes of a PSD pencil
-  int subspace{0};               ///< Lanczos basis size ncv; 0 = max(2·num_modes + 1, num_modes + 20)
+  /// Krylov basis size (ncv); 0 = automatic: Lanczos max(2·num_modes + 1, num_modes + 20),
+  /// block max(2·num_modes, num_modes + 4·block)
+  int subspace{0};
+  int block_size{0};             ///< right-hand sides per solve of the block method; 0 = automatic
   double tolerance{1e-10};       ///< Spectra's relative tolerance on the Ritz values
   int max_restarts{1000};        ///< Spectra's restart limit
   double residual_tolerance{1e-8};  ///< largest accepted backward error η_i
@@ -63,13 +67,18 @@ struct EigenResult {
   double orthonormality_error{0.0};  ///< ‖ΦᵀMΦ − I‖_max
   int num_requested{0};
   int num_converged{0};
-  int iterations{0};                 ///< Lanczos restarts
-  int num_solves{0};                 ///< applications of (K − σM)⁻¹
+  int iterations{0};                 ///< Krylov restarts
+  int num_solves{0};                 ///< applications of (K − σM)⁻¹ (vectors)
+  int block_size{1};                 ///< right-hand sides per solve (1: single-vector Lanczos)
+  int block_steps{0};                ///< block solves (= num_solves for single vectors)
+  int num_null{0};                   ///< null vectors of K found and deflated first (block)
   int sturm_count{-1};               ///< eigenvalues below σ_c by inertia, -1 if not checked
   double shift{0.0};
-  std::string method;                ///< "lanczos" or "dense"
+  std::string method;                ///< "block", "lanczos" or "dense"
   FactorInfo factor;                 ///< the factorisation of K − σM
   PhaseTimes times;                  ///< "factorisation", "eigen-solve", "checks"
+  PhaseTimes block_times;            ///< inside the block eigen-solve: "null space", "solves",
+                                     ///< "mass products", "orthogonalisation and Rayleigh-Ritz"
   bool ok() const { return status == EigenStatus::kSuccess; }
 };
 

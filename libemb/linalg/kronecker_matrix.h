@@ -18,6 +18,8 @@ class KroneckerIdentityMatrix {
 
   /// y = A x for vectors of A.rows() entries (x and y must not overlap).
   void Multiply(const double* x, double* y) const;
+  /// Y = A X for a block of columns (Y is resized).
+  void Multiply(const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) const;
 
   const SparseMatrix& scalar() const { return a_; }
   int block() const { return k_; }

@@ -77,4 +77,11 @@ Eigen::MatrixXd PinnedConstrainedSolver::Solve(const Eigen::MatrixXd& B, const E
   return X;
 }
 
+Eigen::MatrixXd PinnedConstrainedSolver::Apply(const Eigen::MatrixXd& B) const {
+  EMB_CHECK(ok_);
+  Eigen::MatrixXd X, mu;
+  SolveOnce(B, Eigen::MatrixXd::Zero(C_.rows(), B.cols()), X, mu);
+  return X;
+}
+
 }  // namespace emb

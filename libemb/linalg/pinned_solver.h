@@ -41,10 +41,15 @@ class PinnedConstrainedSolver {
   static constexpr int kRefinementSteps = 3;
   bool ok() const { return ok_; }
   const std::string& message() const { return message_; }
+  /// The factorisation of K_ff.
+  const FactorInfo& factor() const { return chol_.info(); }
 
   /// X (n × k) and, if wanted, μ (m × k) for right-hand sides B (n × k) and Q (m × k).
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& B, const Eigen::MatrixXd& Q,
                         Eigen::MatrixXd* multipliers = nullptr) const;
+  /// X for Q = 0 by one pass, without refinement: the constrained inverse of K on C x = 0 as
+  /// an operator (a shift-invert operator at σ = 0), accurate to cond(K_ff)·ε like any solve.
+  Eigen::MatrixXd Apply(const Eigen::MatrixXd& B) const;
 
  private:
   void SolveOnce(const Eigen::MatrixXd& B, const Eigen::MatrixXd& Q, Eigen::MatrixXd& X,

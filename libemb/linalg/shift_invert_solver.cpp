@@ -22,12 +22,32 @@ ShiftInvertSolver::ShiftInvertSolver(const SparseMatrix& K, const SparseMatrix& 
 
 ShiftInvertSolver::~ShiftInvertSolver() = default;
 
+void ShiftInvertSolver::PinRigidMotions(Eigen::MatrixXd R, std::vector<int> pins) {
+  EMB_CHECK(R.rows() == K_.rows() && static_cast<int>(pins.size()) == R.cols());
+  pin_R_ = std::move(R);
+  pins_ = std::move(pins);
+  ok_ = false;
+}
+
 bool ShiftInvertSolver::Prepare(double sigma) {
   Stopwatch sw;
   sigma_ = sigma;
   ok_ = false;
   message_.clear();
   solve_backward_error_ = std::numeric_limits<double>::infinity();
+  if (!pins_.empty()) {
+    EMB_THROW_IF(sigma != 0.0, "shift-invert solver: the pinned mode needs the shift 0, got "
+                                   << sigma);
+    pinned_ = std::make_unique<PinnedConstrainedSolver>(K_, pin_R_, pins_, C_);
+    factor_seconds_ += sw.seconds();
+    if (!pinned_->ok()) {
+      message_ = pinned_->message();
+      return false;
+    }
+    solve_backward_error_ = 0.0;
+    ok_ = true;
+    return true;
+  }
   SparseMatrix A = K_ - sigma * M_;
   A.makeCompressed();
   const FactorInfo& info = chol_.Factorize(A);
@@ -79,6 +99,12 @@ bool ShiftInvertSolver::Prepare(double sigma) {
 
 void ShiftInvertSolver::Solve(const double* b, double* x) const {
   EMB_CHECK(ok_);
+  if (pinned_) {
+    Eigen::Map<Eigen::VectorXd>(x, rows()) =
+        pinned_->Apply(Eigen::Map<const Eigen::VectorXd>(b, rows()));
+    ++solves_;
+    return;
+  }
   chol_.Solve(b, x);
   ++solves_;
   if (C_.rows() == 0) return;
@@ -90,6 +116,11 @@ void ShiftInvertSolver::Solve(const double* b, double* x) const {
 Eigen::MatrixXd ShiftInvertSolver::Solve(const Eigen::MatrixXd& B, const Eigen::MatrixXd& Q) const {
   EMB_CHECK(ok_);
   EMB_CHECK(B.rows() == rows());
+  if (pinned_) {
+    solves_ += static_cast<int>(B.cols());
+    if (Q.size() > 0) return pinned_->Solve(B, Q);
+    return pinned_->Apply(B);
+  }
   Eigen::MatrixXd X = chol_.Solve(B);
   solves_ += static_cast<int>(B.cols());
   if (C_.rows() == 0) return X;
@@ -100,6 +131,17 @@ Eigen::MatrixXd ShiftInvertSolver::Solve(const Eigen::MatrixXd& B, const Eigen::
   }
   X.noalias() -= Y_ * S_.solve(R);
   return X;
+}
+
+void ShiftInvertSolver::ProjectOntoConstraints(Eigen::MatrixXd& X) const {
+  EMB_CHECK(ok_);
+  if (C_.rows() == 0) return;
+  if (pinned_) {  // the K-orthogonal projection: X − K_C⁻¹ ... through the pinned solver
+    const Eigen::MatrixXd CCt = Eigen::MatrixXd(C_ * C_.transpose());
+    X.noalias() -= C_.transpose() * CCt.ldlt().solve(C_ * X);  // Euclidean projection
+    return;
+  }
+  X.noalias() -= Y_ * S_.solve(C_ * X);
 }
 
 }  // namespace emb

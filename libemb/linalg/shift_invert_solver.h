@@ -15,12 +15,21 @@
 /// Craig–Bampton reduction whose interfaces are weighted averages (RBE3) of surface motion.
 ///
 /// Without constraints (C empty) it is a plain factorisation of K − σM.
+///
+/// Pinned mode (PinRigidMotions, σ = 0 only): for a part held by the constraints alone (e.g.
+/// only RBE3 averages), K is singular and K − σM at a small σ < 0 nearly so in the rigid
+/// directions: the Schur complement S is then ill-conditioned (λ₁/|σ| ~ 1e8 on a slender bar,
+/// times the scale of the rotation rows) and the constrained solves cancel large rigid parts.
+/// Instead the exact constrained inverse of K is applied through a pinned factorisation
+/// (pinned_solver.h): K_ff positive definite with six unknowns pinned 3-2-1.
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Cholesky>
 
+#include "libemb/linalg/pinned_solver.h"
 #include "libemb/linalg/sparse_cholesky.h"
 #include "libemb/linalg/sparse_types.h"
 
@@ -37,6 +46,12 @@ class ShiftInvertSolver {
   ShiftInvertSolver(const ShiftInvertSolver&) = delete;
   ShiftInvertSolver& operator=(const ShiftInvertSolver&) = delete;
 
+  /// Switches to pinned mode: R (n × r) the exact null space of K (rigid motions), `pins` r
+  /// unknowns that hold them statically determinately. Prepare then accepts only σ = 0.
+  void PinRigidMotions(Eigen::MatrixXd R, std::vector<int> pins);
+  /// The pinned solver (pinned mode, after Prepare), else nullptr.
+  const PinnedConstrainedSolver* pinned() const { return pinned_.get(); }
+
   /// Factorises K − σM and, with constraints, forms Y and S. Returns false (see message())
   /// if the factorisation failed, is inaccurate (backward error of a test solve > 1e-10) or if
   /// S is not positive definite (dependent constraints, or an indefinite A).
@@ -48,6 +63,11 @@ class ShiftInvertSolver {
   /// for Q = 0).
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& B, const Eigen::MatrixXd& Q = {}) const;
 
+  /// X ← X − A⁻¹Cᵀ S⁻¹ C X: the A-orthogonal projection onto C x = 0 (no-op without
+  /// constraints). Removes the constraint violation that cancellation in a Krylov
+  /// orthogonalisation amplifies (range(A⁻¹Cᵀ) is what a constrained solve already subtracts).
+  void ProjectOntoConstraints(Eigen::MatrixXd& X) const;
+
   int rows() const { return static_cast<int>(K_.rows()); }
   const SparseMatrix& K() const { return K_; }
   const SparseMatrix& M() const { return M_; }
@@ -56,7 +76,7 @@ class ShiftInvertSolver {
   int num_constraints() const { return static_cast<int>(C_.rows()); }
   double shift() const { return sigma_; }
   bool ok() const { return ok_; }
-  const FactorInfo& factor() const { return chol_.info(); }
+  const FactorInfo& factor() const { return pinned_ ? pinned_->factor() : chol_.info(); }
   double solve_backward_error() const { return solve_backward_error_; }
   const std::string& message() const { return message_; }
   int solves() const { return solves_; }              ///< single right-hand sides solved
@@ -73,6 +93,9 @@ class ShiftInvertSolver {
   bool ok_{false};
   double solve_backward_error_{0.0};
   std::string message_;
+  Eigen::MatrixXd pin_R_;
+  std::vector<int> pins_;
+  std::unique_ptr<PinnedConstrainedSolver> pinned_;
   mutable int solves_{0};
   double factor_seconds_{0.0};
 };

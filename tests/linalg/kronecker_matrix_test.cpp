@@ -30,6 +30,15 @@ TEST(KroneckerIdentityMatrix, MassMatricesAreDetectedAndAppliedExactly) {
     Eigen::VectorXd y(M.rows());
     kron->Multiply(x.data(), y.data());
     EXPECT_LE((y - M * x).cwiseAbs().maxCoeff(), kRoundOff * (M * x).cwiseAbs().maxCoeff());
+    // A block of 7 columns (one group of four per pass, the rest one by one): each column is
+    // the single product bit for bit (the same sums in the same order).
+    const Eigen::MatrixXd X = Eigen::MatrixXd::Random(M.rows(), 7);
+    Eigen::MatrixXd Y;
+    kron->Multiply(X, Y);
+    for (int j = 0; j < 7; ++j) {
+      kron->Multiply(X.col(j).data(), y.data());
+      EXPECT_EQ((Y.col(j) - y).cwiseAbs().maxCoeff(), 0.0) << "column " << j;
+    }
   }
   EXPECT_FALSE(KroneckerIdentityMatrix::Detect(sys.K, 3).has_value());
   SparseMatrix odd = sys.M;

@@ -26,6 +26,7 @@ struct ModesCommand {
   double shift_hz{-1.0};
   std::vector<std::string> fixed_groups;
   int subspace{0};
+  int block_size{0};
   double tolerance{1e-10};
   int max_restarts{1000};
   bool sturm_check{false};
@@ -67,6 +68,8 @@ struct ModesCommand {
     mo.solver.max_restarts = max_restarts;
     mo.solver.sturm_check = sturm_check;
     if (backend == "eigen") mo.solver.backend = CholeskyBackend::kEigenLDLT;
+    mo.solver.block_size = block_size;
+    if (method == "block") mo.solver.method = EigenMethod::kBlock;
     if (method == "lanczos") mo.solver.method = EigenMethod::kLanczos;
     if (method == "dense") mo.solver.method = EigenMethod::kDense;
     for (const auto& g : fixed_groups) {
@@ -107,8 +110,10 @@ struct ModesCommand {
                 std::to_string(num_modes + 1));
     s.Add("method", "eigen-solver", modes.eig.method);
     s.Add("shift", "shift sigma [rad^2/s^2]", modes.eig.shift);
-    s.Add("iterations", "Lanczos restarts", static_cast<long long>(modes.eig.iterations));
-    s.Add("solves", "solves with K - sigma M", static_cast<long long>(modes.eig.num_solves));
+    s.Add("iterations", "Krylov restarts", static_cast<long long>(modes.eig.iterations));
+    s.Add("solves", "solves with K - sigma M (vectors)", static_cast<long long>(modes.eig.num_solves));
+    s.Add("block_size", "right-hand sides per solve", static_cast<long long>(modes.eig.block_size));
+    s.Add("block_steps", "block solves", static_cast<long long>(modes.eig.block_steps));
     s.Add("nnz_factor", "nonzeros in factor", static_cast<long long>(modes.eig.factor.nnz_factor));
     s.Add("max_backward_error", "max backward error", modes.eig.max_backward_error);
     s.Add("orthonormality_error", "M-orthonormality error", modes.eig.orthonormality_error);
@@ -156,11 +161,16 @@ void RegisterModesCommand(CLI::App& app) {
   cmd->add_option("--fixed", st->fixed_groups,
                   "Clamp all nodes of this physical group (repeatable); default free-free");
   cmd->add_option("--method", st->method,
-                  "Eigen-solver: auto (dense up to 300 unknowns, else lanczos), lanczos "
-                  "(Spectra's shift-invert Lanczos), dense")
+                  "Eigen-solver: auto (dense up to 300 unknowns, else block), block (block "
+                  "shift-invert Krylov-Schur on multi-RHS solves), lanczos (Spectra's "
+                  "single-vector shift-invert Lanczos), dense")
       ->capture_default_str()
-      ->check(CLI::IsMember({"auto", "lanczos", "dense"}));
-  cmd->add_option("--ncv", st->subspace, "Lanczos subspace size (0 = automatic)")
+      ->check(CLI::IsMember({"auto", "block", "lanczos", "dense"}));
+  cmd->add_option("--ncv", st->subspace, "Krylov basis size (0 = automatic)")
+      ->capture_default_str();
+  cmd->add_option("--block-size", st->block_size,
+                  "Right-hand sides per solve of the block method (0 = automatic: 8 for up to "
+                  "12 modes, else 16)")
       ->capture_default_str();
   cmd->add_option("--tol", st->tolerance, "Lanczos relative tolerance")->capture_default_str();
   cmd->add_option("--max-restarts", st->max_restarts, "Spectra's Lanczos restart limit")

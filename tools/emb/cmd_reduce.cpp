@@ -165,6 +165,8 @@ struct ReduceCommand {
     cert.Add("max_rigid_hz", "largest rigid-body frequency [Hz]",
              ct.rigid_hz.size() ? ct.rigid_hz.cwiseAbs().maxCoeff() : 0.0);
     cert.Add("orthonormality_error", "M-orthonormality error", ct.orthonormality_error);
+    cert.Add("orthonormality_limit", "orthonormality limit (scaled by cond M^)",
+             ct.orthonormality_limit);
     cert.Add("k_diagonality_error", "K-diagonality error", ct.k_diagonality_error);
     cert.Add("rigid_stiffness", "rigid-motion strain residual", ct.rigid_stiffness);
     if (ct.reference_run) {
@@ -173,8 +175,8 @@ struct ReduceCommand {
       // The design target: frequencies below the band within 0.1 % of the full model.
       if (ct.max_frequency_error > 1e-3)
         cert.Add("warning", "warning",
-                 "frequencies up to " + std::to_string(ct.fmax_hz) + " Hz are off by up to " +
-                     std::to_string(100.0 * ct.max_frequency_error) +
+                 "frequencies up to " + FormatNumber(ct.fmax_hz) + " Hz are off by up to " +
+                     FormatNumber(100.0 * ct.max_frequency_error) +
                      " %: keep more modes (--modes, --fmax or a larger --band-factor)");
       cert.Add("min_mac", "min MAC (paired)", ct.min_mac);
       cert.Add("unrepresented", "full modes not represented", static_cast<long long>(ct.num_unrepresented));
@@ -186,8 +188,9 @@ struct ReduceCommand {
     if (ct.static_run) cert.Add("static_error", "static rel. error (limit 1e-8)", ct.static_error);
     cert.Add("reduction_log", "fixed-interface eigen-solve", ct.reduction_log);
     if (!body.free_free) {
-      cert.Add("constraint_mode_residual", "constraint-mode residual (limit 1e-10)",
-               ct.constraint_mode_residual);
+      cert.Add("constraint_mode_residual", "constraint-mode residual", ct.constraint_mode_residual);
+      cert.Add("constraint_mode_limit", "constraint-mode limit (scaled by cond K_II)",
+               ct.constraint_mode_limit);
       cert.Add("constraint_mode_iterations", "constraint-mode refinement steps",
                static_cast<long long>(ct.constraint_mode_iterations));
     }

@@ -76,4 +76,10 @@ nlohmann::json Summary::ToJson() const {
   return o;
 }
 
+std::string FormatNumber(double value, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+  return buf;
+}
+
 }  // namespace emb::cli

@@ -47,4 +47,8 @@ class Summary {
   std::vector<std::tuple<std::string, std::string, nlohmann::json>> items_;
 };
 
+/// A number for a message with its significant digits ("4.6e-10", "0.35", "3000"), never
+/// std::to_string's fixed six decimals ("0.000000").
+std::string FormatNumber(double value, int digits = 3);
+
 }  // namespace emb::cli
