@@ -15,16 +15,10 @@ namespace emb {
 namespace {
 
 IntegratorStats SpinBar(double rtol, bool former_settings) {
-  testing::BarSpec bar;
-  bar.interfaces = {"x0:rbe2", "x1:rbe3"};
-  bar.modes = 2;
-  bar.damping_ratio = 0.02;
-  bar.stiffening_supports = {"x0"};
-  mbs::FlexibleBodyOptions options;
-  options.geometric_stiffening = mbs::GeometricStiffening::kOn;
   Eigen::VectorXd eta0 = Eigen::VectorXd::Zero(8);
   eta0.head(2).setConstant(1e-4);  // flap and lag
-  const mbs::System sys = testing::SpinningBar(bar, 300.0, options, eta0);
+  const mbs::System sys =
+      testing::SpinningBar(testing::SpinningBarSpec(), 300.0, testing::StiffenedOptions(), eta0);
   mbs::AnalysisSettings settings;
   settings.t_end = 0.2;
   settings.output_step = 1e-3;

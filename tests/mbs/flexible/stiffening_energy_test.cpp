@@ -17,7 +17,7 @@
 #include "libemb/mbs/core/dynamics.h"
 #include "libemb/mbs/core/kinematics.h"
 #include "libemb/mbs/flexible/flexible_body.h"
-#include "tests/support/flexible_bar.h"
+#include "tests/support/spinning_bar.h"
 
 namespace emb {
 namespace {
@@ -39,38 +39,13 @@ testing::BarSpec Bar() {
 
 constexpr double kSpin = 6.0;  // [rad/s]
 
-// The bar clamped to a hub driven at kSpin about the world z axis through the bar's root,
-// gravity along -z, released from a bend of its first two elastic coordinates.
+// The bar clamped to a hub driven at kSpin about the world z axis through the centre of the
+// bar's root face, gravity along -z, released from a bend of its first two coordinates.
 mbs::System DrivenBar() {
   const testing::BarSpec bar = Bar();
-  mbs::FlexibleBodyOptions options;
-  options.geometric_stiffening = mbs::GeometricStiffening::kOn;
-  const Eigen::Vector3d spin(0, 0, kSpin), hub_point(0, 0.15, 0.1);
-  mbs::System sys;
-  sys.SetGravity({0, 0, -9.81});
-  mbs::RigidBody hub;
-  hub.name = "hub";
-  hub.mass = 10.0;
-  hub.inertia_B = Eigen::Matrix3d::Identity();
-  hub.p_WB = hub_point;
-  hub.omega_W = spin;
-  sys.AddBody(hub);
-  mbs::PartPlacement placement;
-  placement.omega_W = spin;
   Eigen::VectorXd eta0 = Eigen::VectorXd::Zero(6 * 2 + bar.modes - 6);
   eta0.head(2).setConstant(1.0);  // [kg^0.5 m]: ~15 mm at the tip (4710 kg)
-  const mbs::FlexiblePart part =
-      mbs::AddFlexibleBody(&sys, "bar", testing::FlexibleBar(bar), "bar", options, placement, eta0);
-  mbs::AddInterfaceMarker(&sys, part, "root", "x0");
-  mbs::AddInterfaceMarker(&sys, part, "tip", "x1");
-  sys.AddMarker("hub_face", "hub", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  sys.AddMarker("axis", "ground", hub_point, Eigen::Matrix3d::Identity());
-  sys.AddJoint("clamp", mbs::JointType::kFixed, "root", "hub_face");
-  sys.AddJoint("spin", mbs::JointType::kRevolute, "hub_face", "axis");
-  sys.AddMotion("drive", "spin", mbs::JointCoordinate::kRotation,
-                mbs::TimeFunction::Polynomial({0.0, kSpin}));
-  sys.Finalize();
-  return sys;
+  return testing::SpinningBar(bar, kSpin, testing::StiffenedOptions(), eta0, {0, 0, -9.81});
 }
 
 // Power identity of the inertia terms of one flexible body at a state V = [v, w, eta']:
