@@ -195,6 +195,16 @@ struct RunCommand {
       else
         s.Add("basis_truncation", "basis truncation", lines);
     }
+    if (!run.bases.empty()) {
+      std::vector<std::string> notes;
+      double worst = 0.0;
+      for (const auto& b : run.bases) {
+        notes.push_back(b.note);
+        worst = std::max(worst, b.static_compliance_error);
+      }
+      s.Add("installed_bases", "installed bases", notes);
+      s.Add("static_compliance_error", "basis: static compliance error at loaded markers", worst);
+    }
     s.Add("equations", "constraint equations", run.system.num_equations());
     s.Add("gruebler_dof", "Gruebler-Kutzbach DOF", run.dof.gruebler_dof);
     s.Add("true_dof", "true DOF", run.dof.true_dof);
