@@ -380,11 +380,24 @@ def mbs_residual(res):
                  rows), [doc]
 
 
+def steady_state(res):
+    doc = res("steady_state")
+    rows = [[f"`{r['scene']}`", r["elastic_start"], num(r["speed_factor"]),
+             f"{r['cycles']}" + ("" if r["converged"] else " (not converged)"),
+             thousands(r["steps"]), sig3(r["cpu_s"]), sig3(r["wall_s"]), num(r["change"], ".2g"),
+             f"{num(r['cycle1_error'], '.2g')} ({r['cycle1_worst_channel']})",
+             f"{num(r['cycle2_error'], '.2g')} ({r['cycle2_worst_channel']})"]
+            for r in doc["data"]["runs"]]
+    return table(["scene", "elastic start", "initial speed ×", "cycles to steady state",
+                  "IDA steps", "CPU [s]", "wall [s]", "last change", "cycle 1 vs steady",
+                  "cycle 2 vs steady"], rows), [doc]
+
+
 TABLES = {f.__name__: f for f in [
     crank_modes, ccx_vs_emb, block_solve, crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
     inline4_profile, mbs_work_precision, mbs_multiplier_rule, mbs_chains, mbs_residual,
-    driveline_clonk, driveline_clonk_bands]}
+    driveline_clonk, driveline_clonk_bands, steady_state]}
 
 
 def render_table(name, res):

@@ -45,7 +45,8 @@ ResultsStatus ReadStatus(const H5File& h5, const std::string& path) {
 // apart, so a reader uses the rows they all have.
 constexpr const char* kSeries[] = {"/state/q",         "/state/v",         "/reactions/force",
                                    "/reactions/torque", "/energy",          "/residuals",
-                                   "/forces/load",      "/sensors",         "/joints"};
+                                   "/forces/load",      "/sensors",         "/joints",
+                                   "/output_points"};
 // Where a body's values sit in a row of /state/q and /state/v: the layout record the writer
 // stores (version 3), or for version 2 files mbs::StateLayout's, which they were written with.
 struct StateColumns {
@@ -56,6 +57,7 @@ struct StateColumns {
 struct ResultsFile {
   H5File h5;
   std::vector<std::string> bodies, ports, sensors, forces, joints;
+  std::vector<std::string> probe_channels;  // "<probe>.<channel>", columns of /output_points
   std::vector<double> time;
   std::size_t n{0};
   ResultsStatus status;
@@ -75,6 +77,8 @@ struct ResultsFile {
     if (h5.Exists("/model/sensors")) sensors = h5.ReadStrings("/model/sensors");
     if (h5.Exists("/model/force_elements")) forces = h5.ReadStrings("/model/force_elements");
     if (h5.Exists("/model/joints")) joints = h5.ReadStrings("/model/joints");
+    if (h5.Exists("/model/output_point_channels"))
+      probe_channels = h5.ReadStrings("/model/output_point_channels");
     time = h5.ReadDoubles("/time");
     n = time.size();
     for (const char* s : kSeries)
@@ -189,6 +193,12 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
     out.values = f.Column("/energy", c);
     return out;
   }
+  // Probes (output points, chord sensors): "<probe>.<channel>" columns of /output_points.
+  if (const auto it = std::find(f.probe_channels.begin(), f.probe_channels.end(), channel);
+      it != f.probe_channels.end()) {
+    out.values = f.Column("/output_points", static_cast<std::size_t>(it - f.probe_channels.begin()));
+    return out;
+  }
   // <sensor>.dx .. .rz (the /sensors columns).
   const std::size_t last = channel.rfind('.');
   if (last != std::string::npos &&
@@ -219,7 +229,8 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
                "channel '" << channel
                            << "': expected <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z}, "
                               "<sensor>.dx|dy|dz|rx|ry|rz, <joint>.angle|angle_rate|travel|"
-                              "travel_rate or energy.{kinetic,gravity,elastic,total,dissipated}");
+                              "travel_rate, <probe>.<channel> (output points, chord sensors) "
+                              "or energy.{kinetic,gravity,elastic,total,dissipated}");
   const std::string owner = channel.substr(0, dot1);
   const std::string quantity = channel.substr(dot1 + 1, dot2 - dot1 - 1);
   const int comp = Component(channel.substr(dot2 + 1));

@@ -5,11 +5,15 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <set>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
 #include "libemb/io/output_path.h"
+#include "libemb/mbs/core/chord_sensor.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/flexible/beam_part.h"
 #include "libemb/mbs/flexible/flexible_body.h"
@@ -103,19 +107,29 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   for (const char* key : {"geometry", "parameters", "webs", "web_width", "element_length",
                           "stiffness_damping", "material"})
     rb.Optional(key);
-  std::vector<double> eta0;
-  if (rb.Has("modal_coordinates"))
-    eta0 = rb.GetDoubles("modal_coordinates");
-  else
-    rb.Optional("modal_coordinates");
+  // Initial modal coordinates eta(t0) and rates eta'(t0), one per kept mode (AsDouble refuses
+  // non-finite numbers).
+  std::vector<double> eta0, eta_dot0;
+  for (auto [key, values] : {std::pair{"modal_coordinates", &eta0},
+                             std::pair{"modal_velocities", &eta_dot0}}) {
+    if (rb.Has(key))
+      *values = rb.GetDoubles(key);
+    else
+      rb.Optional(key);
+  }
   rb.Finish();
   const ReducedBody reduced = mbs::ReadPartBodyFile(path, name, expect_mesh_hash);
   mbs::FlexibleBodyModel m = mbs::MakeFlexibleBody(name, reduced, path, options, placement);
-  if (!eta0.empty()) {
-    EMB_THROW_IF(static_cast<int>(eta0.size()) != m.part.num_modes(),
-                 what << " modal_coordinates: expected " << m.part.num_modes()
-                      << " initial modal coordinates (the modes kept), got " << eta0.size());
-    m.body.eta0 = Eigen::Map<const Eigen::VectorXd>(eta0.data(), eta0.size());
+  for (auto [key, values, target] :
+       {std::tuple{"modal_coordinates", &eta0, &m.body.eta0},
+        std::tuple{"modal_velocities", &eta_dot0, &m.body.eta_dot0}}) {
+    if (values->empty()) continue;
+    EMB_THROW_IF(static_cast<int>(values->size()) != m.part.num_modes(),
+                 what << " " << key << ": expected " << m.part.num_modes() << " initial modal "
+                      << (values == &eta0 ? "coordinates" : "velocities")
+                      << " (one per mode kept), got " << values->size());
+    *target = Eigen::Map<const Eigen::VectorXd>(values->data(),
+                                                static_cast<Eigen::Index>(values->size()));
   }
   m.part.body = sys->AddBody(m.body);
   notes->push_back(m.part.note);
@@ -273,13 +287,37 @@ void ReadCouplers(const YAML::Node& list, const std::string& file, mbs::System* 
                 });
 }
 
+// `type: pose` (default): marker i relative to marker j (System::AddSensor); `type: chord`:
+// marker `point` relative to the line through the two markers of `chord`
+// (mbs/core/chord_sensor.h).
 void ReadSensors(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  ReadNamedList(list, file, "sensors", "sensor",
-                [&](MapReader& r, const std::string& name, const YAML::Node&) {
-                  const std::string i = r.GetString("i"), j = r.GetString("j");
-                  r.Finish();
-                  sys->AddSensor(name, i, j);
-                });
+  std::set<std::string> names;
+  ReadNamedList(
+      list, file, "sensors", "sensor", [&](MapReader& r, const std::string& name, const YAML::Node&) {
+        EMB_THROW_IF(!names.insert(name).second, "sensor '" << name << "' is defined twice");
+        const std::string type = r.GetString("type", "pose");
+        if (type == "pose") {
+          const std::string i = r.GetString("i"), j = r.GetString("j");
+          r.Finish();
+          sys->AddSensor(name, i, j);
+          return;
+        }
+        EMB_THROW_IF(type != "chord", r.what() << " type: expected 'pose' (marker i relative to "
+                                                  "marker j) or 'chord' (a point relative to "
+                                                  "the line through two markers), got '"
+                                               << type << "'");
+        const std::string point = r.GetString("point");
+        const YAML::Node chord = r.Require("chord");
+        EMB_THROW_IF(!chord.IsSequence() || chord.size() != 2 || !chord[0].IsScalar() ||
+                         !chord[1].IsScalar(),
+                     Where(file, chord) << ": " << r.what()
+                                        << " chord: expected the two markers at its ends, "
+                                           "[marker_a, marker_b]");
+        r.Finish();
+        sys->AddProbe(std::make_shared<mbs::ChordSensor>(
+            *sys, name, sys->FindMarker(point), sys->FindMarker(chord[0].Scalar()),
+            sys->FindMarker(chord[1].Scalar())));
+      });
 }
 
 void ReadSteadyState(const YAML::Node& node, const std::string& file, SteadyStateSettings* s) {
