@@ -233,12 +233,21 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
                               "or energy.{kinetic,gravity,elastic,total,dissipated}");
   const std::string owner = channel.substr(0, dot1);
   const std::string quantity = channel.substr(dot1 + 1, dot2 - dot1 - 1);
-  const int comp = Component(channel.substr(dot2 + 1));
-  EMB_THROW_IF(comp < 0, "channel '" << channel << "': expected a component x, y or z");
-  const auto c = static_cast<std::size_t>(comp);
   const bool is_force_element =
       std::find(f.ports.begin(), f.ports.end(), owner) == f.ports.end() &&
       std::find(f.forces.begin(), f.forces.end(), owner) != f.forces.end();
+  if (quantity == "F" && channel.substr(dot2 + 1) == "norm" && is_force_element) {
+    // |F| of a force element's load, as the CSV channel <force element>.F.norm.
+    ResultsChannel norm = ReadResultsChannel(path, owner + ".F.x");
+    const std::vector<double> y = ReadResultsChannel(path, owner + ".F.y").values;
+    const std::vector<double> z = ReadResultsChannel(path, owner + ".F.z").values;
+    for (std::size_t i = 0; i < norm.values.size(); ++i)
+      norm.values[i] = std::sqrt(norm.values[i] * norm.values[i] + y[i] * y[i] + z[i] * z[i]);
+    return norm;
+  }
+  const int comp = Component(channel.substr(dot2 + 1));
+  EMB_THROW_IF(comp < 0, "channel '" << channel << "': expected a component x, y or z");
+  const auto c = static_cast<std::size_t>(comp);
   if ((quantity == "F" || quantity == "T") && is_force_element) {  // /forces/load
     const std::size_t k = std::find(f.forces.begin(), f.forces.end(), owner) - f.forces.begin();
     out.values = f.Column("/forces/load", 6 * k + c + (quantity == "T" ? 3 : 0));

@@ -76,9 +76,13 @@ def channel(f, name):
         k = sensors.index(owner)
         return f["sensors"][:, 6 * k + ["dx", "dy", "dz", "rx", "ry", "rz"].index(comp)]
     owner, _, quantity = owner.rpartition(".")
-    c = "xyz".index(comp)
     ports = names(f, "model/reaction_ports")
     forces = names(f, "model/force_elements") if "model/force_elements" in f else []
+    if quantity == "F" and comp == "norm" and owner in forces:  # |F| of a force element
+        return np.linalg.norm(np.stack([channel(f, f"{owner}.F.{x}") for x in "xyz"]), axis=0)
+    if comp not in ("x", "y", "z"):
+        raise SystemExit(f"engine_plots: unknown channel '{name}'")
+    c = "xyz".index(comp)
     if quantity in ("F", "T") and owner not in ports and owner in forces:  # /forces/load
         k = forces.index(owner)
         values = f["forces/load"][:, 6 * k + c + (3 if quantity == "T" else 0)]
