@@ -384,12 +384,13 @@ def steady_state(res):
     doc = res("steady_state")
     rows = [[f"`{r['scene']}`", r["elastic_start"], num(r["speed_factor"]),
              f"{r['cycles']}" + ("" if r["converged"] else " (not converged)"),
-             thousands(r["steps"]), sig3(r["cpu_s"]), sig3(r["wall_s"]), num(r["change"], ".2g"),
+             thousands(r["steps"]), sig3(r["cpu_s"]), sig3(r["cpu_s_per_cycle"]),
+             num(r["change"], ".2g"),
              f"{num(r['cycle1_error'], '.2g')} ({r['cycle1_worst_channel']})",
              f"{num(r['cycle2_error'], '.2g')} ({r['cycle2_worst_channel']})"]
             for r in doc["data"]["runs"]]
     return table(["scene", "elastic start", "initial speed ×", "cycles to steady state",
-                  "IDA steps", "CPU [s]", "wall [s]", "last change", "cycle 1 vs steady",
+                  "IDA steps", "CPU [s]", "CPU per cycle [s]", "last change", "cycle 1 vs steady",
                   "cycle 2 vs steady"], rows), [doc]
 
 
