@@ -387,11 +387,13 @@ def steady_state(res):
              thousands(r["steps"]), sig3(r["cpu_s"]), sig3(r["cpu_s_per_cycle"]),
              num(r["change"], ".2g"),
              f"{num(r['cycle1_error'], '.2g')} ({r['cycle1_worst_channel']})",
-             f"{num(r['cycle2_error'], '.2g')} ({r['cycle2_worst_channel']})"]
+             f"{num(r['cycle2_error'], '.2g')} ({r['cycle2_worst_channel']})",
+             num(r.get("transient_decay_per_cycle"), ".2f"),
+             num(r.get("transient_frequency_hz"), ".0f")]
             for r in doc["data"]["runs"]]
     return table(["scene", "elastic start", "initial speed ×", "cycles to steady state",
                   "IDA steps", "CPU [s]", "CPU per cycle [s]", "last change", "cycle 1 vs steady",
-                  "cycle 2 vs steady"], rows), [doc]
+                  "cycle 2 vs steady", "transient decay per cycle", "transient Hz"], rows), [doc]
 
 
 TABLES = {f.__name__: f for f in [

@@ -14,7 +14,9 @@ its fixed two cycles:
 Per route: the cycles run, the IDA steps, CPU and wall seconds of `emb run` (children's
 rusage; run the script under the exclusive lock), the last change, and the start-up error
 the steady-state run removes: the relative RMS difference of cycle 1 and of cycle 2 (what a
-fixed two-cycle run reports) from the steady cycle, the largest over the channels.
+fixed two-cycle run reports) from the steady cycle, the largest over the channels; for that
+channel the transient (cycle minus steady cycle): its mean decay per cycle and its dominant
+frequency.
 Runs in out/bench_steady/; results through benchmarks/record.py merge into
 benchmarks/results/steady_state.json; table `steady_state` in benchmarks/README.md.
 """
@@ -112,6 +114,15 @@ def run_route(emb, work, name, scene, channels, start, factor):
     steady = {c: v[-1] for c, v in per.items()}
     err = [max(rel_rms(v[k], steady[c]) for c, v in per.items()) for k in (0, 1)]
     worst = [max(per, key=lambda c: rel_rms(per[c][k], steady[c])) for k in (0, 1)]
+    # The start-up transient of the worst channel: cycle minus steady cycle, its mean decay
+    # per cycle over the cycles before the last two and its dominant frequency.
+    transient = per[worst[0]][:-1] - steady[worst[0]]
+    size = np.sqrt(np.mean(transient ** 2, axis=1))
+    m = max(1, min(len(size) - 1, 6))
+    decay = float((size[m] / size[0]) ** (1.0 / m)) if len(size) > 1 and size[0] > 0 else None
+    dt = PERIOD / transient.shape[1]
+    spectrum = np.abs(np.fft.rfft(transient[:m + 1].ravel()))
+    frequency = float(np.fft.rfftfreq(transient[:m + 1].size, dt)[np.argmax(spectrum[1:]) + 1])
     out = {"scene": scene, "elastic_start": start, "speed_factor": factor,
            "channels": channels, "tolerance": TOLERANCE, "converged": converged,
            "cycles": cycles,
@@ -120,7 +131,8 @@ def run_route(emb, work, name, scene, channels, start, factor):
            "wall_s": wall, "seconds_run": summary["seconds_run"],
            "cycle1_error": err[0], "cycle1_worst_channel": worst[0],
            "cycle2_error": err[1], "cycle2_worst_channel": worst[1],
-           "start_note": summary.get("elastic_start", "")}
+           "start_note": summary.get("elastic_start", ""),
+           "transient_decay_per_cycle": decay, "transient_frequency_hz": frequency}
     out["cpu_s_per_cycle"] = out["cpu_s"] / out["cycles"]
     path = os.path.join(work, name + ".json")
     with open(path, "w") as f:
