@@ -10,6 +10,7 @@
 #include <complex>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <numbers>
 #include <regex>
 #include <sstream>
@@ -24,33 +25,40 @@ namespace {
 
 class Inline4 : public test::CliTest {
  protected:
-  // The scene with the test's crank `file` as a `model` part (cms or rigid), `modes` modes,
-  // speed `rpm` and `cycles` cycles.
+  static constexpr int kSceneBasis = -1;
+  static constexpr int kAllModes = -2;
+
+  // The scene with the test's crank `file` as a `model` part (cms or rigid), `modes` of the
+  // file's lowest modes (kSceneBasis: the scene's own, installed basis; kAllModes: all the
+  // file's coordinates, the full basis), speed `rpm`, `cycles`
+  // cycles (instead of the scene's steady-state search) and the tolerances rtol, 1e-3 rtol.
   std::string Scene(int modes, double rpm, double cycles, const std::string& file = "crank.h5",
-                    const std::string& model = "cms") const {
+                    const std::string& model = "cms", double rtol = 1e-5) const {
     std::string s = Slurp(std::string(EMB_SOURCE_DIR) + "/tools/scenes/inline4.yaml");
     auto set = [&](const std::string& pattern, const std::string& value) {
       const std::regex re(pattern);
       EXPECT_TRUE(std::regex_search(s, re)) << pattern;
       s = std::regex_replace(s, re, value);
     };
-    set(R"(body_file: \S+)", "body_file: " + (dir_ / file).string());
-    set(R"(model: cms )", "model: " + model + " ");
-    set(R"(modes: \d+)", "modes: " + std::to_string(modes));
-    set(R"(\{rpm: 3000\})", "{rpm: " + std::to_string(rpm) + "}");
-    const double omega = rpm * 2 * std::numbers::pi / 60;
     auto num = [](double x) {
       std::ostringstream o;
       o.precision(17);
       o << x;
       return o.str();
     };
+    set(R"(body_file: \S+)", "body_file: " + (dir_ / file).string());
+    set(R"(model: cms )", "model: " + model + " ");
+    if (modes != kSceneBasis)
+      set(R"(    basis: installed[^\n]*\n    dynamic_band_hz: 2000[^\n]*\n( +#[^\n]*\n)*)",
+          modes == kAllModes ? "" : "    modes: " + std::to_string(modes) + "\n");
+    set(R"(\{rpm: 3000\})", "{rpm: " + std::to_string(rpm) + "}");
+    const double omega = rpm * 2 * std::numbers::pi / 60;
     set(R"(angular_velocity: \[314.159265, 0, 0\])",
         "angular_velocity: [" + num(omega) + ", 0, 0]");
-    set(R"(t_end: 0.08 )", "t_end: " + num(cycles * 120.0 / rpm) + " ");
+    set(R"(  steady_state:[^\n]*\n(    [^\n]*\n)+)", "  t_end: " + num(cycles * 120.0 / rpm) + "\n");
     set(R"(output_step: 1.0e-4)", "output_step: " + num(1.0 / (6.0 * rpm)));  // 1 deg
-    set(R"(rtol: 1.0e-6)", "rtol: 1.0e-5");
-    set(R"(atol: 1.0e-9)", "atol: 1.0e-8");
+    set(R"(rtol: 1.0e-4 )", "rtol: " + num(rtol) + " ");
+    set(R"(atol: 1.0e-7)", "atol: " + num(1e-3 * rtol));
     set(R"(\n  file: \S+\.h5)", "\n  file: out.h5");
     set(R"(\n  csv: \S+\.csv)", "\n  csv: out.csv");
     return s;
@@ -81,7 +89,7 @@ class Inline4 : public test::CliTest {
       std::stringstream ls(line);
       std::string cell;
       for (long k = 0; k <= col; ++k) std::getline(ls, cell, ',');
-      out.push_back(std::stod(cell));
+      out.push_back(std::strtod(cell.c_str(), nullptr));  // stod throws on subnormals
     }
     return out;
   }
@@ -176,6 +184,61 @@ TEST_F(Inline4, RunsTwoCyclesAtTwoSpeedsAndRingsAtTheTorsionalOrder) {
                                        << " Hz, peak at order " << order
                                        << "; modes (twist):" << list.str();
   }
+}
+
+// Issue 12: the shipped configuration of the main job (installed basis up to 2 kHz with the
+// static responses at the loaded markers, rtol 1e-4) against the full basis of the same body
+// file (all 80 coordinates of the coarse crank) at rtol 1e-7, from the same quasi-static
+// start, over the second of two cycles: the nose torsion, every main-bearing force and every
+// big-end force within 1 % RMS of the reference's RMS (the accuracy the scene states;
+// measured on this crank: 0.19 % at worst). The lowest 13 free-free modes, as many dynamic
+// coordinates as the installed basis has, miss it by far (measured 81 %).
+TEST_F(Inline4, DefaultConfigurationIsWithinOnePercentOfTheFullBasis) {
+  MakeCrank();
+  std::vector<std::string> channels = {"nose_torsion.rz"};
+  for (int k = 1; k <= 5; ++k) channels.push_back("main_bearing" + std::to_string(k) + ".F.norm");
+  auto run = [&](int modes, double rtol) {
+    std::ofstream(dir_ / "s.yaml") << Scene(modes, 3000, 2, "crank.h5", "cms", rtol);
+    const test::CliResult r = Run("run s.yaml -q --json");
+    EXPECT_EQ(r.exit_code, 0) << modes << ": " << r.err;
+    std::vector<std::vector<double>> out;
+    if (r.exit_code != 0) return out;
+    for (const auto& c : channels) out.push_back(Column(c));
+    for (int k = 1; k <= 4; ++k) {  // |F| of the big ends
+      const std::string e = "big_end" + std::to_string(k) + ".F.";
+      const auto x = Column(e + "x"), y = Column(e + "y"), z = Column(e + "z");
+      std::vector<double> norm(x.size());
+      for (std::size_t i = 0; i < x.size(); ++i) norm[i] = std::sqrt(x[i] * x[i] + y[i] * y[i] + z[i] * z[i]);
+      out.push_back(norm);
+    }
+    std::filesystem::remove(dir_ / "out.csv");
+    return out;
+  };
+  const auto reference = run(kAllModes, 1e-7);
+  const auto installed = run(kSceneBasis, 1e-4);
+  const auto lowest = run(13, 1e-4);
+  ASSERT_EQ(reference.size(), channels.size() + 4);
+  ASSERT_EQ(installed.size(), reference.size());
+  ASSERT_EQ(lowest.size(), reference.size());
+  auto relative_rms = [](const std::vector<double>& a, const std::vector<double>& ref) {
+    const std::size_t from = ref.size() / 2;  // the second cycle
+    double e = 0.0, n = 0.0;
+    for (std::size_t i = from; i < ref.size(); ++i)
+      e += std::pow(a[i] - ref[i], 2), n += ref[i] * ref[i];
+    return std::sqrt(e / n);
+  };
+  constexpr double kStatedAccuracy = 0.01;  // the scene's stated accuracy (README)
+  double worst_installed = 0.0, worst_lowest = 0.0;
+  for (std::size_t k = 0; k < reference.size(); ++k) {
+    ASSERT_EQ(installed[k].size(), reference[k].size());
+    const double e = relative_rms(installed[k], reference[k]);
+    EXPECT_LT(e, kStatedAccuracy) << "channel " << k;
+    worst_installed = std::max(worst_installed, e);
+    worst_lowest = std::max(worst_lowest, relative_rms(lowest[k], reference[k]));
+  }
+  std::cout << "largest RMS error: installed basis " << worst_installed << ", lowest 13 modes "
+            << worst_lowest << "\n";
+  EXPECT_GT(worst_lowest, 5.0 * worst_installed) << worst_lowest << " vs " << worst_installed;
 }
 
 // Rigid limit: the engine with the crank 100x stiffer (E = 2.1e13 Pa, kept modes 3.8 to

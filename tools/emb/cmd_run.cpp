@@ -175,6 +175,16 @@ struct RunCommand {
     s.Add("bodies", "moving bodies", run.system.layout().num_moving());
     s.Add("modal_coordinates", "modal coordinates", run.system.layout().num_elastic_total());
     if (!sc.notes.empty()) s.Add("parts", "parts", sc.notes);
+    if (!run.bases.empty()) {
+      std::vector<std::string> notes;
+      double worst = 0.0;
+      for (const auto& b : run.bases) {
+        notes.push_back(b.note);
+        worst = std::max(worst, b.static_compliance_error);
+      }
+      s.Add("installed_bases", "installed bases", notes);
+      s.Add("static_compliance_error", "basis: static compliance error at loaded markers", worst);
+    }
     s.Add("equations", "constraint equations", run.system.num_equations());
     s.Add("gruebler_dof", "Gruebler-Kutzbach DOF", run.dof.gruebler_dof);
     s.Add("true_dof", "true DOF", run.dof.true_dof);
