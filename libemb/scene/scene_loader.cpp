@@ -5,7 +5,6 @@
 #include <map>
 #include <memory>
 #include <numbers>
-#include <set>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -13,7 +12,6 @@
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
 #include "libemb/io/output_path.h"
-#include "libemb/mbs/core/chord_sensor.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/flexible/beam_part.h"
 #include "libemb/mbs/flexible/flexible_body.h"
@@ -25,6 +23,7 @@
 #include "libemb/scene/output_point_reader.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
+#include "libemb/scene/sensor_reader.h"
 #include "libemb/scene/yaml_reader.h"
 
 namespace emb::scene {
@@ -285,39 +284,6 @@ void ReadCouplers(const YAML::Node& list, const std::string& file, mbs::System* 
                   r.Finish();
                   sys->AddCoupler(name, j1, c1, j2, c2, ratio, offset);
                 });
-}
-
-// `type: pose` (default): marker i relative to marker j (System::AddSensor); `type: chord`:
-// marker `point` relative to the line through the two markers of `chord`
-// (mbs/core/chord_sensor.h).
-void ReadSensors(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  std::set<std::string> names;
-  ReadNamedList(
-      list, file, "sensors", "sensor", [&](MapReader& r, const std::string& name, const YAML::Node&) {
-        EMB_THROW_IF(!names.insert(name).second, "sensor '" << name << "' is defined twice");
-        const std::string type = r.GetString("type", "pose");
-        if (type == "pose") {
-          const std::string i = r.GetString("i"), j = r.GetString("j");
-          r.Finish();
-          sys->AddSensor(name, i, j);
-          return;
-        }
-        EMB_THROW_IF(type != "chord", r.what() << " type: expected 'pose' (marker i relative to "
-                                                  "marker j) or 'chord' (a point relative to "
-                                                  "the line through two markers), got '"
-                                               << type << "'");
-        const std::string point = r.GetString("point");
-        const YAML::Node chord = r.Require("chord");
-        EMB_THROW_IF(!chord.IsSequence() || chord.size() != 2 || !chord[0].IsScalar() ||
-                         !chord[1].IsScalar(),
-                     Where(file, chord) << ": " << r.what()
-                                        << " chord: expected the two markers at its ends, "
-                                           "[marker_a, marker_b]");
-        r.Finish();
-        sys->AddProbe(std::make_shared<mbs::ChordSensor>(
-            *sys, name, sys->FindMarker(point), sys->FindMarker(chord[0].Scalar()),
-            sys->FindMarker(chord[1].Scalar())));
-      });
 }
 
 void ReadSteadyState(const YAML::Node& node, const std::string& file, SteadyStateSettings* s) {
