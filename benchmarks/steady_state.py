@@ -15,8 +15,8 @@ Per route: the cycles run, the IDA steps, CPU and wall seconds of `emb run` (chi
 rusage; run the script under the exclusive lock), the last change, and the start-up error
 the steady-state run removes: the relative RMS difference of cycle 1 and of cycle 2 (what a
 fixed two-cycle run reports) from the steady cycle, the largest over the channels; for that
-channel the transient (cycle minus steady cycle): its mean decay per cycle and its dominant
-frequency.
+channel the transient (cycle minus steady cycle): its mean decay per cycle and the dominant
+frequency of its ringing (each cycle's mean removed).
 Runs in out/bench_steady/; results through benchmarks/record.py merge into
 benchmarks/results/steady_state.json; table `steady_state` in benchmarks/README.md.
 """
@@ -121,8 +121,11 @@ def run_route(emb, work, name, scene, channels, start, factor):
     m = max(1, min(len(size) - 1, 6))
     decay = float((size[m] / size[0]) ** (1.0 / m)) if len(size) > 1 and size[0] > 0 else None
     dt = PERIOD / transient.shape[1]
-    spectrum = np.abs(np.fft.rfft(transient[:m + 1].ravel()))
-    frequency = float(np.fft.rfftfreq(transient[:m + 1].size, dt)[np.argmax(spectrum[1:]) + 1])
+    # Each cycle's mean taken out: the frequency of the ringing, not of the steps between
+    # cycles of a decaying mean.
+    ringing = transient[:m + 1] - transient[:m + 1].mean(axis=1, keepdims=True)
+    spectrum = np.abs(np.fft.rfft(ringing.ravel()))
+    frequency = float(np.fft.rfftfreq(ringing.size, dt)[np.argmax(spectrum[1:]) + 1])
     out = {"scene": scene, "elastic_start": start, "speed_factor": factor,
            "channels": channels, "tolerance": TOLERANCE, "converged": converged,
            "cycles": cycles,
