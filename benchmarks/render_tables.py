@@ -388,12 +388,11 @@ def steady_state(res):
              num(r["change"], ".2g"),
              f"{num(r['cycle1_error'], '.2g')} ({r['cycle1_worst_channel']})",
              f"{num(r['cycle2_error'], '.2g')} ({r['cycle2_worst_channel']})",
-             num(r.get("transient_decay_per_cycle"), ".2f"),
-             num(r.get("transient_frequency_hz"), ".0f")]
+             num(r.get("transient_decay_per_cycle"), ".2f")]
             for r in doc["data"]["runs"]]
     return table(["scene", "elastic start", "initial speed ×", "cycles to steady state",
                   "IDA steps", "CPU [s]", "CPU per cycle [s]", "last change", "cycle 1 vs steady",
-                  "cycle 2 vs steady", "transient decay per cycle", "transient Hz"], rows), [doc]
+                  "cycle 2 vs steady", "transient decay per cycle"], rows), [doc]
 
 
 TABLES = {f.__name__: f for f in [
