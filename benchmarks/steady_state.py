@@ -56,7 +56,7 @@ def variant(scene, channels, start, factor, path):
     head, sep, tail = text.partition("\nanalysis:\n")
     assert sep, scene
     lines = [l for l in tail.split("\n") if not re.match(r"\s+(t_end|steady_state|period|"
-                                                           r"channels|tolerance|max_cycles|"
+                                                           r"channels|tolerance|min_cycles|max_cycles|"
                                                            r"elastic_start):", l)]
     end = next((i for i, l in enumerate(lines) if i and l and not l.startswith((" ", "#"))),
                len(lines))  # the next section
