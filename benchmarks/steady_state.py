@@ -6,7 +6,8 @@
 Each route is a scene run with `analysis.steady_state` (whole 720-degree cycles until the
 chosen channels repeat to TOLERANCE, relative RMS; libemb/results/steady_state.h) instead of
 its fixed two cycles:
-  engine_1cyl_cms.yaml  flexible single-throw crank (10 CMS modes): `elastic_start: as-given`
+  engine_1cyl_cms.yaml  flexible single-throw crank (the scene's installed basis):
+                        `elastic_start: as-given`
                         (undeformed) against `quasi-static` (needs out/crankshaft_1cyl.h5;
                         made here with `emb reduce meshes/crankshaft_1cyl.geo -n 30` if absent)
   engine_1cyl_rigid.yaml  the same engine, rigid crank
