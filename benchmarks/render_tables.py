@@ -428,12 +428,27 @@ def mbs_residual(res):
                  rows), [doc]
 
 
+def steady_state(res):
+    doc = res("steady_state")
+    rows = [[f"`{r['scene']}`", r["elastic_start"], num(r["speed_factor"]),
+             f"{r['cycles']}" + ("" if r["converged"] else " (not converged)"),
+             thousands(r["steps"]), sig3(r["cpu_s"]), sig3(r["cpu_s_per_cycle"]),
+             num(r["change"], ".2g"),
+             f"{num(r['cycle1_error'], '.2g')} ({r['cycle1_worst_channel']})",
+             f"{num(r['cycle2_error'], '.2g')} ({r['cycle2_worst_channel']})",
+             num(r.get("transient_decay_per_cycle"), ".2f")]
+            for r in doc["data"]["runs"]]
+    return table(["scene", "elastic start", "initial speed ×", "cycles to steady state",
+                  "IDA steps", "CPU [s]", "CPU per cycle [s]", "last change", "cycle 1 vs steady",
+                  "cycle 2 vs steady", "transient decay per cycle"], rows), [doc]
+
+
 TABLES = {f.__name__: f for f in [
     inline4_basis, inline4_basis_6000, inline4_basis_load_step,
     crank_modes, ccx_vs_emb, block_solve, crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
     inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule, mbs_chains, mbs_residual,
-    driveline_clonk, driveline_clonk_bands]}
+    driveline_clonk, driveline_clonk_bands, steady_state]}
 
 
 def render_table(name, res):

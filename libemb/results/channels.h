@@ -10,7 +10,8 @@
 /// unwrapped) and <joint>.angle_rate (rad/s) of revolute and cylindrical joints,
 /// <joint>.travel (m) and <joint>.travel_rate (m/s) of translational and cylindrical joints
 /// (mbs/analysis/joint_coordinates.h), <output point>.<channel>
-/// (probes: u|v|a.{x,y,z,n}, power; mbs/flexible/output_points.h),
+/// (probes: u|v|a.{x,y,z,n}, power; mbs/flexible/output_points.h), <chord sensor>.dx|dy|dz|
+/// norm|s (probes, mbs/core/chord_sensor.h),
 /// energy.{kinetic,gravity,elastic,total}, residual.{position,velocity}.
 
 #include <string>

@@ -45,7 +45,8 @@ ResultsStatus ReadStatus(const H5File& h5, const std::string& path) {
 // apart, so a reader uses the rows they all have.
 constexpr const char* kSeries[] = {"/state/q",         "/state/v",         "/reactions/force",
                                    "/reactions/torque", "/energy",          "/residuals",
-                                   "/forces/load",      "/sensors",         "/joints"};
+                                   "/forces/load",      "/sensors",         "/joints",
+                                   "/output_points"};
 // Where a body's values sit in a row of /state/q and /state/v: the layout record the writer
 // stores (version 3), or for version 2 files mbs::StateLayout's, which they were written with.
 struct StateColumns {
@@ -56,6 +57,7 @@ struct StateColumns {
 struct ResultsFile {
   H5File h5;
   std::vector<std::string> bodies, ports, sensors, forces, joints;
+  std::vector<std::string> probe_channels;  // "<probe>.<channel>", columns of /output_points
   std::vector<double> time;
   std::size_t n{0};
   ResultsStatus status;
@@ -75,6 +77,8 @@ struct ResultsFile {
     if (h5.Exists("/model/sensors")) sensors = h5.ReadStrings("/model/sensors");
     if (h5.Exists("/model/force_elements")) forces = h5.ReadStrings("/model/force_elements");
     if (h5.Exists("/model/joints")) joints = h5.ReadStrings("/model/joints");
+    if (h5.Exists("/model/output_point_channels"))
+      probe_channels = h5.ReadStrings("/model/output_point_channels");
     time = h5.ReadDoubles("/time");
     n = time.size();
     for (const char* s : kSeries)
@@ -189,6 +193,12 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
     out.values = f.Column("/energy", c);
     return out;
   }
+  // Probes (output points, chord sensors): "<probe>.<channel>" columns of /output_points.
+  if (const auto it = std::find(f.probe_channels.begin(), f.probe_channels.end(), channel);
+      it != f.probe_channels.end()) {
+    out.values = f.Column("/output_points", static_cast<std::size_t>(it - f.probe_channels.begin()));
+    return out;
+  }
   // <sensor>.dx .. .rz (the /sensors columns).
   const std::size_t last = channel.rfind('.');
   if (last != std::string::npos &&
@@ -219,15 +229,25 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
                "channel '" << channel
                            << "': expected <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z}, "
                               "<sensor>.dx|dy|dz|rx|ry|rz, <joint>.angle|angle_rate|travel|"
-                              "travel_rate or energy.{kinetic,gravity,elastic,total,dissipated}");
+                              "travel_rate, <probe>.<channel> (output points, chord sensors) "
+                              "or energy.{kinetic,gravity,elastic,total,dissipated}");
   const std::string owner = channel.substr(0, dot1);
   const std::string quantity = channel.substr(dot1 + 1, dot2 - dot1 - 1);
-  const int comp = Component(channel.substr(dot2 + 1));
-  EMB_THROW_IF(comp < 0, "channel '" << channel << "': expected a component x, y or z");
-  const auto c = static_cast<std::size_t>(comp);
   const bool is_force_element =
       std::find(f.ports.begin(), f.ports.end(), owner) == f.ports.end() &&
       std::find(f.forces.begin(), f.forces.end(), owner) != f.forces.end();
+  if (quantity == "F" && channel.substr(dot2 + 1) == "norm" && is_force_element) {
+    // |F| of a force element's load, as the CSV channel <force element>.F.norm.
+    ResultsChannel norm = ReadResultsChannel(path, owner + ".F.x");
+    const std::vector<double> y = ReadResultsChannel(path, owner + ".F.y").values;
+    const std::vector<double> z = ReadResultsChannel(path, owner + ".F.z").values;
+    for (std::size_t i = 0; i < norm.values.size(); ++i)
+      norm.values[i] = std::sqrt(norm.values[i] * norm.values[i] + y[i] * y[i] + z[i] * z[i]);
+    return norm;
+  }
+  const int comp = Component(channel.substr(dot2 + 1));
+  EMB_THROW_IF(comp < 0, "channel '" << channel << "': expected a component x, y or z");
+  const auto c = static_cast<std::size_t>(comp);
   if ((quantity == "F" || quantity == "T") && is_force_element) {  // /forces/load
     const std::size_t k = std::find(f.forces.begin(), f.forces.end(), owner) - f.forces.begin();
     out.values = f.Column("/forces/load", 6 * k + c + (quantity == "T" ? 3 : 0));

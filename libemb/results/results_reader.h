@@ -30,8 +30,9 @@ struct ResultsStatus {
 ResultsStatus ReadResultsStatus(const std::string& path);
 
 /// Channels: <body>.p|v|omega.{x,y,z} (omega in W, as in the CSV), <port>.F|T.{x,y,z}
-/// (reactions in J's axes), <force element>.F|T.{x,y,z}, <sensor>.dx|dy|dz|rx|ry|rz,
+/// (reactions in J's axes), <force element>.F|T.{x,y,z} and .F.norm (|F|), <sensor>.dx|dy|dz|rx|ry|rz,
 /// <joint>.angle|angle_rate|travel|travel_rate (rad, rad/s, m, m/s; the angle unwrapped),
+/// <probe>.<channel> (output points u|v|a.{x,y,z,n}, power; chord sensors dx|dy|dz|norm|s),
 /// energy.{kinetic,gravity,elastic,total,dissipated}.
 /// @throws InputError for a file that is not emb-mbs-results or an unknown channel (with
 /// a did-you-mean).

@@ -149,7 +149,9 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
                                    "output_points.h): u elastic displacement [m], v velocity "
                                    "[m/s], a acceleration [m/s^2] in the part's axes, n along "
                                    "the point's direction; power: integral of v_n^2 over a "
-                                   "surface [m^4/s^2]"));
+                                   "surface [m^4/s^2]; chord sensors (mbs/core/chord_sensor.h): "
+                                   "dx dy dz deflection from the chord in the first end's axes "
+                                   "[m], norm its length [m], s position along the chord [-]"));
   }
   if (!sensors.empty()) {
     sensors_ = file_.AddSeries("/sensors", 6 * static_cast<int>(sensors.size()));

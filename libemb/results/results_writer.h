@@ -52,7 +52,8 @@
 ///   /joints             [N, 4 nj] per joint: angle (rad, unwrapped across turns), angle
 ///                       rate (rad/s), travel (m), travel rate (m/s); NaN where the joint has
 ///                       no such coordinate (mbs/analysis/joint_coordinates.h) (version 4)
-///   with output points (probes, mbs/flexible/output_points.h)
+///   with output points or chord sensors (probes, mbs/flexible/output_points.h,
+///   mbs/core/chord_sensor.h)
 ///   /model/output_points, /model/output_point_channels  names, "<point>.<channel>"
 ///   /output_points      [N, channels] their values (units in the dataset's attribute)
 ///   with flexible bodies also

@@ -61,7 +61,7 @@ BeamPartSpec ReadBeamPart(const YAML::Node& node, const std::string& file) {
   // scene switches models with the one word `model:` (they are not used here).
   for (const char* key : {"modes", "fmax_hz", "dynamic_band_hz", "basis",
                           "quasi_static_relaxation", "geometric_stiffening",
-                          "expect_mesh_hash", "modal_coordinates"})
+                          "expect_mesh_hash", "modal_coordinates", "modal_velocities"})
     r.Optional(key);
   if (r.Has("body_file")) {
     s.body_file = r.GetString("body_file");

@@ -6,6 +6,8 @@
 #include <memory>
 #include <numbers>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
@@ -21,6 +23,7 @@
 #include "libemb/scene/output_point_reader.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
+#include "libemb/scene/sensor_reader.h"
 #include "libemb/scene/yaml_reader.h"
 
 namespace emb::scene {
@@ -131,19 +134,29 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   for (const char* key : {"geometry", "parameters", "webs", "web_width", "element_length",
                           "stiffness_damping", "material"})
     rb.Optional(key);
-  std::vector<double> eta0;
-  if (rb.Has("modal_coordinates"))
-    eta0 = rb.GetDoubles("modal_coordinates");
-  else
-    rb.Optional("modal_coordinates");
+  // Initial modal coordinates eta(t0) and rates eta'(t0), one per kept mode (AsDouble refuses
+  // non-finite numbers).
+  std::vector<double> eta0, eta_dot0;
+  for (auto [key, values] : {std::pair{"modal_coordinates", &eta0},
+                             std::pair{"modal_velocities", &eta_dot0}}) {
+    if (rb.Has(key))
+      *values = rb.GetDoubles(key);
+    else
+      rb.Optional(key);
+  }
   rb.Finish();
   const ReducedBody reduced = mbs::ReadPartBodyFile(path, name, expect_mesh_hash);
   mbs::FlexibleBodyModel m = mbs::MakeFlexibleBody(name, reduced, path, options, placement);
-  if (!eta0.empty()) {
-    EMB_THROW_IF(static_cast<int>(eta0.size()) != m.part.num_modes(),
-                 what << " modal_coordinates: expected " << m.part.num_modes()
-                      << " initial modal coordinates (the modes kept), got " << eta0.size());
-    m.body.eta0 = Eigen::Map<const Eigen::VectorXd>(eta0.data(), eta0.size());
+  for (auto [key, values, target] :
+       {std::tuple{"modal_coordinates", &eta0, &m.body.eta0},
+        std::tuple{"modal_velocities", &eta_dot0, &m.body.eta_dot0}}) {
+    if (values->empty()) continue;
+    EMB_THROW_IF(static_cast<int>(values->size()) != m.part.num_modes(),
+                 what << " " << key << ": expected " << m.part.num_modes() << " initial modal "
+                      << (values == &eta0 ? "coordinates" : "velocities")
+                      << " (one per mode kept), got " << values->size());
+    *target = Eigen::Map<const Eigen::VectorXd>(values->data(),
+                                                static_cast<Eigen::Index>(values->size()));
   }
   m.part.body = sys->AddBody(m.body);
   notes->push_back(m.part.note);
@@ -299,15 +312,6 @@ void ReadCouplers(const YAML::Node& list, const std::string& file, mbs::System* 
                   const double offset = r.GetDouble("offset", 0.0);
                   r.Finish();
                   sys->AddCoupler(name, j1, c1, j2, c2, ratio, offset);
-                });
-}
-
-void ReadSensors(const YAML::Node& list, const std::string& file, mbs::System* sys) {
-  ReadNamedList(list, file, "sensors", "sensor",
-                [&](MapReader& r, const std::string& name, const YAML::Node&) {
-                  const std::string i = r.GetString("i"), j = r.GetString("j");
-                  r.Finish();
-                  sys->AddSensor(name, i, j);
                 });
 }
 

@@ -627,6 +627,9 @@ for key, (force, frags) in FORCE_BAD.items():
 scene("coupler_unknown_joint", replaced("analysis:", "couplers:\n  - {name: c, joint1: hinge, joint2: nowhere, ratio: 2}\nanalysis:"), 1, ["nowhere"])
 scene("coupler_nan_ratio", replaced("analysis:", "couplers:\n  - {name: c, joint1: hinge, joint2: hinge, ratio: .nan}\nanalysis:"), 1, ["ratio"])
 scene("sensor_unknown_marker", replaced("analysis:", "sensors:\n  - {name: s, i: rod_top, j: nowhere}\nanalysis:"), 1, ["nowhere"])
+scene("sensor_chord_one_end", replaced("analysis:", "sensors:\n  - {name: s, type: chord, point: rod_top, chord: [pivot]}\nanalysis:"), 1, ["sensor 's'", "chord", "two markers"])
+scene("sensor_chord_point_on_chord", replaced("analysis:", "sensors:\n  - {name: s, type: chord, point: pivot, chord: [pivot, rod_top]}\nanalysis:"), 1, ["three different markers"])
+scene("sensor_type_unknown", replaced("analysis:", "sensors:\n  - {name: s, type: cord, point: pivot, chord: [pivot, rod_top]}\nanalysis:"), 1, ["'cord'", "chord"])
 
 TOP_BAD = {
     "duplicate_top_key": (PENDULUM + "gravity: [0, 0, -9.81]\n", ["gravity", "given twice"]),
@@ -734,6 +737,8 @@ cms("cms_dynamic_band_nan", extra="dynamic_band_hz: .nan", frags=["dynamic_band_
 cms("cms_fmax_below_all", extra="fmax_hz: 1.0e-3", frags=["at or below"])
 cms("cms_modal_coordinates_count", extra="modes: 2, modal_coordinates: [1, 2, 3]", frags=["modal_coordinates"])
 cms("cms_modal_coordinates_nan", extra="modes: 2, modal_coordinates: [.nan, 0]", frags=["modal_coordinates"])
+cms("cms_modal_velocities_count", extra="modes: 2, modal_velocities: [1]", frags=["modal_velocities", "expected 2"])
+cms("cms_modal_velocities_inf", extra="modes: 2, modal_velocities: [0, .inf]", frags=["modal_velocities"])
 cms("cms_expect_hash_wrong", extra="expect_mesh_hash: abc", frags=["stale"])
 cms("cms_stiffening_text", extra="geometric_stiffening: maybe", frags=["geometric_stiffening"])
 cms("cms_mass_given", extra="mass: 1", frags=["mass"])

@@ -87,8 +87,10 @@ forces:
      stiffness: [10, 10, 10, 1, 1, 1], damping_factor: 0.01}
 sensors:
   - {name: tip, i: rod_tip, j: pivot}
+  - {name: bend, type: chord, point: anchor, chord: [rod_top, rod_tip]}
 analysis: {type: dynamic, t_end: 0.2, output_step: 0.01}
-output: {csv: pend.csv, channels: [tip.dx, tip.rz, mount.F.x, mount.T.z, hinge.F.y]}
+output: {csv: pend.csv, channels: [tip.dx, tip.rz, mount.F.x, mount.T.z, hinge.F.y, mount.F.norm,
+                                   bend.dy, bend.norm, bend.s]}
 """)
     r = run([EMB, "run", "pend.yaml", "-q", "-o", "pend.h5"], work)
     if r.returncode != 0:
@@ -99,7 +101,8 @@ output: {csv: pend.csv, channels: [tip.dx, tip.rz, mount.F.x, mount.T.z, hinge.F
         header = f.readline().strip().split(",")
     table = np.loadtxt(os.path.join(work, "pend.csv"), delimiter=",", skiprows=1)
     with h5py.File(os.path.join(work, "pend.h5"), "r") as f:
-        for name in ("tip.dx", "tip.rz", "mount.F.x", "mount.T.z", "hinge.F.y"):
+        for name in ("tip.dx", "tip.rz", "mount.F.x", "mount.T.z", "hinge.F.y", "mount.F.norm",
+                     "bend.dy", "bend.norm", "bend.s"):
             check(name in header, "CSV column of %s (%s)" % (name, header))
             if name not in header:
                 continue
@@ -109,6 +112,18 @@ output: {csv: pend.csv, channels: [tip.dx, tip.rz, mount.F.x, mount.T.z, hinge.F
             check(np.allclose(got, want, rtol=1e-8, atol=1e-10 * np.abs(want).max()),
                   "engine_plots channel %s equals emb's CSV" % name)
             check(np.abs(want).max() > 0, "channel %s is not trivially zero" % name)
+    # emb spectrum reads the same channels from the results file: at 600 rpm the 0.2 s run is
+    # one 720-degree cycle, whose order-0 term is the channel's mean over it (the trapezoidal
+    # mean of the CSV samples agrees to its 20-sample resolution, 2 %).
+    for name in ("mount.F.norm", "bend.norm"):
+        sp = run([EMB, "spectrum", "pend.h5", "--channel", name, "--rpm", "600", "--json"], work)
+        check(sp.returncode == 0, "emb spectrum reads %s: %s" % (name, sp.stderr))
+        if sp.returncode == 0 and name in header:
+            mean = json.loads(sp.stdout)["summary"]["mean"]
+            col = table[:, header.index(name)]
+            want = np.trapz(col, dx=1.0) / (len(col) - 1)
+            check(abs(mean - want) <= 0.02 * abs(want), "%s: spectrum mean %g, CSV mean %g"
+                  % (name, mean, want))
     r = run(["/usr/bin/python3", ENGINE_PLOTS, "pend.h5", "--time", "--traces", "spring.F.x",
              "--out", "plots", "--emb", EMB], work)
     check(r.returncode != 0 and "spring" in r.stderr,
@@ -169,6 +184,51 @@ def check_readme_example(work):
     for path in written:
         with open(os.path.join(work, path), "rb") as f:
             check(f.read(8) == PNG_MAGIC, "%s is a PNG" % path)
+
+
+def check_steady_cycle(work):
+    """A run to periodic steady state (analysis.steady_state) marks its steady cycle; the
+    traces show only that cycle by default and every sample with --all-cycles, and the
+    spectrum's cycle count is that of `emb spectrum`'s default, the steady cycle (issue 19).
+    The mini engine's flywheel starts 5 % fast: its torsional transient on the coupling
+    decays over a few cycles."""
+    scene = MINI_ENGINE.replace("""position: [0.3, 0, 0],
+     angular_velocity: [314.159265, 0, 0]}""", """position: [0.3, 0, 0],
+     angular_velocity: [329.867, 0, 0]}""").replace(
+        "analysis: {type: dynamic, t_end: 0.08, output_step: 2.0e-4}",
+        "analysis: {type: dynamic, output_step: 2.0e-4, steady_state: {period: 0.04, "
+        "channels: [main_bearing3.F.y], tolerance: 1.0e-2, max_cycles: 30}}")
+    check("329.867" in scene and "steady_state" in scene, "the steady-state mini engine scene")
+    with open(os.path.join(work, "steady.yaml"), "w") as f:
+        f.write(scene)
+    r = run([EMB, "run", "steady.yaml", "-q", "-o", "steady.h5"], work)
+    if r.returncode != 0:
+        sys.exit("emb run (steady state) failed: " + r.stderr)
+    with h5py.File(os.path.join(work, "steady.h5"), "r") as f:
+        check(int(f.attrs["steady_state_converged"]) == 1, "the mini engine reaches steady state")
+        start, end = float(f.attrs["steady_state_cycle_start"]), float(f.attrs["steady_state_cycle_end"])
+        cycles = int(f.attrs["steady_state_cycles"])
+        t = f["time"][:]
+    check(cycles >= 3 and abs(end - start - 0.04) < 1e-12 and abs(end - t[-1]) < 1e-12,
+          "the steady cycle is the last 0.04 s of at least 3 cycles (%d, %g .. %g)"
+          % (cycles, start, end))
+    base = ["/usr/bin/python3", ENGINE_PLOTS, "steady.h5", "--angle", "main", "--traces",
+            "main_bearing3.F.y", "--out", "plots", "--emb", EMB]
+    r = run(base + ["--spectrum", "main_bearing3.F.y", "--orders", "4"], work)
+    check(r.returncode == 0, "engine_plots.py on a steady-state run: " + r.stderr)
+    # 0.04 s at 2e-4 s a sample: 201 samples with the cycle's end.
+    want = "traces: 201 samples, t = %.6g .. %.6g s (the steady cycle)" % (start, end)
+    check(want in r.stdout, "traces of the steady cycle only: %r in %r" % (want, r.stdout))
+    r = run(base + ["--all-cycles"], work)
+    check(r.returncode == 0 and "traces: %d samples" % len(t) in r.stdout,
+          "--all-cycles: every sample (%s)" % r.stdout)
+    spectrum = run([EMB, "spectrum", "steady.h5", "--channel", "main_bearing3.F.y", "--angle",
+                    "main", "--json"], work)
+    check(spectrum.returncode == 0, "emb spectrum of the steady run: " + spectrum.stderr)
+    if spectrum.returncode == 0:
+        import json
+        summary = json.loads(spectrum.stdout)["summary"]
+        check(summary["cycles"] == 1, "emb spectrum analyses the one steady cycle (%s)" % summary)
 
 
 CLONK_PLOTS = os.path.join(SOURCE, "tools", "plots", "clonk_plots.py")
@@ -296,6 +356,7 @@ def main():
         check(not os.path.exists(os.path.join(work, out)), "%s: no output written" % what)
 
     check_engine_plots(work)
+    check_steady_cycle(work)
     check_clonk_plots(work, num_modes)
     if failures:
         sys.exit("%d check(s) failed; files kept in %s" % (len(failures), work))

@@ -3,15 +3,21 @@
 
     /usr/bin/python3 tools/plots/engine_plots.py RESULTS.h5 \
         --traces crank.omega.x,dyno_speed.T.z --spectrum dyno_speed.T.z --angle crank \
-        [--rpm N] [--orders 12] [--out DIR] [--emb build/tools/emb/emb]
+        [--rpm N] [--orders 12] [--all-cycles] [--out DIR] [--emb build/tools/emb/emb]
 
 Writes DIR/<results stem>_traces.png (one panel per channel against the crank angle, or the
 time with --time) and DIR/<results stem>_spectrum_<channel>.png (amplitude vs engine order,
 computed by `emb spectrum --json`, so the numbers are the CLI's). Channel names as in
 `emb spectrum --help`: <body>.p|v|omega.{x,y,z}, <element>.F|T.{x,y,z} (reactions and force
 elements' loads), <sensor>.dx|dy|dz|rx|ry|rz, <joint>.angle|angle_rate|travel|travel_rate,
-energy.<column>. The crank angle: --angle BODY (its rotation about --axis), --angle JOINT (a
-revolute joint's angle) or --rpm N (constant speed).
+<probe>.<channel> (output points, chord sensors), energy.<column>. The crank angle: --angle
+BODY (its rotation about --axis), --angle JOINT (a revolute joint's angle) or --rpm N
+(constant speed).
+A run that searched for its periodic steady state (analysis.steady_state) marks its steady
+cycle in the file (root attributes steady_state_*): the traces show that cycle by default
+(the crank angle then starts at 0 at the cycle's start) and the spectrum is `emb spectrum`'s
+default, the same cycle; --all-cycles plots every sample (the steady cycle shaded). A run
+that did not converge is plotted whole, with a warning.
 """
 import argparse
 import json
@@ -62,14 +68,21 @@ def channel(f, name):
                              "coordinate (angle: revolute and cylindrical joints; travel: "
                              "translational and cylindrical joints)")
         return values
+    probes = names(f, "model/output_point_channels") if "model/output_point_channels" in f else []
+    if name in probes:  # output points, chord sensors
+        return f["output_points"][:, probes.index(name)]
     sensors = names(f, "model/sensors") if "model/sensors" in f else []
     if owner in sensors:  # <sensor>.dx .. .rz
         k = sensors.index(owner)
         return f["sensors"][:, 6 * k + ["dx", "dy", "dz", "rx", "ry", "rz"].index(comp)]
     owner, _, quantity = owner.rpartition(".")
-    c = "xyz".index(comp)
     ports = names(f, "model/reaction_ports")
     forces = names(f, "model/force_elements") if "model/force_elements" in f else []
+    if quantity == "F" and comp == "norm" and owner in forces:  # |F| of a force element
+        return np.linalg.norm(np.stack([channel(f, f"{owner}.F.{x}") for x in "xyz"]), axis=0)
+    if comp not in ("x", "y", "z"):
+        raise SystemExit(f"engine_plots: unknown channel '{name}'")
+    c = "xyz".index(comp)
     if quantity in ("F", "T") and owner not in ports and owner in forces:  # /forces/load
         k = forces.index(owner)
         values = f["forces/load"][:, 6 * k + c + (3 if quantity == "T" else 0)]
@@ -109,6 +122,20 @@ def crank_angle(f, body, axis, rpm=None):
     return np.degrees(ang - ang[0])
 
 
+def steady_cycle(f, path):
+    """The steady cycle (t_start, t_end) [s] a run recorded (results_writer.h), or None if it
+    did not search for one or did not find it (then with a warning)."""
+    if "steady_state_converged" not in f.attrs:
+        return None
+    if not int(f.attrs["steady_state_converged"]):
+        print(f"warning: '{path}' did not reach its periodic steady state (last cycle-to-cycle "
+              f"change {float(f.attrs['steady_state_change']):.3g}, tolerance "
+              f"{float(f.attrs['steady_state_tolerance']):.3g}): plotting every sample",
+              file=sys.stderr)
+        return None
+    return float(f.attrs["steady_state_cycle_start"]), float(f.attrs["steady_state_cycle_end"])
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("results")
@@ -121,6 +148,8 @@ def main():
                     help="instead of --angle: a constant crank speed [rpm] from the first sample")
     ap.add_argument("--time", action="store_true", help="traces against time instead of angle")
     ap.add_argument("--orders", default="12")
+    ap.add_argument("--all-cycles", action="store_true",
+                    help="traces of every sample, not only the steady cycle the run recorded")
     ap.add_argument("--out", default=".")
     ap.add_argument("--emb", default=os.path.join("build", "tools", "emb", "emb"))
     args = ap.parse_args()
@@ -130,20 +159,36 @@ def main():
     with h5py.File(args.results, "r") as f:
         warn_if_unfinished(f, args.results)
         traces = [c for c in args.traces.split(",") if c]
+        cycle = steady_cycle(f, args.results)
         if traces:
-            x = f["time"][:] if args.time else crank_angle(f, args.angle, args.axis, args.rpm)
+            t = f["time"][:]
+            x = t if args.time else crank_angle(f, args.angle, args.axis, args.rpm)
+            # Samples of the steady cycle, its end sample included (results/steady_state.h).
+            tol = 1e-9 * max(1.0, abs(t[-1]))
+            in_cycle = (np.ones_like(t, dtype=bool) if cycle is None
+                        else (t >= cycle[0] - tol) & (t <= cycle[1] + tol))
+            keep = in_cycle if cycle is not None and not args.all_cycles else np.ones_like(in_cycle)
+            if not args.time:
+                x = x - x[np.argmax(keep)]  # 0 at the first sample plotted
             fig, axes = plt.subplots(len(traces), 1, sharex=True, figsize=(9, 2.4 * len(traces)),
                                      squeeze=False)
             for ax, name in zip(axes[:, 0], traces):
-                ax.plot(x, channel(f, name), lw=0.8)
+                ax.plot(x[keep], channel(f, name)[keep], lw=0.8)
+                if cycle is not None and args.all_cycles:
+                    ax.axvspan(x[in_cycle][0], x[in_cycle][-1], color="tab:green", alpha=0.12)
                 ax.set_ylabel(name)
                 ax.grid(alpha=0.3)
             if not args.time:
                 for ax in axes[:, 0]:
-                    ax.set_xticks(np.arange(0, x[-1] + 1, 180))
+                    ax.set_xticks(np.arange(np.floor(x[keep][0] / 180) * 180, x[keep][-1] + 1, 180))
             axes[-1, 0].set_xlabel("time [s]" if args.time else "crank angle [deg]")
-            fig.suptitle(f"{stem}: {f.attrs.get('scene', '')}", fontsize=9)
+            what = ("" if cycle is None else
+                    f"steady cycle {cycle[0]:.4g}-{cycle[1]:.4g} s" +
+                    (" shaded" if args.all_cycles else "") + ", ")
+            fig.suptitle(f"{stem}: {what}{f.attrs.get('scene', '')}", fontsize=9)
             fig.tight_layout()
+            print(f"traces: {int(keep.sum())} samples, t = {t[keep][0]:.6g} .. {t[keep][-1]:.6g} s"
+                  + (" (the steady cycle)" if cycle is not None and not args.all_cycles else ""))
             path = os.path.join(args.out, f"{stem}_traces.png")
             fig.savefig(path, dpi=120)
             written.append(path)
