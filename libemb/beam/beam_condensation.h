@@ -7,9 +7,10 @@
 /// Why: a generated crankshaft (beam_geometry.h) has many light nodes — the ends of its short
 /// journal and pin elements, and with elastic webs the pin node at the end of each stiff,
 /// nearly massless web arm. Their rotary inertia is tiny against the stiffness of the ~10 mm
-/// elements around them, so they vibrate at 10⁵–10⁶ rad/s, and in a multibody run (one rigid
-/// body per node, mbs/flexible/beam_part.h) the integrator has to follow them: ~300 s of wall
-/// time per inline-4 cycle. Condensed, the model keeps only the nodes that carry mass that
+/// elements around them, so they vibrate at up to 606 kHz (the inline-4's crank with elastic
+/// webs; 62 kHz condensed), and in a multibody run (one rigid body per node,
+/// mbs/flexible/beam_part.h) the integrator has to follow them: minutes to hours of wall time
+/// per inline-4 cycle (benchmarks/README.md). Condensed, the model keeps only the nodes that carry mass that
 /// matters or a load: the *kept* nodes.
 ///
 /// Kept nodes: those given (CondensationNodes: rigid parts' nodes, interface nodes, nodes

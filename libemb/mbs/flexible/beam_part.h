@@ -23,7 +23,7 @@
 /// nodes, between markers "<part>/<node a>~<node b>:a|b" at the two nodes with the part
 /// frame's axes: the seed's massless beams between lumped parts, with the fine model's
 /// statics. The default for a model with rigid parts (a crankshaft, DefaultBeamPartNodes):
-/// its light journal, pin and web-arm nodes vibrate at 10⁵–10⁶ rad/s, which a run must
+/// its light journal, pin and web-arm nodes vibrate at up to 606 kHz, which a run must
 /// otherwise follow (benchmarks/README.md: the inline-4's beam crank).
 /// The initial motion is a rigid spin ω about P's origin: every node body gets ω and
 /// v = ω × (p − p_WP).
