@@ -21,6 +21,9 @@ The benchmark scripts call one subcommand each, which turns raw outputs into "da
   inline4 NAME DIR RUN ...           `emb run` outputs DIR/RUN.{json,csv} against DIR/ref
   engine NAME DIR CYCLE_S REF RUN ...  engine runs' steady cycles (or second halves) against
                                      REF's, per channel family (benchmarks/engine_errors.py)
+  inline4-beam NAME DIR REF RUN ...  inline4_beam.sh: `emb run` outputs DIR/RUN.{json,csv}
+                                     against DIR/REF over its span (nose torsion, the five
+                                     main bearings, big end 1)
   profile NAME DIR                   perf reports and run summary of inline4_profile.sh
   clonk NAME DIR RUN ...             driveline_clonk.sh: `emb run` and clonk_plots.py outputs
                                      DIR/RUN.{json,csv}, DIR/RUN_metrics.json against the first
@@ -304,6 +307,53 @@ def collect_engine(inputs):
     directory, cycle_s, reference, names = inputs[0], float(inputs[1]), inputs[2], inputs[2:]
     return {"cycle_s": cycle_s, "reference": reference,
             "runs": engine_errors.compare(directory, reference, names, cycle_s)}
+def collect_inline4_beam(directory, reference, names):
+    """RMS errors of the nose torsion, of |F| of each main bearing and of big end 1 against
+    the reference run, over the reference's span (a run may be longer: its first samples are
+    compared); wall time per cycle (0.04 s at 3000 rpm) over each run's own span."""
+    import numpy as np
+
+    def read(name):
+        csv = np.genfromtxt(os.path.join(directory, name + ".csv"), delimiter=",", names=True)
+        return csv, load(os.path.join(directory, name + ".json"))["summary"]
+
+    ref, _ = read(reference)
+    n = len(ref["t"])
+    cycle = 0.04
+
+    def rms(x):
+        return float(np.sqrt(np.mean(x ** 2)))
+
+    def channels(run):
+        run = run[:n]
+        out = {"nose": run["nose_torsionrz"],
+               "big_end1": np.hypot(run["big_end1Fx"], run["big_end1Fy"])}
+        for k in range(1, 6):
+            out[f"bearing{k}"] = np.hypot(run[f"main_bearing{k}Fx"], run[f"main_bearing{k}Fy"])
+        return out
+
+    r = channels(ref)
+    rows = []
+    for name in names:
+        run, s = read(name)
+        if len(run["t"]) < n or np.max(np.abs(run["t"][:n] - ref["t"])) > 1e-9:
+            sys.exit(f"record.py inline4-beam: {name} is not sampled like {reference}")
+        c = channels(run)
+        err = {k: 100 * rms(c[k] - r[k]) / rms(r[k]) for k in r}
+        cycles = float(run["t"][-1] - run["t"][0]) / cycle
+        rows.append({"name": name, "status": s["status"], "bodies": s["bodies"],
+                     "parts": s.get("parts", []), "rtol": s["rtol"], "steps": s["steps"],
+                     "error_test_failures": s["error_test_failures"],
+                     "residual_evals": s["residual_evals"], "jacobian_evals": s["jacobian_evals"],
+                     "seconds_run": s["seconds_run"], "t_end": float(run["t"][-1]),
+                     "cycles": cycles, "seconds_per_cycle": s["seconds_run"] / cycles,
+                     "nose_rms_error_pct": err["nose"],
+                     "bearing_rms_error_pct": [err[f"bearing{k}"] for k in range(1, 6)],
+                     "bearing_max_rms_error_pct": max(err[f"bearing{k}"] for k in range(1, 6)),
+                     "big_end1_rms_error_pct": err["big_end1"],
+                     "max_nose_torsion_mrad": 1e3 * float(np.max(np.abs(c["nose"])))})
+    return {"reference": reference, "window_s": [float(ref["t"][0]), float(ref["t"][-1])],
+            "runs": rows}
 
 
 def collect_clonk(directory, names):
@@ -439,8 +489,8 @@ def collect_run(program):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("kind", choices=["run", "merge", "modes", "reduce-sizes", "reduce-modes", "stiffening",
-                                    "compare", "web-width", "inline4", "profile", "clonk", "ccx",
-                                    "engine"])
+                                    "compare", "web-width", "inline4", "inline4-beam", "profile", "clonk",
+                                    "ccx", "engine"])
     p.add_argument("name", help="results file name: benchmarks/results/NAME.json")
     p.add_argument("inputs", nargs="*")
     p.add_argument("--command", help="the command line that ran the benchmark (default: PROGRAM)")
@@ -470,6 +520,7 @@ def main():
             "compare": lambda: collect_compare(a.inputs),
             "web-width": lambda: collect_web_width(a.inputs, a.route),
             "inline4": lambda: collect_inline4(a.inputs[0], a.inputs[1:]),
+            "inline4-beam": lambda: collect_inline4_beam(a.inputs[0], a.inputs[1], a.inputs[2:]),
             "profile": lambda: collect_profile(a.inputs[0]),
             "clonk": lambda: collect_clonk(a.inputs[0], a.inputs[1:]),
             "ccx": lambda: collect_ccx(a.inputs),

@@ -338,6 +338,22 @@ def inline4_models(res):
     return table(INLINE4_HEADER, inline4_rows(doc, names)), [doc]
 
 
+def inline4_beam(res):
+    doc = res("inline4_beam")
+    names = {"all_r7": "every node (reference)", "all_r6": "every node",
+             "condensed_r6": "condensed (default)", "condensed_r8": "condensed"}
+    rows = []
+    for r in doc["data"]["runs"]:
+        rows.append([names.get(r["name"], r["name"]), r["bodies"], f"{r['rtol']:.0e}", r["status"],
+                     r["steps"], r["error_test_failures"], num(r["seconds_per_cycle"], ".3g"),
+                     num(r["nose_rms_error_pct"], ".2g"), num(r["bearing_max_rms_error_pct"], ".2g"),
+                     " / ".join(num(e, ".2g") for e in r["bearing_rms_error_pct"]),
+                     num(r["big_end1_rms_error_pct"], ".2g")])
+    return table(["beam crank", "bodies", "rtol", "status", "steps", "error test failures",
+                  "wall s per cycle", "nose torsion error %", "main bearings max error %",
+                  "bearings 1 / 2 / 3 / 4 / 5 error %", "big end 1 error %"], rows), [doc]
+
+
 def driveline_clonk(res):
     doc = res("driveline_clonk")
     names = {"ref": "CMS to 5 kHz, rtol 1e-8 (reference)", "cms5k": "CMS to 5 kHz",
@@ -447,8 +463,8 @@ TABLES = {f.__name__: f for f in [
     inline4_basis, inline4_basis_6000, inline4_basis_load_step,
     crank_modes, ccx_vs_emb, block_solve, crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
-    inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule, mbs_chains, mbs_residual,
-    driveline_clonk, driveline_clonk_bands, steady_state]}
+    inline4_beam, inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule,
+    mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state]}
 
 
 def render_table(name, res):

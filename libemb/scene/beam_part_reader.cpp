@@ -41,6 +41,14 @@ BeamPartSpec ReadBeamPart(const YAML::Node& node, const std::string& file) {
                                  << webs << "'");
   g.webs = webs == "rigid" ? WebModel::kRigid : WebModel::kElastic;
   g.web_width = r.GetDouble("web_width", 0.0, NumberRange::NonNegative("m"));
+  if (r.Has("beam_nodes")) {
+    const YAML::Node n = r.Optional("beam_nodes");
+    try {
+      s.nodes = mbs::ParseBeamPartNodes(r.GetString("beam_nodes"));
+    } catch (const InputError& e) {
+      EMB_THROW(InputError, Where(file, n) << ": " << what << " " << e.what());
+    }
+  }
   // The element count is the part's length over this: bounded below.
   g.max_element_length = r.GetDouble("element_length", g.max_element_length,
                                      NumberRange::Closed(1e-4, 100.0, "m"));

@@ -10,6 +10,8 @@
 ///       parameters: {stroke: 0.09}              # optional .geo overrides
 ///       webs: elastic                           # rigid (default) | elastic
 ///       web_width: 0.065                        # optional [m]
+///       beam_nodes: condensed                   # condensed | all; default: condensed
+///                                               # if the part has rigid parts
 ///       element_length: 0.02                    # optional [m]
 ///       stiffness_damping: 1.0e-5               # optional β [s]; default ζ = 1 % at f₁
 ///       material: {E: 2.1e11, nu: 0.3, rho: 7850}   # optional (steel)
@@ -21,6 +23,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <optional>
 #include <string>
 
 #include "libemb/beam/beam_geometry.h"
@@ -37,6 +40,9 @@ struct BeamPartSpec {
   /// The part's body file (the `model: cms` key, kept for a one-word switch), resolved like
   /// the geometry; empty if not given. Output points take the part's mesh from it.
   std::string body_file;
+  /// `beam_nodes:` if given (mbs::BeamPartNodes), else the model's default
+  /// (mbs::DefaultBeamPartNodes).
+  std::optional<mbs::BeamPartNodes> nodes;
 };
 
 /// True if a body entry of a scene asks for `model: beam`.

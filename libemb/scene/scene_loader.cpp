@@ -131,7 +131,7 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
     rb.Optional("velocity");
   placement.omega_W = rb.GetVector3("angular_velocity", Vector3d::Zero());
   // The keys of `model: beam` (beam_part_reader.h) may stay in the entry: one-word switch.
-  for (const char* key : {"geometry", "parameters", "webs", "web_width", "element_length",
+  for (const char* key : {"geometry", "parameters", "webs", "web_width", "beam_nodes", "element_length",
                           "stiffness_damping", "material"})
     rb.Optional(key);
   // Initial modal coordinates eta(t0) and rates eta'(t0), one per kept mode (AsDouble refuses
@@ -173,8 +173,16 @@ void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOpti
           BeamPartSpec spec = ReadBeamPart(node, file);
           spec.generation.trust_scripts = options.trust_geo_scripts;
           inputs->push_back(spec.geometry);
+          const GeneratedBeamModel beam = MakeBeamModelFromGeometry(spec.geometry, spec.generation);
           parts->beams[name] = mbs::AddBeamPart(
-              sys, name, MakeBeamModelFromGeometry(spec.geometry, spec.generation), spec.placement);
+              sys, name, beam, spec.placement,
+              spec.nodes ? *spec.nodes : mbs::DefaultBeamPartNodes(beam));
+          if (parts->beams[name].nodes == mbs::BeamPartNodes::kCondensed)
+            notes->push_back("beam part '" + name + "': " +
+                             std::to_string(parts->beams[name].num_model_nodes) +
+                             " beam nodes condensed onto " +
+                             std::to_string(parts->beams[name].bodies.size()) +
+                             " (rigid parts and interfaces; beam_nodes: all keeps them)");
           parts->beam_outputs[name] = {parts->beams[name], spec.placement, spec.body_file};
           if (!spec.body_file.empty()) inputs->push_back(spec.body_file);
           return;

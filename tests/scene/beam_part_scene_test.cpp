@@ -35,7 +35,9 @@ TEST(BeamPartScene, SceneKeyModelBeam) {
                          "  - {name: bearing_3, body: crank, interface: main_journal_3}\n";
   const Scene s = LoadScene(path);
   EXPECT_NO_THROW(s.system.FindMarker("crank.main_journal_3"));
-  EXPECT_NO_THROW(s.system.FindBody("crank/web_1_front:pin"));
+  // A crankshaft (it has rigid parts) is condensed by default: no body for a pin node.
+  EXPECT_THROW(s.system.FindBody("crank/web_1_front:pin"), InputError);
+  EXPECT_NO_THROW(s.system.FindBody("crank/crankpin_1"));
   // The same part built in C++ from the same options.
   BeamGenerationOptions o;
   o.webs = WebModel::kElastic;
@@ -45,8 +47,8 @@ TEST(BeamPartScene, SceneKeyModelBeam) {
   placement.R_WP = mbs::RotationFromEuler313(0.2, 0.3, 0.4);
   placement.omega_W = Eigen::Vector3d(100, 0, 0);
   mbs::System sys;
-  const mbs::BeamPart part =
-      mbs::AddBeamPart(&sys, "crank", MakeBeamModelFromGeometry(kCrank, o), placement);
+  const mbs::BeamPart part = mbs::AddBeamPart(&sys, "crank", MakeBeamModelFromGeometry(kCrank, o),
+                                              placement, mbs::BeamPartNodes::kCondensed);
   sys.Finalize();
   ASSERT_EQ(s.system.num_bodies(), sys.num_bodies());
   // Same construction from the same numbers: equal to the last bit.
@@ -63,6 +65,13 @@ TEST(BeamPartScene, SceneKeyModelBeam) {
   EXPECT_EQ(m.p_BM, itf.p_BM);
   EXPECT_EQ(m.R_BM, itf.R_BM);
 
+  // `beam_nodes: all` keeps every node of the beam model as a body.
+  std::ofstream(path) << entry("    webs: elastic\n    beam_nodes: all\n");
+  EXPECT_NO_THROW(LoadScene(path).system.FindBody("crank/web_1_front:pin"));
+  std::ofstream(path) << entry("    beam_nodes: some\n");
+  EXPECT_TRUE(test::ContainsAll(test::InputErrorMessage([&] { LoadScene(path); }),
+                                {"scene.yaml:5", "body 'crank'",
+                                 "beam nodes: expected 'all' or 'condensed', got 'some'"}));
   std::ofstream(path) << entry("    webs: flexible\n");
   EXPECT_TRUE(test::ContainsAll(test::InputErrorMessage([&] { LoadScene(path); }),
                                 {"webs: expected rigid or elastic"}));

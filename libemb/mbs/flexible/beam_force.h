@@ -41,4 +41,20 @@ class BeamForce final : public Bushing {
   double length_;
 };
 
+/// A condensed chain of massless beams between markers I (kept node a) and J (kept node b)
+/// (beam/beam_condensation.h, BeamLink): the bushing of J relative to I with the chain's
+/// stiffness K = C_AB⁻¹ and D = βK, both in I's axes, and the free offset r_IJ (where J
+/// sits in I's axes at rest; I and J parallel at rest). Linearised at rest it is the static
+/// condensation of the chain's elements, so its static response at J equals theirs.
+class BeamLinkForce final : public Bushing {
+ public:
+  /// @param compliance C_AB in I's axes (symmetric positive definite)
+  /// @param free_offset r_IJ in I's axes [m]
+  /// @param stiffness_damping β [s], ≥ 0
+  /// @throws InputError naming the link for a compliance that is not symmetric positive
+  /// definite or β < 0.
+  BeamLinkForce(std::string name, int marker_i, int marker_j, const Matrix6d& compliance,
+                const Eigen::Vector3d& free_offset, double stiffness_damping);
+};
+
 }  // namespace emb::mbs

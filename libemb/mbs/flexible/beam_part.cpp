@@ -5,6 +5,7 @@
 
 #include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
+#include "libemb/beam/beam_condensation.h"
 #include "libemb/common/mass_properties.h"
 #include "libemb/mbs/flexible/beam_force.h"
 
@@ -26,32 +27,48 @@ const BeamPart::Interface& BeamPart::FindInterface(const std::string& interface)
                                       << "; its interfaces are: " << list.str());
 }
 
+const char* Name(BeamPartNodes nodes) {
+  return nodes == BeamPartNodes::kAll ? "all" : "condensed";
+}
+
+BeamPartNodes ParseBeamPartNodes(const std::string& name) {
+  for (BeamPartNodes n : {BeamPartNodes::kAll, BeamPartNodes::kCondensed})
+    if (name == Name(n)) return n;
+  EMB_THROW(InputError, "beam nodes: expected 'all' or 'condensed', got '" << name << "'");
+}
+
+BeamPartNodes DefaultBeamPartNodes(const GeneratedBeamModel& model) {
+  return model.model.rigid_parts().empty() ? BeamPartNodes::kAll : BeamPartNodes::kCondensed;
+}
+
 BeamPart AddBeamPart(System* sys, const std::string& name, const GeneratedBeamModel& g,
-                     const BeamPartPlacement& placement) {
+                     const BeamPartPlacement& placement, BeamPartNodes nodes) {
   const BeamModel& model = g.model;
   const Matrix3d& R = placement.R_WP;
   auto to_world = [&](const Vector3d& p_P) -> Vector3d { return placement.p_WP + R * p_P; };
 
-  // Lumped masses per node, in the part frame.
-  std::vector<MassPropertiesSum> lumps(model.num_nodes());
-  for (int e = 0; e < model.num_elements(); ++e) {
-    const BeamElement& el = model.elements()[e];
-    const Vector12d d = CalcBeamLumpedMass(model.ElementProperties(e));
-    const Matrix3d R_PB = model.ElementFrame(e);
-    const auto [pa, pb] = model.ElasticEnds(e);
-    lumps[el.node_a].Add(d[kUx], pa, R_PB * d.segment<3>(kThetaX).asDiagonal() * R_PB.transpose());
-    lumps[el.node_b].Add(d[6 + kUx], pb,
-                         R_PB * d.segment<3>(6 + kThetaX).asDiagonal() * R_PB.transpose());
+  // The bodies: every node with its lump, or the kept nodes with theirs (part frame).
+  CondensedBeamModel condensed;
+  std::vector<int> body_nodes;
+  std::vector<MassProperties> lumps;
+  if (nodes == BeamPartNodes::kCondensed) {
+    condensed = CondenseBeamModel(model, CondensationNodes(g));
+    body_nodes = condensed.kept;
+    lumps = condensed.lumps;
+  } else {
+    lumps = CalcBeamNodeLumps(model);
+    for (int i = 0; i < model.num_nodes(); ++i) body_nodes.push_back(i);
   }
-  for (const RigidPart& r : model.rigid_parts())
-    lumps[r.node].Add(r.mass, model.nodes()[r.node].p_W + r.p_NC_W, r.I_C_W);
 
   BeamPart part;
   part.name = name;
+  part.nodes = nodes;
+  part.num_model_nodes = model.num_nodes();
   auto body_of = [&](int node) { return name + "/" + model.nodes()[node].name; };
   std::vector<Vector3d> com(model.num_nodes());
-  for (int i = 0; i < model.num_nodes(); ++i) {
-    const MassProperties l = lumps[i].Result();
+  for (std::size_t k = 0; k < body_nodes.size(); ++k) {
+    const int i = body_nodes[k];
+    const MassProperties& l = lumps[k];
     EMB_THROW_IF(!(l.mass > 0.0), "beam part '" << name << "': node '" << model.nodes()[i].name
                                                 << "' carries no mass; expected every node on an "
                                                    "element or a rigid part");
@@ -73,16 +90,29 @@ BeamPart AddBeamPart(System* sys, const std::string& name, const GeneratedBeamMo
                         const Matrix3d& R_PM) {
     return sys->AddMarker(marker, body_of(i), R * (p_P - com[i]), R * R_PM);
   };
-  for (int e = 0; e < model.num_elements(); ++e) {
-    const BeamElement& el = model.elements()[e];
-    const auto [pa, pb] = model.ElasticEnds(e);
-    const Matrix3d R_PB = model.ElementFrame(e);
-    const std::string base = name + "/" + el.name;
-    const int mi = add_marker(base + ":a", el.node_a, pa, R_PB);
-    const int mj = add_marker(base + ":b", el.node_b, pb, R_PB);
-    sys->AddForceElement(std::make_shared<BeamForce>(base, mi, mj, model.ElementProperties(e),
-                                                     model.stiffness_damping()));
-    part.forces.push_back(base);
+  if (nodes == BeamPartNodes::kCondensed) {
+    for (const BeamLink& link : condensed.links) {
+      const std::string base = name + "/" + link.name;
+      const Vector3d& pa = model.nodes()[link.node_a].p_W;
+      const Vector3d& pb = model.nodes()[link.node_b].p_W;
+      const int mi = add_marker(base + ":a", link.node_a, pa, Matrix3d::Identity());
+      const int mj = add_marker(base + ":b", link.node_b, pb, Matrix3d::Identity());
+      sys->AddForceElement(std::make_shared<BeamLinkForce>(
+          base, mi, mj, link.compliance, pb - pa, model.stiffness_damping()));
+      part.forces.push_back(base);
+    }
+  } else {
+    for (int e = 0; e < model.num_elements(); ++e) {
+      const BeamElement& el = model.elements()[e];
+      const auto [pa, pb] = model.ElasticEnds(e);
+      const Matrix3d R_PB = model.ElementFrame(e);
+      const std::string base = name + "/" + el.name;
+      const int mi = add_marker(base + ":a", el.node_a, pa, R_PB);
+      const int mj = add_marker(base + ":b", el.node_b, pb, R_PB);
+      sys->AddForceElement(std::make_shared<BeamForce>(base, mi, mj, model.ElementProperties(e),
+                                                       model.stiffness_damping()));
+      part.forces.push_back(base);
+    }
   }
   for (const BeamInterface& itf : g.interfaces) {
     const std::string marker = name + "." + itf.name;

@@ -16,6 +16,15 @@
 ///    the beam node nearest to each — main_journal_k, crankpin_i, nose, flange of a crankshaft,
 ///    end_a/end_b of a tube), at that node.
 /// So the multibody part is the lumped beam FE model (tests/mbs/flexible/beam_part_test.cpp).
+///
+/// Condensed (BeamPartNodes::kCondensed, beam/beam_condensation.h): bodies only for the kept
+/// nodes (rigid parts, interfaces), each with its lump and those of the nodes condensed onto
+/// it, and one BeamLinkForce "<part>/<node a>~<node b>" per chain of elements between kept
+/// nodes, between markers "<part>/<node a>~<node b>:a|b" at the two nodes with the part
+/// frame's axes: the seed's massless beams between lumped parts, with the fine model's
+/// statics. The default for a model with rigid parts (a crankshaft, DefaultBeamPartNodes):
+/// its light journal, pin and web-arm nodes vibrate at up to 606 kHz, which a run must
+/// otherwise follow (benchmarks/README.md: the inline-4's beam crank).
 /// The initial motion is a rigid spin ω about P's origin: every node body gets ω and
 /// v = ω × (p − p_WP).
 
@@ -36,10 +45,18 @@ struct BeamPartPlacement {
   Eigen::Vector3d omega_W{Eigen::Vector3d::Zero()};   ///< spin about P's origin [rad/s]
 };
 
+/// Which nodes of the beam model become bodies (file comment).
+enum class BeamPartNodes {
+  kAll,        ///< every node: the lumped beam FE model
+  kCondensed,  ///< the rigid parts' and interfaces' nodes (CondensationNodes)
+};
+
 /// What AddBeamPart added.
 struct BeamPart {
   std::string name;
   std::vector<std::string> bodies, forces;
+  BeamPartNodes nodes{BeamPartNodes::kAll};
+  int num_model_nodes{0};  ///< of the beam model (bodies.size() if not condensed)
   /// (interface, marker "<part>.<interface>", beam node name) per interface of the model.
   struct Interface {
     std::string name, marker, node;
@@ -50,11 +67,20 @@ struct BeamPart {
   const Interface& FindInterface(const std::string& name) const;
 };
 
+/// "all" or "condensed".
+const char* Name(BeamPartNodes nodes);
+/// The nodes of that name. @throws InputError listing the valid names.
+BeamPartNodes ParseBeamPartNodes(const std::string& name);
+/// kCondensed if `model` has rigid parts to condense onto, else kAll (a tube: its nodes are
+/// its only masses).
+BeamPartNodes DefaultBeamPartNodes(const GeneratedBeamModel& model);
+
 /// Adds the part `name` of beam model `model` to `sys` (file comment).
-/// @throws InputError naming the part for a node without mass or names that clash with the
+/// @throws InputError naming the part for a body without mass or names that clash with the
 /// system's.
 BeamPart AddBeamPart(System* sys, const std::string& name, const GeneratedBeamModel& model,
-                     const BeamPartPlacement& placement = {});
+                     const BeamPartPlacement& placement = {},
+                     BeamPartNodes nodes = BeamPartNodes::kAll);
 
 /// Adds marker `marker` on the node body of interface `interface` of `part`, at the
 /// interface node, with axes R_PM given in the part frame. Returns the marker's index.
