@@ -18,9 +18,10 @@ dir=$root/out/bench_basis
 mkdir -p "$dir"
 [ -f "$root/out/crankshaft_i4.h5" ] || { echo "run tools/setup.sh run first (out/crankshaft_i4.h5)" >&2; exit 1; }
 
-# run SCENE NAME BASIS RTOL [STEADY_TOL]: BASIS = installed:BAND_HZ | modes:N | all | rigid
+# run SCENE NAME BASIS RTOL [STEADY_TOL] [ANALYSIS_KEY]: BASIS = installed:BAND_HZ | modes:N |
+# all | rigid; ANALYSIS_KEY: one more `analysis:` line (e.g. the integrator)
 run() {
-  local scene=$1 name=$2 basis=$3 rtol=$4 steady=${5:-}
+  local scene=$1 name=$2 basis=$3 rtol=$4 steady=${5:-} extra=${6:-}
   local f=$dir/$name.yaml
   if [ "${EMB_BENCH_RESUME:-0}" = 1 ] && [ -s "$dir/$name.json" ]; then echo "$name: kept"; return; fi
   sed -e "s#body_file: ../../out/#body_file: $root/out/#" -e "s#geometry: ../../meshes/#geometry: $root/meshes/#" \
@@ -42,6 +43,7 @@ EOF
       ;;
   esac
   sed -i "s#^  rtol: [0-9.e-]*#  rtol: $rtol#; s#^  atol: [0-9.e-]*#  atol: $(/usr/bin/python3 -c "print($rtol * 1e-3)")#" "$f"
+  if [ -n "$extra" ]; then sed -i "s#^  type: dynamic#  type: dynamic\n  $extra#" "$f"; fi
   if [ -n "$steady" ]; then sed -i "s#^    tolerance: [0-9.e-]*#    tolerance: $steady#" "$f"; fi
   # A run that ends without its steady state (exit 3) is a result too: its row says so.
   /usr/bin/time -f "%U %S %e" -o "$dir/$name.time" "$emb" run "$f" -q --json > "$dir/$name.json" || true
@@ -61,10 +63,11 @@ if [ "$what" = 3000 ] || [ "$what" = all ]; then
   run inline4 ref_half all 5e-8 5e-4
   for b in 1000 3000 5000; do run inline4 band$b installed:$b 1e-4; done
   for r in 1e-3 1e-5; do run inline4 rtol$r installed:2000 "$r"; done
+  run inline4 galpha installed:2000 1e-4 "" "integrator: generalized-alpha"
   for m in 13 20 40; do run inline4 lowest$m modes:$m 1e-4; done
   run inline4 former_default modes:20 1e-6
   run inline4 rigid rigid 1e-4
-  record inline4_basis 0.04 ref ref_half default band1000 band3000 band5000 rtol1e-3 rtol1e-5 \
+  record inline4_basis 0.04 ref ref_half default band1000 band3000 band5000 rtol1e-3 rtol1e-5 galpha \
     lowest13 lowest20 lowest40 former_default rigid
 fi
 if [ "$what" = 6000 ] || [ "$what" = all ]; then

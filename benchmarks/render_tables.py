@@ -280,6 +280,7 @@ ENGINE_LABELS = {
     "default": "installed 2 kHz, rtol 1e-4 (scene default)", "band1000": "installed 1 kHz",
     "band3000": "installed 3 kHz", "band5000": "installed 5 kHz",
     "rtol1e-3": "installed 2 kHz, rtol 1e-3", "rtol1e-5": "installed 2 kHz, rtol 1e-5",
+    "galpha": "installed 2 kHz, generalized-α (ρ∞ 0.5), rtol 1e-4",
     "lowest13": "lowest 13 free-free modes", "lowest20": "lowest 20 free-free modes",
     "lowest40": "lowest 40 free-free modes",
     "former_default": "lowest 20 modes, rtol 1e-6 (former default)", "rigid": "rigid crank",
