@@ -12,11 +12,19 @@
 namespace emb {
 namespace {
 
+// The group `name` of a support given as `option` (for the message).
+const PhysicalGroup& FindGroup(const Mesh& mesh, const std::string& name, const std::string& option) {
+  for (const auto& g : mesh.groups)
+    if (g.name == name) return g;
+  EMB_THROW(InputError, option << ": mesh '" << mesh.source << "' has no physical group '" << name
+                               << "'; expected one of: " << mesh.GroupNames());
+}
+
 // The nodes of `groups` (all of them: the intersection of several).
 std::vector<int> CommonNodes(const Mesh& mesh, const ComponentSupport& s) {
   std::vector<int> nodes;
   for (size_t k = 0; k < s.groups.size(); ++k) {
-    const PhysicalGroup& g = mesh.group(s.groups[k]);
+    const PhysicalGroup& g = FindGroup(mesh, s.groups[k], "--fixed " + s.text);
     EMB_THROW_IF(g.nodes.empty(), "--fixed '" << s.text << "': physical group '" << g.name
                                               << "' has no mesh nodes");
     if (k == 0) {
@@ -119,7 +127,7 @@ Supports BuildSupports(const Mesh& mesh, const SupportSpecs& specs) {
   }
   std::vector<std::pair<const SymmetrySupport*, Eigen::Vector3d>> oblique;
   for (const auto& sym : specs.symmetry) {
-    const PhysicalGroup& g = mesh.group(sym.group);
+    const PhysicalGroup& g = FindGroup(mesh, sym.group, "--symmetry " + sym.text);
     EMB_THROW_IF(g.nodes.empty(), "--symmetry '" << sym.text << "': physical group '" << g.name
                                                  << "' has no mesh nodes");
     const std::optional<Eigen::Vector3d> normal = PlaneNormal(mesh, g);

@@ -18,6 +18,7 @@
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
 #include "tools/emb/progress_display.h"
+#include "tools/emb/support_options.h"
 
 namespace emb::cli {
 namespace {
@@ -27,12 +28,7 @@ struct ModesCommand {
   OutputOptions out;
   int num_modes{20};
   double shift_hz{-1.0};
-  std::vector<std::string> fixed_groups;
-  std::vector<std::string> symmetry_planes;
-  std::vector<std::string> rbe2_supports;
-  std::vector<std::string> rbe3_supports;
-  std::vector<std::string> equations;
-  std::string equation_file;
+  SupportOptions supports;
   int subspace{0};
   int block_size{0};
   double tolerance{1e-10};
@@ -54,18 +50,7 @@ struct ModesCommand {
     EMB_THROW_IF(num_modes < 1, "--modes: expected at least 1, got " << num_modes);
     CheckSolverOptions(tolerance, subspace, max_restarts, shift_hz);
     // Supports parsed (and the equation file read) before any work.
-    SupportSpecs specs;
-    for (const auto& t : fixed_groups) specs.fixed.push_back(ComponentSupport::Parse(t));
-    for (const auto& t : symmetry_planes) specs.symmetry.push_back(SymmetrySupport::Parse(t));
-    for (const auto& t : rbe2_supports)
-      specs.reference.push_back(ReferenceSupport::Parse(t, Coupling::kRbe2));
-    for (const auto& t : rbe3_supports)
-      specs.reference.push_back(ReferenceSupport::Parse(t, Coupling::kRbe3));
-    for (size_t k = 0; k < equations.size(); ++k)
-      specs.equations.push_back(
-          NodeEquation::Parse(equations[k], "--equation " + std::to_string(k + 1)));
-    if (!equation_file.empty())
-      for (auto& e : ReadEquationFile(equation_file)) specs.equations.push_back(std::move(e));
+    const SupportSpecs specs = supports.Specs();
     // Every output checked and locked before any work.
     const std::string h5_path = no_output ? "" : OutputPath();
     const std::string xdmf_path =
@@ -94,8 +79,8 @@ struct ModesCommand {
     if (method == "lanczos") mo.solver.method = EigenMethod::kLanczos;
     if (method == "dense") mo.solver.method = EigenMethod::kDense;
     sw.Restart();
-    const Supports supports = BuildSupports(mesh, specs);
-    mo = supports.Apply(mo);
+    const Supports held = BuildSupports(mesh, specs);
+    mo = held.Apply(mo);
     times.Add("supports", sw.seconds());
 
     sw.Restart();
@@ -105,7 +90,7 @@ struct ModesCommand {
     for (const auto& p : modes.eig.times.phases) times.Add(p.first, p.second);
     FinishProgressLine();
     const double constraint_residual =
-        specs.empty() || !modes.eig.ok() ? 0.0 : ConstraintResidual(supports, modes);
+        specs.empty() || !modes.eig.ok() ? 0.0 : ConstraintResidual(held, modes);
     if (modes.eig.ok() && !(constraint_residual <= kConstraintResidualLimit)) {
       modes.eig.status = EigenStatus::kInaccurate;
       modes.eig.message = "a mode violates the supports by " +
@@ -114,7 +99,7 @@ struct ModesCommand {
     }
 
     Table table("Natural frequencies (" +
-                    (specs.empty() ? std::string("free-free") : supports.description) + ")",
+                    (specs.empty() ? std::string("free-free") : held.description) + ")",
                 {"mode", "frequency_hz", "kind", "backward_error"},
                 {"mode", "frequency [Hz]", "kind", "backward error"});
     const int m = static_cast<int>(modes.frequencies_hz.size());
@@ -126,14 +111,14 @@ struct ModesCommand {
     Summary s("Modal analysis of " + mesh.source);
     s.Add("mesh", "mesh", mesh.Summary());
     s.Add("dofs", "degrees of freedom", sys.num_dofs());
-    s.Add("supports", "supports", specs.empty() ? std::string("none (free-free)") : supports.description);
+    s.Add("supports", "supports", specs.empty() ? std::string("none (free-free)") : held.description);
     s.Add("fixed_dofs", "unknowns removed by supports", static_cast<long long>(modes.num_fixed_dofs));
     if (!specs.empty()) {
       s.Add("held_components", "held node components",
-            static_cast<long long>(supports.num_held_components));
-      s.Add("constraints", "constraint rows", static_cast<long long>(supports.rows.size()));
+            static_cast<long long>(held.num_held_components));
+      s.Add("constraints", "constraint rows", static_cast<long long>(held.rows.size()));
       s.Add("redundant_constraints", "redundant symmetry rows (implied, unused)",
-            static_cast<long long>(supports.num_redundant_rows));
+            static_cast<long long>(held.num_redundant_rows));
       s.Add("constraint_residual", "max constraint residual of the modes", constraint_residual);
     }
     s.Add("mass_kg", "mass [kg]", sys.mass);
@@ -204,29 +189,7 @@ void RegisterModesCommand(CLI::App& app) {
                   "Find the modes nearest this frequency [Hz]; the default (negative) gives the "
                   "lowest modes, also for free-free parts")
       ->capture_default_str();
-  cmd->add_option("--fixed", st->fixed_groups,
-                  "GROUP[:COMPS]: hold components COMPS (x,y,z comma separated, global axes; "
-                  "all three if omitted) of every node of a physical group; GROUP may be A&B "
-                  "(the nodes common to groups A and B, e.g. an edge). Repeatable; default "
-                  "free-free");
-  cmd->add_option("--symmetry", st->symmetry_planes,
-                  "GROUP[:x|y|z]: symmetry plane, the displacement normal to the planar group "
-                  "is held at its nodes (u.n = 0; n its own normal, may be oblique, or the axis "
-                  "given, which must be its normal). Repeatable");
-  cmd->add_option("--rbe2", st->rbe2_supports,
-                  "GROUP[@X,Y,Z]:COMPS: the surface group slaved rigidly to a reference node "
-                  "(at the point, default plane centroid or cylinder axis) whose components "
-                  "COMPS (x,y,z,rx,ry,rz) are held. Repeatable");
-  cmd->add_option("--rbe3", st->rbe3_supports,
-                  "GROUP[@X,Y,Z]:COMPS: as --rbe2 but the reference node is the area-weighted "
-                  "average of the surface motion (does not stiffen it). Repeatable");
-  cmd->add_option("--equation", st->equations,
-                  "'A1 N1 C1 A2 N2 C2 ...': the linear constraint sum A_i u(N_i, C_i) = 0 "
-                  "between node displacements (N: the mesh's node tag, C: x, y or z). "
-                  "Repeatable");
-  cmd->add_option("--equations", st->equation_file,
-                  "File of such equations, one per line ('#' comments)")
-      ->check(CLI::ExistingFile);
+  st->supports.Register(*cmd);
   cmd->add_option("--method", st->method,
                   "Eigen-solver: auto (dense up to 300 unknowns, else block), block (block "
                   "shift-invert Krylov-Schur on multi-RHS solves), lanczos (Spectra's "
