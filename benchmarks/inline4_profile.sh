@@ -1,21 +1,21 @@
 #!/usr/bin/env bash
-# Where the time of a flexible inline-4 run goes: `perf record` (sampling, 999 Hz) of one
-# engine cycle of tools/scenes/inline4.yaml, then the share per library and the heaviest
-# functions (self time). Needs perf (Debian linux-perf) and out/crankshaft_i4.h5.
-#   benchmarks/inline4_profile.sh [T_END]      (default 0.04 s = one cycle at 3000 rpm)
+# Where the time of a flexible inline-4 run goes: `perf record` (sampling, 999 Hz) of the main
+# job's run, tools/scenes/inline4.yaml as shipped (installed basis, to its steady state), then
+# the share per library and the heaviest functions (self time). Needs perf (Debian
+# linux-perf) and out/crankshaft_i4.h5.
+#   benchmarks/inline4_profile.sh
 # Raw outputs out/bench_profile/{perf.data,run.json,by_library.txt,by_function.txt}; the
 # numbers go to benchmarks/results/inline4_profile.json.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 emb=${EMB:-$root/build/tools/emb/emb}
 command="bash benchmarks/inline4_profile.sh $*"
-t_end=${1:-0.04}
 dir=$root/out/bench_profile
 command -v perf >/dev/null || { echo "perf is not installed (apt-get install linux-perf)" >&2; exit 1; }
 [ -f "$root/out/crankshaft_i4.h5" ] || { echo "run tools/setup.sh run first (out/crankshaft_i4.h5)" >&2; exit 1; }
 mkdir -p "$dir"
 perf record -q -F 999 -o "$dir/perf.data" -- \
-  "$emb" run "$root/tools/scenes/inline4.yaml" --t-end "$t_end" --no-output -q --json > "$dir/run.json"
+  "$emb" run "$root/tools/scenes/inline4.yaml" --no-output -q --json > "$dir/run.json"
 perf report -i "$dir/perf.data" --no-children --sort dso --stdio -g none 2>/dev/null |
   grep '%' > "$dir/by_library.txt"
 perf report -i "$dir/perf.data" --no-children --sort symbol --stdio -g none 2>/dev/null |

@@ -19,6 +19,8 @@ The benchmark scripts call one subcommand each, which turns raw outputs into "da
   compare NAME LABEL=RUN.json ...    `emb compare --json` per part/support
   web-width NAME B=RUN.json ...      `emb compare --json` per web width B [m]
   inline4 NAME DIR RUN ...           `emb run` outputs DIR/RUN.{json,csv} against DIR/ref
+  engine NAME DIR CYCLE_S REF RUN ...  engine runs' steady cycles (or second halves) against
+                                     REF's, per channel family (benchmarks/engine_errors.py)
   profile NAME DIR                   perf reports and run summary of inline4_profile.sh
   clonk NAME DIR RUN ...             driveline_clonk.sh: `emb run` and clonk_plots.py outputs
                                      DIR/RUN.{json,csv}, DIR/RUN_metrics.json against the first
@@ -296,6 +298,14 @@ def collect_inline4(directory, names):
     return {"cycles": cycles, "reference": "ref", "runs": rows}
 
 
+def collect_engine(inputs):
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import engine_errors
+    directory, cycle_s, reference, names = inputs[0], float(inputs[1]), inputs[2], inputs[2:]
+    return {"cycle_s": cycle_s, "reference": reference,
+            "runs": engine_errors.compare(directory, reference, names, cycle_s)}
+
+
 def collect_clonk(directory, names):
     """driveline_clonk.sh: `emb run --json` summaries, the CSV channels and clonk_plots.py's
     metrics of each run against the first (the reference)."""
@@ -429,7 +439,8 @@ def collect_run(program):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("kind", choices=["run", "merge", "modes", "reduce-sizes", "reduce-modes", "stiffening",
-                                    "compare", "web-width", "inline4", "profile", "clonk", "ccx"])
+                                    "compare", "web-width", "inline4", "profile", "clonk", "ccx",
+                                    "engine"])
     p.add_argument("name", help="results file name: benchmarks/results/NAME.json")
     p.add_argument("inputs", nargs="*")
     p.add_argument("--command", help="the command line that ran the benchmark (default: PROGRAM)")
@@ -462,6 +473,7 @@ def main():
             "profile": lambda: collect_profile(a.inputs[0]),
             "clonk": lambda: collect_clonk(a.inputs[0], a.inputs[1:]),
             "ccx": lambda: collect_ccx(a.inputs),
+            "engine": lambda: collect_engine(a.inputs),
         }
         data = collectors[a.kind]()
     write_result(a.name, command, data)

@@ -324,6 +324,50 @@ INLINE4_HEADER = ["run", "modal coordinates", "rtol", "status", "IDA steps", "wa
                   "nose torsion RMS error %", "bearing 3 force RMS error %", "max nose torsion mrad"]
 
 
+ENGINE_LABELS = {
+    "ref": "full basis, rtol 1e-7 (reference)", "ref_half": "full basis, rtol 5e-8",
+    "default": "installed 2 kHz, rtol 1e-4 (scene default)", "band1000": "installed 1 kHz",
+    "band3000": "installed 3 kHz", "band5000": "installed 5 kHz",
+    "rtol1e-3": "installed 2 kHz, rtol 1e-3", "rtol1e-5": "installed 2 kHz, rtol 1e-5",
+    "lowest13": "lowest 13 free-free modes", "lowest20": "lowest 20 free-free modes",
+    "lowest40": "lowest 40 free-free modes",
+    "former_default": "lowest 20 modes, rtol 1e-6 (former default)", "rigid": "rigid crank",
+    "ref6000": "full basis, rtol 1e-7 (reference)", "default6000": "installed 2 kHz, rtol 1e-4 (scene default)",
+    "ref_step": "full basis, rtol 1e-7 (reference)", "default_step": "installed 2 kHz, rtol 1e-4 (scene default)",
+}
+
+
+def engine_rows(doc):
+    rows = []
+    for r in doc["data"]["runs"]:
+        steady = r.get("steady_state") or ""
+        steady = "—" if not steady else ("reached" if steady.startswith("reached") else "not reached")
+        rows.append([ENGINE_LABELS.get(r["name"], r["name"]), r["modal_coordinates"], f"{r['rtol']:.0e}",
+                     r["status"], steady, num(r["cycles"], ".0f"), r["steps"], num(r["cpu_seconds_per_cycle"], ".2f"),
+                     num(r["nose_torsion_error_pct"], ".2g"), num(r["main_bearing_error_pct"], ".2g"),
+                     num(r["big_end_error_pct"], ".2g")])
+    return rows
+
+
+ENGINE_HEADER = ["configuration", "modal coordinates", "rtol", "status", "steady state", "cycles run", "IDA steps",
+                 "CPU s per cycle", "nose torsion error %", "main bearings, worst %", "big ends, worst %"]
+
+
+def inline4_basis(res):
+    doc = res("inline4_basis")
+    return table(ENGINE_HEADER, engine_rows(doc)), [doc]
+
+
+def inline4_basis_6000(res):
+    doc = res("inline4_basis_6000")
+    return table(ENGINE_HEADER, engine_rows(doc)), [doc]
+
+
+def inline4_basis_load_step(res):
+    doc = res("inline4_basis_load_step")
+    return table(ENGINE_HEADER, engine_rows(doc)), [doc]
+
+
 def inline4_flex_modes(res):
     doc = res("inline4_flex_modes")
     names = {"ref": "reference (60 modes)", "modes0": "0 modes (rigid crank)", "modes10": "10 modes",
@@ -374,14 +418,18 @@ def driveline_clonk_bands(res):
     return table(["run", "window from s"] + [f"{c} Hz" for c in centres], rows), [doc]
 
 
-def inline4_profile(res):
-    doc = res("inline4_profile")
+def inline4_profile(res, name="inline4_profile"):
+    doc = res(name)
     lib = doc["data"]["by_library"][:8]
     fun = doc["data"]["by_function"][:15]
     out = table(["library", "share of samples %"], [[x["library"], num(x["share_pct"], ".1f")] for x in lib])
     out += [""] + table(["function (self time)", "share %"],
                         [[x["symbol"].replace("|", "\\|"), num(x["share_pct"], ".1f")] for x in fun])
     return out, [doc]
+
+
+def inline4_profile_before(res):
+    return inline4_profile(res, "inline4_profile_before")
 
 
 def mbs_work_precision(res):
@@ -430,9 +478,11 @@ def mbs_residual(res):
 
 
 TABLES = {f.__name__: f for f in [
-    crank_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52, crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
+    inline4_basis, inline4_basis_6000, inline4_basis_load_step,
+    crank_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
+    crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
-    inline4_profile, mbs_work_precision, mbs_multiplier_rule, mbs_chains, mbs_residual,
+    inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule, mbs_chains, mbs_residual,
     driveline_clonk, driveline_clonk_bands]}
 
 

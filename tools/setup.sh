@@ -42,11 +42,14 @@ case "$mode" in
   run)
     # Main job: the inline-4 engine with its flexible (Craig-Bampton) crankshaft. The crank
     # is reduced once from the default mesh (out/crankshaft_i4.h5, reused while it exists),
-    # then two engine cycles at 3000 rpm run (out/inline4.h5 and .csv).
+    # certified to 0.1 % in the 2 kHz band the scene's installed basis keeps (fixed-interface
+    # modes up to 20 kHz); then the engine runs at 3000 rpm until its periodic steady state
+    # (out/inline4.h5 and .csv).
     mkdir -p "$root/out"
     emb="$build/tools/emb/emb"
     if [ ! -f "$root/out/crankshaft_i4.h5" ]; then
-      "$emb" reduce "$root/meshes/crankshaft_i4.geo" -n 60 -o "$root/out/crankshaft_i4.h5"
+      "$emb" reduce "$root/meshes/crankshaft_i4.geo" --band 2000 --band-factor 10 \
+        -o "$root/out/crankshaft_i4.h5"
     fi
     "$emb" run "$root/tools/scenes/inline4.yaml"
     ;;

@@ -287,6 +287,27 @@ void ResultsWriter::RecordSteadyState(const SteadyStateReport& report,
   file_.Flush();
 }
 
+void ResultsWriter::RecordTruncations(const std::vector<mbs::TruncationReport>& reports) {
+  if (reports.empty()) return;
+  std::vector<std::string> parts;
+  std::vector<double> kept, available, error;
+  for (const auto& r : reports) {
+    parts.push_back(r.body);
+    kept.push_back(r.num_kept);
+    available.push_back(r.num_available);
+    error.push_back(r.static_compliance_error);
+  }
+  const std::vector<std::uint64_t> dims{reports.size()};
+  file_.WriteStrings("/model/basis_truncation/parts", parts);
+  file_.WriteDoubles("/model/basis_truncation/kept_modes", kept, dims);
+  file_.WriteDoubles("/model/basis_truncation/available_modes", available, dims);
+  file_.WriteDoubles("/model/basis_truncation/static_compliance_error", error, dims);
+  file_.SetAttribute("/model/basis_truncation/static_compliance_error", "meaning",
+                     std::string("max |C_kept - C_full| / max |C_full|, C the static compliance "
+                                 "at the part's loaded markers"));
+  file_.Flush();
+}
+
 CsvWriter::CsvWriter(const std::string& path, const mbs::System& system,
                      const std::vector<std::string>& channels)
     : path_(path), channels_(system, channels) {

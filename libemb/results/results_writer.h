@@ -24,6 +24,8 @@
 ///                       second joint of every coupler (a coupler loads both its joints)
 ///   /model/removed_equations  names of redundant equations removed (may be empty)
 ///   /model/mass [nb], /model/inertia [nb, 3, 3] (about the CM in B)
+///   /model/basis_truncation/{parts, kept_modes, available_modes, static_compliance_error}
+///                       [n] per flexible part from a body file (RecordTruncations)
 ///   /time               [N] s
 ///   /state/q            [N, 7 nb] per body p_WB (m) then e_WB (w, x, y, z); attributes
 ///                       values_per_body (7), position_column (0), quaternion_column (3)
@@ -104,6 +106,10 @@ class ResultsWriter {
   /// cycles, change, tolerance, worst_channel, cycle_start, cycle_end} [s] and flushes;
   /// readers (emb spectrum, the plots) analyse [cycle_start, cycle_end] by default.
   void RecordSteadyState(const SteadyStateReport& report, const SteadyStateSettings& settings);
+  /// Records the truncation error indicator of the flexible parts (PreparedRun::
+  /// truncations, mbs/analysis/basis_truncation.h), if any: /model/basis_truncation/parts
+  /// [n] names, kept_modes [n], available_modes [n], static_compliance_error [n] (relative).
+  void RecordTruncations(const std::vector<mbs::TruncationReport>& reports);
 
  private:
   const mbs::System& system_;

@@ -1,5 +1,6 @@
 #include "libemb/results/steady_state.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -58,8 +59,13 @@ bool SteadyStateMonitor::Add(const mbs::Sample& sample) {
           diff += (x[k] - y[k]) * (x[k] - y[k]);
           norm += x[k] * x[k];
         }
-        // A channel that is zero over the cycle counts by its absolute change.
-        const double d = norm > 0.0 ? std::sqrt(diff / norm) : std::sqrt(diff);
+        // A channel of round-off size over the cycle (RMS below kNullLevel, SI units: e.g. the
+        // nose torsion of a rigid crank) counts by its absolute RMS change: relative to itself
+        // its noise would never settle.
+        constexpr double kNullLevel = 1e-12;
+        const double n = static_cast<double>(std::max<std::size_t>(1, x.size()));
+        const double d = std::sqrt(norm / n) > kNullLevel ? std::sqrt(diff / norm)
+                                                          : std::sqrt(diff / n);
         if (!(d <= worst)) {  // NaN wins: a non-finite channel never converges
           worst = d;
           report_.worst_channel = channels_.names()[static_cast<std::size_t>(c)];

@@ -37,7 +37,35 @@ struct Parts {
   std::map<std::string, BeamPartOutputs> beam_outputs;  // the same, for output points
   /// Parts with `basis: installed` (the analysis builds their basis at the start).
   std::vector<mbs::InstalledBasisRequest> installed_bases;
+  /// Interface markers on flexible body-file parts: marker, part, interface index (the
+  /// truncation error indicator needs their shapes in the full basis).
+  struct InterfaceMarker {
+    std::string marker, part;
+    int interface{-1};
+  };
+  std::vector<InterfaceMarker> interface_markers;
 };
+
+// The flexible body-file parts without an installed basis, with their full bases and
+// interface markers, for the truncation error indicator (mbs/analysis/basis_truncation.h).
+std::vector<mbs::TruncatedBasis> TruncatedBases(const Parts& parts) {
+  std::vector<mbs::TruncatedBasis> out;
+  for (const auto& [name, part] : parts.from_body_files) {
+    if (!part.flexible || std::any_of(parts.installed_bases.begin(), parts.installed_bases.end(),
+                                      [&](const auto& r) { return r.body == name; }))
+      continue;
+    mbs::TruncatedBasis tb;
+    tb.body = name;
+    tb.source = part.source;
+    tb.full_eigenvalues = part.available_eigenvalues;
+    tb.kept = part.kept_modes;
+    for (const Parts::InterfaceMarker& m : parts.interface_markers)
+      if (m.part == name)
+        tb.markers.emplace_back(m.marker, part.available_interface_shapes.middleRows(6 * m.interface, 6));
+    out.push_back(std::move(tb));
+  }
+  return out;
+}
 
 // A path in the scene relative to the scene file's directory.
 std::string ScenePath(const std::string& file, const std::string& p) {
@@ -164,7 +192,7 @@ void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOpti
 }
 
 void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* sys,
-                 const Parts& parts) {
+                 Parts* parts) {
   ReadNamedList(
       list, file, "markers", "marker",
       [&](MapReader& r, const std::string& name, const YAML::Node& node) {
@@ -186,8 +214,8 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
         r.Finish();
         // A beam part is no single body: an interface marker goes on the node body of the
         // interface, with the orientation in part axes (mbs/flexible/beam_part.h).
-        if (const auto beam = parts.beams.find(body);
-            beam != parts.beams.end() && !interface.empty()) {
+        if (const auto beam = parts->beams.find(body);
+            beam != parts->beams.end() && !interface.empty()) {
           if (!at_point) {
             mbs::AddInterfaceMarker(sys, beam->second, name, interface, R);
             return;
@@ -195,7 +223,7 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
           // At part point p on the interface's node body (a beam section is rigid); axes R in
           // the part frame, as the interface marker's (which has the part's axes).
           const mbs::Marker& itf = sys->marker(sys->FindMarker(beam->second.FindInterface(interface).marker));
-          const mbs::BeamPartPlacement& pl = parts.beam_outputs.at(body).placement;
+          const mbs::BeamPartPlacement& pl = parts->beam_outputs.at(body).placement;
           const mbs::RigidBody& nb = sys->body(itf.body);
           sys->AddMarker(name, nb.name, nb.R_WB.transpose() * (pl.p_WP + pl.R_WP * p - nb.p_WB),
                          itf.R_BM * R);
@@ -203,10 +231,10 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
         }
         const int b = sys->FindBody(body);
         const mbs::RigidBody& rb = sys->body(b);
-        const auto part = parts.from_body_files.find(body);
+        const auto part = parts->from_body_files.find(body);
         if (!interface.empty()) {
           EMB_THROW_IF(
-              part == parts.from_body_files.end(),
+              part == parts->from_body_files.end(),
               "marker '" << name << "': body '" << body << "' has no body_file, so no interfaces");
           if (at_point) {
             const Vector3d q = part->second.interface_points.at(
@@ -219,6 +247,7 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
                                               "its interface's point");
           }
           mbs::AddInterfaceMarker(sys, part->second, name, interface, R);
+          parts->interface_markers.push_back({name, body, part->second.FindInterface(interface)});
           return;
         }
         EMB_THROW_IF(
@@ -231,7 +260,7 @@ void ReadMarkers(const YAML::Node& list, const std::string& file, mbs::System* s
         if (frame == "world") {  // given at the initial configuration
           p_BM = rb.R_WB.transpose() * (p - rb.p_WB);
           R_BM = rb.R_WB.transpose() * R;
-        } else if (part != parts.from_body_files.end()) {  // mesh coordinates
+        } else if (part != parts->from_body_files.end()) {  // mesh coordinates
           p_BM = part->second.MeshToBody(p);
         }
         sys->AddMarker(name, body, p_BM, R_BM);
@@ -431,7 +460,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   scene.inputs.push_back(source);
   ReadBodies(r.Require("bodies"), source, options, &scene.system, &parts, &scene.notes,
              &scene.inputs);
-  if (const YAML::Node n = r.Optional("markers")) ReadMarkers(n, source, &scene.system, parts);
+  if (const YAML::Node n = r.Optional("markers")) ReadMarkers(n, source, &scene.system, &parts);
   if (const YAML::Node n = r.Optional("joints")) ReadJoints(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("motions")) ReadMotions(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("couplers")) ReadCouplers(n, source, &scene.system);
@@ -442,6 +471,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   YAML::Node analysis_node = r.Optional("analysis");
   if (analysis_node) ReadAnalysis(analysis_node, source, &scene.analysis, &scene.steady_state);
   scene.analysis.installed_bases = parts.installed_bases;
+  scene.analysis.truncated_bases = TruncatedBases(parts);
   if (const YAML::Node n = r.Optional("planar"))
     scene.analysis.plane_normal = ReadPlanar(n, source);
   if (const YAML::Node n = r.Optional("output")) ReadOutput(n, source, &scene.output);

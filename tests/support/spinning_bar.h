@@ -13,12 +13,34 @@
 
 namespace emb::testing {
 
-/// `bar` needs interfaces x0 and x1; eta0 (optional) are its initial modal coordinates.
+/// The 0.6 x 0.04 x 0.03 m steel bar of these tests: root RBE2 (x0, the only support in the
+/// stiffening load cases) and tip RBE3 (x1), 2 fixed-interface modes (8 elastic
+/// coordinates), 2 % modal damping.
+inline BarSpec SpinningBarSpec() {
+  BarSpec bar;
+  bar.interfaces = {"x0:rbe2", "x1:rbe3"};
+  bar.modes = 2;
+  bar.damping_ratio = 0.02;
+  bar.stiffening_supports = {"x0"};
+  return bar;
+}
+
+/// Options with the geometric stiffening on.
+inline mbs::FlexibleBodyOptions StiffenedOptions() {
+  mbs::FlexibleBodyOptions options;
+  options.geometric_stiffening = mbs::GeometricStiffening::kOn;
+  return options;
+}
+
+/// `bar` needs interfaces x0 and x1; eta0 (optional) are its initial modal coordinates. The
+/// hub turns about the axis through the centre of the bar's root face; gravity g_W.
 inline mbs::System SpinningBar(const BarSpec& bar, double omega,
                                const mbs::FlexibleBodyOptions& options,
-                               const Eigen::VectorXd& eta0 = {}) {
-  const Eigen::Vector3d spin(0, 0, omega), hub_point(0, 0.02, 0.015);
+                               const Eigen::VectorXd& eta0 = {},
+                               const Eigen::Vector3d& g_W = Eigen::Vector3d::Zero()) {
+  const Eigen::Vector3d spin(0, 0, omega), hub_point(0, bar.width / 2, bar.height / 2);
   mbs::System sys;
+  sys.SetGravity(g_W);
   mbs::RigidBody hub;
   hub.name = "hub";
   hub.mass = 1.0;

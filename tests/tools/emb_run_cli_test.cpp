@@ -13,6 +13,7 @@
 
 #include "libemb/io/hdf5_file.h"
 #include "tests/support/cli_fixture.h"
+#include "tests/support/flexible_bar.h"
 
 namespace {
 
@@ -98,6 +99,43 @@ TEST_F(EmbMbsCli, IntegratorFailureKeepsResultsAndSaysWhere) {
   emb::H5File f((dir_ / "spin.h5").string(), emb::H5File::Mode::kRead);
   EXPECT_EQ(f.ReadStringAttribute("/", "status"), "integrator-failure");
   EXPECT_GE(f.Shape("/time")[0], 6u);  // t = 0 .. 0.25 s at least
+}
+
+TEST_F(EmbMbsCli, TruncatedBasisIsReportedAndWarned) {
+  // A root-clamped bar keeping 8 of the 14 elastic modes of its body file (issue 12; the
+  // numbers in tests/scene/basis_truncation_test.cpp): the summary gives the indicator per
+  // part, stderr warns naming the part and the fix, the results file stores it.
+  emb::testing::BarSpec bar;
+  bar.interfaces = {"x0:rbe2", "x1:rbe3"};
+  bar.modes = 8;
+  std::ofstream(dir_ / "bar.yaml")
+      << "bodies:\n  - {name: bar, model: cms, body_file: " << emb::testing::FlexibleBarFile(bar)
+      << ", modes: 8}\n"
+      << "markers:\n  - {name: root, body: bar, interface: x0}\n"
+      << "  - {name: tip, body: bar, interface: x1}\n"
+      << "  - {name: base, body: ground, frame: world, position: [0, 0.02, 0.015]}\n"
+      << "joints:\n  - {name: clamp, type: fixed, i: root, j: base}\n"
+      << "forces:\n  - {name: load, type: force, marker: tip, direction: [0, 0, 1], "
+         "function: {constant: 100}}\n"
+      << "analysis: {type: static}\n";
+  const CliResult r = Run("run -q --json bar.yaml -o bar.h5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto parts = nlohmann::json::parse(r.out)["summary"]["basis_truncation"];
+  ASSERT_EQ(parts.size(), 1u) << r.out;
+  EXPECT_EQ(parts[0]["part"], "bar");
+  EXPECT_EQ(parts[0]["kept_modes"], 8);
+  EXPECT_EQ(parts[0]["available_modes"], 14);
+  const double error = parts[0]["static_compliance_error"];
+  EXPECT_GT(error, 0.01);
+  for (const char* word : {"warning", "part 'bar'", "8 kept of 14", "modes:", "basis: installed"})
+    EXPECT_NE(r.err.find(word), std::string::npos) << word << " in: " << r.err;
+  emb::H5File f((dir_ / "bar.h5").string(), emb::H5File::Mode::kRead);
+  EXPECT_EQ(f.ReadStrings("/model/basis_truncation/parts"), std::vector<std::string>{"bar"});
+  EXPECT_EQ(f.ReadDoubles("/model/basis_truncation/static_compliance_error"),
+            std::vector<double>{error});
+  // The text summary names it too.
+  const CliResult t = Run("run -q bar.yaml -o bar2.h5");
+  EXPECT_NE(t.out.find("8 of 14 elastic modes"), std::string::npos) << t.out;
 }
 
 TEST_F(EmbMbsCli, HelpDocumentsOptions) {

@@ -111,7 +111,10 @@ struct RunCommand {
     const double t_prepare = sw.seconds();
     std::optional<scene::ResultsWriter> writer;
     std::optional<scene::CsvWriter> csv_writer;
-    if (!h5.empty()) writer.emplace(h5, run.system, sc.source, mbs::Name(st.type));
+    if (!h5.empty()) {
+      writer.emplace(h5, run.system, sc.source, mbs::Name(st.type));
+      writer->RecordTruncations(run.truncations);
+    }
     if (!csv_path.empty()) csv_writer.emplace(csv_path, run.system, sc.output.channels);
     std::optional<scene::SteadyStateMonitor> steady;
     if (sc.steady_state.enabled() && st.type == mbs::AnalysisType::kDynamic) {
@@ -175,6 +178,23 @@ struct RunCommand {
     s.Add("bodies", "moving bodies", run.system.layout().num_moving());
     s.Add("modal_coordinates", "modal coordinates", run.system.layout().num_elastic_total());
     if (!sc.notes.empty()) s.Add("parts", "parts", sc.notes);
+    if (!run.truncations.empty()) {
+      // The truncation error indicator per flexible part (mbs/analysis/basis_truncation.h).
+      nlohmann::json parts = nlohmann::json::array();
+      std::vector<std::string> lines;
+      for (const auto& t : run.truncations) {
+        parts.push_back({{"part", t.body},
+                         {"kept_modes", t.num_kept},
+                         {"available_modes", t.num_available},
+                         {"loaded_markers", t.loaded_markers},
+                         {"static_compliance_error", t.static_compliance_error}});
+        lines.push_back(t.note);
+      }
+      if (out.json)
+        s.Add("basis_truncation", "basis truncation", parts);
+      else
+        s.Add("basis_truncation", "basis truncation", lines);
+    }
     if (!run.bases.empty()) {
       std::vector<std::string> notes;
       double worst = 0.0;

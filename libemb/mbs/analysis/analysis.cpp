@@ -158,6 +158,10 @@ PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
   run.q0 = a2.q;
   const bool moving =
       settings.type == AnalysisType::kDynamic || settings.type == AnalysisType::kAssemble;
+  run.truncations = CalcTruncationReports(run.system, settings.truncated_bases);
+  for (const TruncationReport& t : run.truncations)
+    if (std::string w = TruncationWarning(t, settings.truncation_warning_threshold); !w.empty())
+      run.warnings.push_back(std::move(w));
   if (!settings.installed_bases.empty()) {
     // The installed modes about the assembled start (with its velocities: centrifugal terms).
     Eigen::VectorXd v0 = Eigen::VectorXd::Zero(run.system.layout().nv());

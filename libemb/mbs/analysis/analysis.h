@@ -22,6 +22,7 @@
 
 #include "libemb/common/progress.h"
 #include "libemb/integrators/ida_solver.h"
+#include "libemb/mbs/analysis/basis_truncation.h"
 #include "libemb/mbs/analysis/installed_basis.h"
 #include "libemb/mbs/constraints/assembly.h"
 #include "libemb/mbs/analysis/event_handling.h"
@@ -149,6 +150,14 @@ struct AnalysisSettings {
   /// before anything else runs: their modal coordinates become the installed modes of the
   /// model up to each body's band plus massless static responses at their loaded markers.
   std::vector<InstalledBasisRequest> installed_bases;
+  /// Flexible bodies that keep a subset of a full basis (a body file's `modes: N` or
+  /// `fmax_hz`): PrepareRun reports the static compliance their truncation loses at their
+  /// loaded markers (basis_truncation.h) and warns above truncation_warning_threshold.
+  std::vector<TruncatedBasis> truncated_bases;
+  /// Relative static compliance error above which a truncation is warned about: 1 % of
+  /// the interface flexibility is a 1 % stiffer joint or load path, the accuracy the
+  /// engine scenes ask of their forces (issue 12).
+  double truncation_warning_threshold{0.01};
 };
 
 /// A prepared run: the (possibly reduced) system and consistent initial values.
@@ -160,6 +169,8 @@ struct PreparedRun {
   std::string start_note;  ///< the quasi-static elastic start, when asked for
   /// What the installed bases (AnalysisSettings::installed_bases) kept, per body.
   std::vector<InstalledBasisReport> bases;
+  /// What the truncated bases (AnalysisSettings::truncated_bases) lose, per body.
+  std::vector<TruncationReport> truncations;
   /// The out-of-plane equations a planar model dropped (AnalysisSettings::plane_normal).
   std::vector<std::string> planar_removed;
 };

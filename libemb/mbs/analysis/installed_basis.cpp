@@ -7,6 +7,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/analysis/linearization.h"
+#include "libemb/mbs/analysis/static_compliance.h"
 
 namespace emb::mbs {
 namespace {
@@ -37,36 +38,6 @@ Eigen::MatrixXd RitzBasis(const Eigen::LLT<Eigen::MatrixXd>& M, const Eigen::Mat
   const Eigen::MatrixXd A = V.transpose() * K * V;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (A + A.transpose()));
   return V * eig.eigenvectors();
-}
-
-// What can load each marker (MarkerLoad flags): the constraint kernels through their
-// structure (a flexible marker is its own virtual body, so a kernel that reads only its
-// origin puts no moment on it) and the force elements' declarations.
-std::vector<unsigned> MarkerLoadsOf(const System& sys) {
-  std::vector<unsigned> loads(sys.markers().size(), 0u);
-  for (const ScalarEquation& eq : sys.equations())
-    for (int n = 0; n < eq.num_terms; ++n) {
-      unsigned i = 0, j = 0;
-      switch (eq.kernel[n].kind) {
-        case KernelKind::kPointComponent:  // e_k . (p_I - p_J)
-          i = j = kMarkerForce;
-          break;
-        case KernelKind::kPointOnAxis:  // (p_I - p_J) . a_J: J's axis turns
-          i = kMarkerForce;
-          j = kMarkerForceAndMoment;
-          break;
-        case KernelKind::kAxisDot:  // a_I . b_J
-        case KernelKind::kAngle:
-          i = j = kMarkerMoment;
-          break;
-      }
-      loads[eq.marker_i[n]] |= i;
-      loads[eq.marker_j[n]] |= j;
-    }
-  for (const auto& f : sys.force_elements())
-    for (int m : f->markers())
-      if (m >= 0) loads[m] |= f->MarkerLoads(m);
-  return loads;
 }
 
 }  // namespace
@@ -166,12 +137,6 @@ InstalledBases CalcInstalledBases(const System& system, const Eigen::VectorXd& q
     change.relaxation_time = r.relaxation / (2.0 * std::numbers::pi * r.dynamic_band_hz);
     for (Eigen::Index k = Vd.cols(); k < change.T.cols(); ++k) change.quasi_static[k] = true;
 
-    // The static compliance at the loaded directions, new basis against the full one.
-    const Eigen::MatrixXd& T = change.T;
-    const Eigen::MatrixXd C_full = F.transpose() * Kldlt.solve(F);
-    const Eigen::MatrixXd KT = T.transpose() * K * T;
-    const Eigen::MatrixXd TF = T.transpose() * F;
-    const Eigen::MatrixXd C_new = TF.transpose() * KT.ldlt().solve(TF);
     InstalledBasisReport rep;
     rep.body = r.body;
     rep.num_available = ne;
@@ -181,8 +146,8 @@ InstalledBases CalcInstalledBases(const System& system, const Eigen::VectorXd& q
     rep.dynamic_band_hz = r.dynamic_band_hz;
     rep.highest_kept_hz = highest;
     rep.first_left_out_hz = first_out;
-    rep.static_compliance_error =
-        (C_new - C_full).cwiseAbs().maxCoeff() / std::max(1e-300, C_full.cwiseAbs().maxCoeff());
+    // The static compliance at the loaded directions, new basis against the full one.
+    rep.static_compliance_error = StaticComplianceError(K, F, change.T);
     std::ostringstream o;
     o << "part '" << r.body << "': installed basis, " << rep.num_dynamic
       << " dynamic coordinates (the model's installed modes up to " << r.dynamic_band_hz

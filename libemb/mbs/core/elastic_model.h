@@ -27,7 +27,15 @@
 ///
 /// Geometric stiffening (optional, from the reduction): K_G(w, a) = sum_p c_p(w) K_p +
 /// sum_k a_k K_{a,k} with c = (wx^2, wy^2, wz^2, wx wy, wy wz, wz wx) and a = R^T(v'_WB - g),
-/// the acceleration of the frame origin less gravity in B.
+/// the acceleration of the frame origin less gravity in B. The centrifugal part derives
+/// from a kinetic energy (the second-order foreshortening of a bent body brings its mass
+/// closer to the spin axis), T_G = -1/2 eta^T K_G(w, 0) eta = -1/2 w^T Q(eta) w with
+/// Q = [s0 s3/2 s5/2; s3/2 s1 s4/2; s5/2 s4/2 s2], s_p = eta^T K_p eta, so its Lagrange
+/// equations also act on the rotation: J above is J - Q(eta) (mass and f_r), and f_r gains
+/// Q'(eta, eta') w with Q' from s'_p = 2 eta'^T K_p eta. Without them the force on eta did
+/// work through a frame rate that follows eta' (a frame held at an elastic interface): a
+/// bent, spinning cantilever's torsion mode grew from round-off (issue 12). The kinetic
+/// energy includes T_G; the total energy of an undamped, undriven model is conserved.
 
 #include <Eigen/Dense>
 #include <array>
@@ -120,7 +128,7 @@ struct FlexibleTerms {
 
   /// Scratch of the in-place evaluation (flexible_terms.cpp), kept between calls.
   struct Scratch {
-    Eigen::MatrixXd Bm, Mre, Mee, G, KG, W;
+    Eigen::MatrixXd Bm, Mre, Mee, G, KG, W, Kc, P;
     Eigen::VectorXd trB, fe, Kg_eta, tmp;
   } scratch;
 };

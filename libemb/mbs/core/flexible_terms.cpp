@@ -42,6 +42,14 @@ Eigen::Matrix<double, 6, 3> CentrifugalProductsDerivative(const Eigen::Vector3d&
   return d;
 }
 
+// The symmetric Q with w^T Q w = sum_p c_p(w) s_p for the products c_p of
+// CentrifugalProducts: Q = [s0 s3/2 s5/2; s3/2 s1 s4/2; s5/2 s4/2 s2].
+Eigen::Matrix3d ProductForm(const Eigen::Matrix<double, 6, 1>& s) {
+  Eigen::Matrix3d Q;
+  Q << s[0], 0.5 * s[3], 0.5 * s[5], 0.5 * s[3], s[1], 0.5 * s[4], 0.5 * s[5], 0.5 * s[4], s[2];
+  return Q;
+}
+
 }  // namespace
 
 void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
@@ -80,12 +88,32 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
   x.Mee = Sd(0) + Sd(4) + Sd(8);
   x.trB = (x.Bm.row(0) + x.Bm.row(4) + x.Bm.row(8)).transpose();
 
+  const bool kg = model.geometric_stiffening;
+  const Eigen::Matrix<double, 6, 1> cp = CentrifugalProducts(w);
+  // The centrifugal stiffening as kinetic energy (the foreshortening of a bent body moves
+  // its mass towards the spin axis): T_G = -1/2 eta^T K_G(w) eta = -1/2 w^T Q(eta) w with
+  // Q = ProductForm(s), s_p = eta^T K_p eta. Its Lagrange equations give the force
+  // -K_G(w) eta on eta and, on the rotation, the mass J - Q and the force
+  // w x (Q w) + Q' w (Q' = ProductForm(s'), s'_p = 2 eta'^T K_p eta). With the force on eta
+  // alone the stiffening did work whenever w had a part that follows eta' (a frame held at
+  // an elastic interface): a bent, spinning cantilever's torsion mode grew from round-off.
+  x.Kc.resize(ne, 6);
+  Eigen::Matrix<double, 6, 1> s_kg = Eigen::Matrix<double, 6, 1>::Zero(), sd_kg = s_kg;
+  if (kg) {
+    for (int p = 0; p < 6; ++p) {
+      x.Kc.col(p).noalias() = model.kg_centrifugal[p] * eta;
+      s_kg[p] = eta.dot(x.Kc.col(p));
+      sd_kg[p] = 2.0 * eta_dot.dot(x.Kc.col(p));
+    }
+  }
+  const Matrix3d Q = ProductForm(s_kg), Qd = ProductForm(sd_kg);
+
   if (want_mass) {
     t.mass.setZero(n, n);
     t.mass.block<3, 3>(0, 0) = m * Matrix3d::Identity();
     t.mass.block<3, 3>(0, 3) = -R * Skew(c);
     t.mass.block<3, 3>(3, 0) = Skew(c) * R.transpose();
-    t.mass.block<3, 3>(3, 3) = J;
+    t.mass.block<3, 3>(3, 3) = J - Q;
     t.mass.block(0, 6, 3, ne).noalias() = R * model.St;
     t.mass.block(6, 0, ne, 3) = t.mass.block(0, 6, 3, ne).transpose();
     t.mass.block(3, 6, 3, ne) = x.Mre;
@@ -107,14 +135,13 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) ww[3 * i + j] = w[i] * w[j];
   const double w2 = w.squaredNorm();
-  const bool kg = model.geometric_stiffening;
-  const Eigen::Matrix<double, 6, 1> cp = CentrifugalProducts(w);
 
   if (want_force) {
     t.force.resize(n);
     const Vector3d wq = w.cross(w.cross(c)) + 2.0 * w.cross(s);
     t.force.head<3>() = m * g_W - R * wq;
-    t.force.segment<3>(3) = c.cross(g_B) - w.cross(J * w) - 2.0 * (trBd * w - H.transpose() * w);
+    t.force.segment<3>(3) = c.cross(g_B) - w.cross((J - Q) * w) -
+                            2.0 * (trBd * w - H.transpose() * w) + Qd * w;
     // f_e = St^T g_B - (Bm^T ww - |w|^2 trB) - 2 G^T eta' - K eta - D eta' - K_G eta.
     auto fe = t.force.tail(ne);
     fe.noalias() = model.St.transpose() * g_B;
@@ -124,10 +151,7 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
     fe.noalias() -= model.K * eta;
     fe.noalias() -= model.D * eta_dot;
     if (kg) {
-      for (int p = 0; p < 6; ++p) {
-        x.Kg_eta.noalias() = model.kg_centrifugal[p] * eta;
-        fe -= cp[p] * x.Kg_eta;
-      }
+      fe.noalias() -= x.Kc * cp;
       for (int k = 0; k < 3; ++k) {
         x.Kg_eta.noalias() = model.kg_translational[k] * eta;
         fe -= a_B[k] * x.Kg_eta;
@@ -151,8 +175,8 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
       -R * (w * c.transpose() + w.dot(c) * Matrix3d::Identity() - 2.0 * c * w.transpose() -
             2.0 * Skew(s));
   t.damping.block(0, 6, 3, ne).noalias() = (-2.0 * R * Skew(w)) * model.St;
-  t.damping.block<3, 3>(3, 3) =
-      -(Skew(w) * J - Skew(J * w)) - 2.0 * (trBd * Matrix3d::Identity() - H.transpose());
+  t.damping.block<3, 3>(3, 3) = -(Skew(w) * (J - Q) - Skew((J - Q) * w)) -
+                                2.0 * (trBd * Matrix3d::Identity() - H.transpose()) + Qd;
   for (int l = 0; l < ne; ++l)
     t.damping.block<3, 1>(3, 6 + l) = -2.0 * (x.trB[l] * w - Block3(x.Bm, l).transpose() * w);
   auto dfe_dw = t.damping.block(6, 3, ne, 3);
@@ -163,12 +187,13 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
   dfe_dw.col(0).head(nd).noalias() -= 2.0 * (Sd(5) - Sd(7)).transpose() * eta_dot.head(nd);
   dfe_dw.col(1).head(nd).noalias() -= 2.0 * (Sd(6) - Sd(2)).transpose() * eta_dot.head(nd);
   dfe_dw.col(2).head(nd).noalias() -= 2.0 * (Sd(1) - Sd(3)).transpose() * eta_dot.head(nd);
+  // d(Q' w)/d eta' = P = sum_p (d c_p/d w)^T (K_p eta)^T (as d c_p / d w = 2 E_p w with
+  // w^T E_p w = c_p): the transpose of the stiffening's d f_e / d w = -P^T.
+  const Eigen::Matrix<double, 6, 3> dc = CentrifugalProductsDerivative(w);
   if (kg) {
-    const Eigen::Matrix<double, 6, 3> dc = CentrifugalProductsDerivative(w);
-    for (int p = 0; p < 6; ++p) {
-      x.Kg_eta.noalias() = model.kg_centrifugal[p] * eta;
-      dfe_dw.noalias() -= x.Kg_eta * dc.row(p);
-    }
+    x.P.noalias() = dc.transpose() * x.Kc.transpose();
+    dfe_dw.noalias() -= x.P.transpose();
+    t.damping.block(3, 6, 3, ne) += x.P;
   }
   t.damping.block(6, 6, ne, ne) = -model.D;
   t.damping.block(6, 6, nd, nd) -= 2.0 * x.G.transpose();
@@ -184,6 +209,13 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
     const Matrix3d Bk = Block3(x.Bm, k);
     const Matrix3d dJ = 2.0 * x.trB[k] * Matrix3d::Identity() - Bk - Bk.transpose();
     t.stiffness.block<3, 1>(3, 6 + k) = -Skew(g_B) * model.St.col(k) - w.cross(dJ * w);
+  }
+  if (kg) {
+    // d(w x Q w + Q' w)/d eta: d(Q w)/d eta = P, d(Q' w)/d eta = sum_p dc_p^T (K_p eta')^T.
+    Eigen::MatrixXd Kcd(ne, 6);
+    for (int p = 0; p < 6; ++p) Kcd.col(p).noalias() = model.kg_centrifugal[p] * eta_dot;
+    t.stiffness.block(3, 6, 3, ne).noalias() += Skew(w) * x.P;
+    t.stiffness.block(3, 6, 3, ne).noalias() += dc.transpose() * Kcd.transpose();
   }
   auto Kee = t.stiffness.block(6, 6, ne, ne);
   Kee = -model.K;
@@ -230,6 +262,10 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
     dMre.col(k) += dJ * a_w;
   }
   t.inertia_stiffness.block(3, 6, 3, ne) = -Skew(at_B) * model.St + dMre;
+  // Rows w also hold -Q(eta) a_w: d/d eta = -sum_p (d c_p/d w at a_w)^T (K_p eta)^T.
+  if (kg)
+    t.inertia_stiffness.block(3, 6, 3, ne).noalias() -=
+        CentrifugalProductsDerivative(a_w).transpose() * x.Kc.transpose();
   // Rows e: St^T R^T a_t + Mre^T a_w + Mee a_e.
   t.inertia_stiffness.block(6, 3, ne, 3).noalias() = model.St.transpose() * Skew(at_B);
   t.inertia_stiffness.block(6, 6, nd, nd) =

@@ -118,6 +118,8 @@ FlexibleBodyModel MakeFlexibleBody(const std::string& name, const ReducedBody& r
     model->MakeQuasiStatic(flags, name);
   }
   part.flexible = true;
+  part.available_eigenvalues = reduced.modes.eigenvalues;
+  part.available_interface_shapes = reduced.interface_shapes;
   part.interface_shapes.resize(reduced.interface_shapes.rows(), part.num_modes());
   for (int j = 0; j < part.num_modes(); ++j)
     part.interface_shapes.col(j) = reduced.interface_shapes.col(part.kept_modes[j]);

@@ -80,6 +80,11 @@ struct FlexiblePart {
   Eigen::MatrixXd interface_shapes;
   std::vector<int> kept_modes;  ///< indices into the reduced body's elastic modes
   int num_available_modes{0};   ///< elastic modes of the reduced body
+  /// The full basis the kept modes come from (flexible parts only), for the truncation
+  /// error indicator (mbs/analysis/basis_truncation.h): its eigenvalues [1/s^2] and
+  /// interface shapes (as interface_shapes, every mode).
+  Eigen::VectorXd available_eigenvalues;
+  Eigen::MatrixXd available_interface_shapes;
   std::string note;             ///< what was kept, for the run report
 
   int num_modes() const { return static_cast<int>(kept_modes.size()); }

@@ -21,14 +21,8 @@ constexpr double kOmega = 200.0;  // hub speed [rad/s]
 
 // Radial tip position relative to the hub over 2 ms (about four axial periods).
 std::vector<double> TipStretch(mbs::ElasticStart start, std::string* note) {
-  testing::BarSpec bar;  // 0.6 x 0.04 x 0.03 m steel
-  bar.interfaces = {"x0:rbe2", "x1:rbe3"};
-  bar.modes = 2;
-  bar.damping_ratio = 0.02;
-  bar.stiffening_supports = {"x0"};
-  mbs::FlexibleBodyOptions options;
-  options.geometric_stiffening = mbs::GeometricStiffening::kOn;
-  const mbs::System sys = testing::SpinningBar(bar, kOmega, options);
+  const mbs::System sys =
+      testing::SpinningBar(testing::SpinningBarSpec(), kOmega, testing::StiffenedOptions());
   mbs::AnalysisSettings settings;
   settings.t_end = 2e-3;
   settings.output_step = 1e-5;
