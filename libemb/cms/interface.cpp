@@ -242,6 +242,24 @@ Interface Resolve(const Mesh& mesh, const InterfaceSpec& spec) {
 
 }  // namespace
 
+std::optional<Eigen::Vector3d> PlaneNormal(const Mesh& mesh, const PhysicalGroup& group) {
+  Eigen::Matrix3d normal_moment = Eigen::Matrix3d::Zero();
+  double area = 0.0;
+  for (const auto& b : group.faces) {
+    if (NumCorners(b.type) == 0) return std::nullopt;
+    for (int c = 0; c < b.num_cells(); ++c) {
+      const FaceGeometry fg = CornerPolygon(mesh, b.cell(c), NumCorners(b.type));
+      area += fg.area;
+      normal_moment += fg.area * fg.normal * fg.normal.transpose();
+    }
+  }
+  if (!(area > 0)) return std::nullopt;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(normal_moment / area);
+  // Same planarity test as an interface's (Resolve).
+  if (!(es.eigenvalues()[1] < 1e-8)) return std::nullopt;
+  return Eigen::Vector3d(es.eigenvectors().col(2));
+}
+
 const char* Name(Coupling c) { return c == Coupling::kRbe2 ? "rbe2" : "rbe3"; }
 
 InterfaceSpec InterfaceSpec::Parse(const std::string& text) {

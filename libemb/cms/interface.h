@@ -69,6 +69,10 @@ struct Interface {
   Eigen::MatrixXd AveragingOperator(const Mesh& mesh) const;
 };
 
+/// The unit normal of a planar surface group (area-weighted face normals all parallel to 1e-8),
+/// or nothing for a curved surface or a group without faces.
+std::optional<Eigen::Vector3d> PlaneNormal(const Mesh& mesh, const PhysicalGroup& group);
+
 /// Resolves interface specs on `mesh`.
 /// @throws InputError for an unknown group (listing those present), a group that is not a
 ///   surface (or has no faces), an empty group, a surface made of disconnected pieces, two

@@ -21,13 +21,20 @@ double LambdaFromHz(double f_hz) {
 ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
                          const ProgressFn& progress) {
   EigenSolverOptions so = options.solver;
+  const bool use_basis = options.basis.cols() > 0;
+  EMB_THROW_IF(use_basis && !options.fixed_dofs.empty(),
+               "modal analysis: expected either fixed unknowns or a constraint basis, got both");
+  EMB_THROW_IF(use_basis && options.basis.rows() != sys.num_dofs(),
+               "modal analysis: constraint basis has " << options.basis.rows()
+                                                       << " rows, expected " << sys.num_dofs());
   // Unknowns fixed twice (a node in two clamped groups) count once.
   std::vector<int> fixed = options.fixed_dofs;
   std::sort(fixed.begin(), fixed.end());
   fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
   // For the lowest modes, one more than asked tells whether the last one has a degenerate
   // partner (the requested count would cut a pair in two).
-  const int free_dofs = sys.num_dofs() - static_cast<int>(fixed.size());
+  const int free_dofs = use_basis ? static_cast<int>(options.basis.cols())
+                                  : sys.num_dofs() - static_cast<int>(fixed.size());
   const bool probe_next = options.shift_hz < 0.0 && options.num_modes + 1 < free_dofs &&
                           (so.subspace == 0 || so.subspace > options.num_modes + 1);
   so.num_modes = options.num_modes + (probe_next ? 1 : 0);
@@ -35,9 +42,18 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
   if (so.shift > 0.0 && so.backend == CholeskyBackend::kCholmodSupernodal)
     so.backend = CholeskyBackend::kCholmodLDLT;  // interior shift: K − σM is indefinite
   ModalResult r;
-  r.num_fixed_dofs = static_cast<int>(fixed.size());
+  r.num_fixed_dofs = sys.num_dofs() - free_dofs;
+  r.expected_rigid_modes = options.expected_rigid_modes;
   double scale = 0.0;  // ‖K‖₁/‖M‖₁ of the free unknowns
-  if (fixed.empty()) {
+  if (use_basis) {
+    const SparseMatrix& T = options.basis;
+    const SparseMatrix Tt = T.transpose();
+    const SparseMatrix Kr = Tt * sys.K * T, Mr = Tt * sys.M * T;
+    r.eig = SolveGeneralizedEigen(Kr, Mr, so, progress);
+    scale = NormOne(Kr) / NormOne(Mr);
+    r.basis_coordinates = std::move(r.eig.vectors);
+    r.eig.vectors = T * r.basis_coordinates;
+  } else if (fixed.empty()) {
     r.eig = SolveGeneralizedEigen(sys.K, sys.M, so, progress);
     scale = NormOne(sys.K) / NormOne(sys.M);
   } else {
@@ -68,6 +84,7 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
     r.num_rigid_modes = std::min(r.num_rigid_modes, n);
     r.eig.eigenvalues.conservativeResize(n);
     r.eig.vectors.conservativeResize(Eigen::NoChange, n);
+    if (use_basis) r.basis_coordinates.conservativeResize(Eigen::NoChange, n);
     r.eig.backward_errors.conservativeResize(n);
     r.eig.num_converged = std::min(r.eig.num_converged, n);
     r.eig.num_requested = n;

@@ -21,6 +21,13 @@ struct ModalOptions {
   EigenSolverOptions solver;  ///< num_modes and shift are filled in from the fields above
   /// Unknowns held at zero (clamped), any order; empty = free-free.
   std::vector<int> fixed_dofs;
+  /// Or, for general linear supports (libemb/linalg/constraint_elimination.h): the unknowns
+  /// u = T v (num_dofs × m, m ≥ 1) of the constrained part; the modes are those of
+  /// (Tᵀ K T, Tᵀ M T). Empty (0 columns) = not used; not together with fixed_dofs.
+  SparseMatrix basis;
+  /// The rigid-body modes the supports leave (e.g. from the rank of the held rigid motions), or
+  /// −1 if unknown: reported beside the count found in the spectrum.
+  int expected_rigid_modes{-1};
 };
 
 struct ModalResult {
@@ -29,7 +36,10 @@ struct ModalResult {
   Eigen::VectorXd frequencies_hz;  ///< f = sign(λ)·√|λ| / 2π [Hz], ascending
   int num_rigid_modes{0};          ///< the lowest modes that are rigid (CountRigidModes)
   double rigid_threshold{0.0};     ///< kRigidRoundOff · ‖K‖₁/‖M‖₁ [rad²/s²]
-  int num_fixed_dofs{0};           ///< distinct unknowns held at zero
+  int num_fixed_dofs{0};           ///< distinct unknowns held at zero (num_dofs − m with a basis)
+  int expected_rigid_modes{-1};    ///< ModalOptions::expected_rigid_modes
+  /// With ModalOptions::basis: the modes in the basis coordinates v (m × modes), φ = T v.
+  Eigen::MatrixXd basis_coordinates;
   /// True when the highest mode returned has a (numerically) degenerate partner that was not
   /// asked for — e.g. one of a bending pair of a tube. Checked for the lowest modes only, by
   /// computing one mode more than asked; the extra mode is not returned.

@@ -1,10 +1,13 @@
 // emb modes PART: natural frequencies and mode shapes of a solid part, free-free by default
-// or with clamped physical groups; results to an HDF5 file (+ XDMF for ParaView).
+// or with supports (held components of groups, symmetry planes, RBE2/RBE3 reference nodes with
+// held components, equations between nodes); results to an HDF5 file (+ XDMF for ParaView).
+//   emb modes beam.msh --rbe3 end_a:x,y,z,rx --rbe3 end_b:y,z --modes 8 --json
 
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
+#include "libemb/cms/supports.h"
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
 #include "libemb/common/timer.h"
@@ -15,6 +18,7 @@
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
 #include "tools/emb/progress_display.h"
+#include "tools/emb/support_options.h"
 
 namespace emb::cli {
 namespace {
@@ -24,7 +28,7 @@ struct ModesCommand {
   OutputOptions out;
   int num_modes{20};
   double shift_hz{-1.0};
-  std::vector<std::string> fixed_groups;
+  SupportOptions supports;
   int subspace{0};
   int block_size{0};
   double tolerance{1e-10};
@@ -45,6 +49,8 @@ struct ModesCommand {
     part.material.Validate();
     EMB_THROW_IF(num_modes < 1, "--modes: expected at least 1, got " << num_modes);
     CheckSolverOptions(tolerance, subspace, max_restarts, shift_hz);
+    // Supports parsed (and the equation file read) before any work.
+    const SupportSpecs specs = supports.Specs();
     // Every output checked and locked before any work.
     const std::string h5_path = no_output ? "" : OutputPath();
     const std::string xdmf_path =
@@ -72,20 +78,28 @@ struct ModesCommand {
     if (method == "block") mo.solver.method = EigenMethod::kBlock;
     if (method == "lanczos") mo.solver.method = EigenMethod::kLanczos;
     if (method == "dense") mo.solver.method = EigenMethod::kDense;
-    for (const auto& g : fixed_groups) {
-      const auto dofs = GroupDofs(mesh, g);
-      mo.fixed_dofs.insert(mo.fixed_dofs.end(), dofs.begin(), dofs.end());
-    }
+    sw.Restart();
+    const Supports held = BuildSupports(mesh, specs);
+    mo = held.Apply(mo);
+    times.Add("supports", sw.seconds());
 
     sw.Restart();
     const SystemMatrices sys = AssembleSystem(mesh, part.material, progress);
     times.Add("assembly", sw.seconds());
-    const ModalResult modes = ComputeModes(sys, mo, progress);
+    ModalResult modes = ComputeModes(sys, mo, progress);
     for (const auto& p : modes.eig.times.phases) times.Add(p.first, p.second);
     FinishProgressLine();
+    const double constraint_residual =
+        specs.empty() || !modes.eig.ok() ? 0.0 : ConstraintResidual(held, modes);
+    if (modes.eig.ok() && !(constraint_residual <= kConstraintResidualLimit)) {
+      modes.eig.status = EigenStatus::kInaccurate;
+      modes.eig.message = "a mode violates the supports by " +
+                          std::to_string(constraint_residual) + " (limit " +
+                          std::to_string(kConstraintResidualLimit) + ")";
+    }
 
-    Table table("Natural frequencies (" + std::string(fixed_groups.empty() ? "free-free" : "clamped") +
-                    ")",
+    Table table("Natural frequencies (" +
+                    (specs.empty() ? std::string("free-free") : held.description) + ")",
                 {"mode", "frequency_hz", "kind", "backward_error"},
                 {"mode", "frequency [Hz]", "kind", "backward error"});
     const int m = static_cast<int>(modes.frequencies_hz.size());
@@ -97,12 +111,29 @@ struct ModesCommand {
     Summary s("Modal analysis of " + mesh.source);
     s.Add("mesh", "mesh", mesh.Summary());
     s.Add("dofs", "degrees of freedom", sys.num_dofs());
-    s.Add("fixed_dofs", "fixed unknowns", static_cast<long long>(modes.num_fixed_dofs));
+    s.Add("supports", "supports", specs.empty() ? std::string("none (free-free)") : held.description);
+    s.Add("fixed_dofs", "unknowns removed by supports", static_cast<long long>(modes.num_fixed_dofs));
+    if (!specs.empty()) {
+      s.Add("held_components", "held node components",
+            static_cast<long long>(held.num_held_components));
+      s.Add("constraints", "constraint rows", static_cast<long long>(held.rows.size()));
+      s.Add("redundant_constraints", "redundant symmetry rows (implied, unused)",
+            static_cast<long long>(held.num_redundant_rows));
+      s.Add("constraint_residual", "max constraint residual of the modes", constraint_residual);
+    }
     s.Add("mass_kg", "mass [kg]", sys.mass);
     s.Add("status", "status", std::string(Name(modes.eig.status)));
     if (!modes.eig.message.empty()) s.Add("message", "message", modes.eig.message);
     s.Add("converged", "converged pairs", static_cast<long long>(modes.eig.num_converged));
     s.Add("rigid_modes", "rigid-body modes", static_cast<long long>(modes.num_rigid_modes));
+    s.Add("expected_rigid_modes", "rigid-body modes the supports leave",
+          static_cast<long long>(modes.expected_rigid_modes));
+    if (modes.eig.ok() && modes.num_rigid_modes != modes.expected_rigid_modes &&
+        modes.num_rigid_modes < num_modes)
+      s.Add("rigid_warning", "warning",
+            std::to_string(modes.num_rigid_modes) + " zero-frequency modes found, but the "
+            "supports leave " + std::to_string(modes.expected_rigid_modes) +
+            " rigid motions: a mechanism or a disconnected piece?");
     if (modes.splits_degenerate_group)
       s.Add("warning", "warning",
             "mode " + std::to_string(num_modes) + " has a degenerate partner (mode " +
@@ -158,8 +189,7 @@ void RegisterModesCommand(CLI::App& app) {
                   "Find the modes nearest this frequency [Hz]; the default (negative) gives the "
                   "lowest modes, also for free-free parts")
       ->capture_default_str();
-  cmd->add_option("--fixed", st->fixed_groups,
-                  "Clamp all nodes of this physical group (repeatable); default free-free");
+  st->supports.Register(*cmd);
   cmd->add_option("--method", st->method,
                   "Eigen-solver: auto (dense up to 300 unknowns, else block), block (block "
                   "shift-invert Krylov-Schur on multi-RHS solves), lanczos (Spectra's "
