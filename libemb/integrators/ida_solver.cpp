@@ -333,10 +333,7 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
     std::rethrow_exception(e);
   }
   if (flag == IDA_ROOT_RETURN) {  // y, y' are the values at the root t_reached
-    root_.emplace();
-    root_->t = t_reached;
-    root_->y = View(m.y);
-    root_->yp = View(m.yp);
+    root_ = PendingRoot{t_reached, View(m.y), View(m.yp), {}};
     root_->directions.assign(static_cast<std::size_t>(problem_.num_roots()), 0);
     CheckSetup(IDAGetRootInfo(m.mem, root_->directions.data()), "IDAGetRootInfo");
     return ReportPendingRoot(t_out);

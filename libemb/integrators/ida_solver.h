@@ -125,8 +125,10 @@ class IdaSolver final : public DaeIntegrator {
   std::vector<long> limiter_count_;  // per component: steps it limited
   IntegratorStats before_reinit_;  // counters up to the last Reinitialize (IDA zeroes its own)
   // An event IDA located beyond the output time asked for: reported when reached.
+  // No default member initialisers: clang does not see a nested struct with them as
+  // default-constructible inside its enclosing class (std::optional::emplace fails).
   struct PendingRoot {
-    double t{0.0};
+    double t;
     Eigen::VectorXd y, yp;
     std::vector<int> directions;
   };
