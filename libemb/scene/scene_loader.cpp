@@ -53,7 +53,10 @@ struct Parts {
 // interface markers, for the truncation error indicator (mbs/analysis/basis_truncation.h).
 std::vector<mbs::TruncatedBasis> TruncatedBases(const Parts& parts) {
   std::vector<mbs::TruncatedBasis> out;
-  for (const auto& [name, part] : parts.from_body_files) {
+  for (const auto& entry : parts.from_body_files) {
+    // Not a structured binding: clang 14 cannot capture those in the lambda below.
+    const std::string& name = entry.first;
+    const auto& part = entry.second;
     if (!part.flexible || std::any_of(parts.installed_bases.begin(), parts.installed_bases.end(),
                                       [&](const auto& r) { return r.body == name; }))
       continue;
