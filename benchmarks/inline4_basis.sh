@@ -5,7 +5,7 @@
 # other tolerances, the lowest N free-free modes (the former default), the rigid crank.
 # Every run starts quasi-statically and runs to its own periodic steady state (the scene's
 # analysis.steady_state); the steady cycles are compared (benchmarks/engine_errors.py).
-#   benchmarks/inline4_basis.sh [3000|6000|load-step|all]
+#   benchmarks/inline4_basis.sh [3000|6000|load-step|ocvirk|1cyl|all]
 # EMB_BENCH_RESUME=1 keeps the runs already in out/bench_basis/. Needs the main job's body file out/crankshaft_i4.h5 (tools/setup.sh run makes it). Runs in
 # out/bench_basis/ one at a time; the cost is the run's CPU time (user + system: the run is
 # single-threaded, so on an idle machine its wall time), recorded with the wall time. The numbers go
@@ -18,8 +18,8 @@ dir=$root/out/bench_basis
 mkdir -p "$dir"
 [ -f "$root/out/crankshaft_i4.h5" ] || { echo "run tools/setup.sh run first (out/crankshaft_i4.h5)" >&2; exit 1; }
 
-# run SCENE NAME BASIS RTOL [STEADY_TOL] [ANALYSIS_KEY]: BASIS = installed:BAND_HZ | modes:N |
-# all | rigid; ANALYSIS_KEY: one more `analysis:` line (e.g. the integrator)
+# run SCENE NAME BASIS RTOL [STEADY_TOL] [ANALYSIS_KEY]: BASIS = installed:BAND_HZ[:RELAXATION] |
+# modes:N | all | rigid; ANALYSIS_KEY: one more `analysis:` line (e.g. the integrator)
 run() {
   local scene=$1 name=$2 basis=$3 rtol=$4 steady=${5:-} extra=${6:-}
   local f=$dir/$name.yaml
@@ -28,6 +28,9 @@ run() {
       -e "s#file: ../../out/[a-z0-9_]*.h5#file: $dir/$name.h5#" -e "s#csv: ../../out/[a-z0-9_]*.csv#csv: $dir/$name.csv#" \
       "$root/tools/scenes/$scene.yaml" > "$f"
   case $basis in
+    installed:*:*)
+      local spec=${basis#installed:}
+      sed -i "s#^\( *\)dynamic_band_hz: 2000 .*#\1dynamic_band_hz: ${spec%%:*}\n\1quasi_static_relaxation: ${spec#*:}#" "$f" ;;
     installed:*) sed -i "s#dynamic_band_hz: 2000 #dynamic_band_hz: ${basis#installed:} #" "$f" ;;
     modes:*|all|rigid)
       /usr/bin/python3 - "$f" "$basis" <<'EOF'
@@ -64,16 +67,29 @@ if [ "$what" = 3000 ] || [ "$what" = all ]; then
   for b in 1000 3000 5000; do run inline4 band$b installed:$b 1e-4; done
   for r in 1e-3 1e-5; do run inline4 rtol$r installed:2000 "$r"; done
   run inline4 galpha installed:2000 1e-4 "" "integrator: generalized-alpha"
+  for x in 0.01 1; do run inline4 relax$x installed:2000:$x 1e-4; done
+  run inline4 newton0.33 installed:2000 1e-4 "" "newton_convergence_factor: 0.33"
   for m in 13 20 40; do run inline4 lowest$m modes:$m 1e-4; done
   run inline4 former_default modes:20 1e-6
   run inline4 rigid rigid 1e-4
   record inline4_basis 0.04 ref ref_half default band1000 band3000 band5000 rtol1e-3 rtol1e-5 galpha \
+    relax0.01 relax1 newton0.33 \
     lowest13 lowest20 lowest40 former_default rigid
 fi
 if [ "$what" = 6000 ] || [ "$what" = all ]; then
   run inline4_6000 ref6000 all 1e-7 5e-4
   run inline4_6000 default6000 installed:2000 1e-4
   record inline4_basis_6000 0.02 ref6000 default6000
+fi
+if [ "$what" = ocvirk ] || [ "$what" = all ]; then
+  run inline4_ocvirk ref_ocvirk all 1e-7 5e-4
+  run inline4_ocvirk default_ocvirk installed:2000 1e-5
+  record inline4_basis_ocvirk 0.04 ref_ocvirk default_ocvirk
+fi
+if [ "$what" = 1cyl ] || [ "$what" = all ]; then
+  run engine_1cyl_cms ref_1cyl all 1e-7 5e-4
+  run engine_1cyl_cms default_1cyl installed:2000 1e-5
+  record engine_1cyl_basis 0.04 ref_1cyl default_1cyl
 fi
 if [ "$what" = load-step ] || [ "$what" = all ]; then
   run inline4_load_step ref_step all 1e-7

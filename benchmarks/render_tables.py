@@ -334,6 +334,10 @@ ENGINE_LABELS = {
     "lowest40": "lowest 40 free-free modes",
     "former_default": "lowest 20 modes, rtol 1e-6 (former default)", "rigid": "rigid crank",
     "ref6000": "full basis, rtol 1e-7 (reference)", "default6000": "installed 2 kHz, rtol 1e-4 (scene default)",
+    "relax0.01": "installed 2 kHz, relaxation 0.01", "relax1": "installed 2 kHz, relaxation 1",
+    "newton0.33": "installed 2 kHz, Newton convergence factor 0.33 (SUNDIALS' default)",
+    "ref_ocvirk": "full basis, rtol 1e-7 (reference)", "default_ocvirk": "installed 2 kHz, rtol 1e-5 (scene default)",
+    "ref_1cyl": "full basis, rtol 1e-7 (reference)", "default_1cyl": "installed 2 kHz, rtol 1e-5 (scene default)",
     "ref_step": "full basis, rtol 1e-7 (reference)", "default_step": "installed 2 kHz, rtol 1e-4 (scene default)",
 }
 
@@ -361,6 +365,16 @@ def inline4_basis(res):
 
 def inline4_basis_6000(res):
     doc = res("inline4_basis_6000")
+    return table(ENGINE_HEADER, engine_rows(doc)), [doc]
+
+
+def inline4_basis_ocvirk(res):
+    doc = res("inline4_basis_ocvirk")
+    return table(ENGINE_HEADER, engine_rows(doc)), [doc]
+
+
+def engine_1cyl_basis(res):
+    doc = res("engine_1cyl_basis")
     return table(ENGINE_HEADER, engine_rows(doc)), [doc]
 
 
@@ -513,7 +527,7 @@ def steady_state(res):
 
 
 TABLES = {f.__name__: f for f in [
-    inline4_basis, inline4_basis_6000, inline4_basis_load_step,
+    inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
     crank_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
     crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,

@@ -47,8 +47,9 @@ struct InstalledBasisRequest {
   /// rides on the massless static flexibility (rods on a crankpin, a flywheel on a flange)
   /// gets damped above the band instead of ringing with the ~1 % damping of the high modes
   /// its static shapes are made of, which the integrator would otherwise resolve. Measured
-  /// on the inline-4 at a 2 kHz band (benchmarks/README.md): 0.1 takes 2.7x fewer steps
-  /// than 0.01 and moves the results by 0.1 % (RMS); 0 adds nothing.
+  /// on the inline-4 at a 2 kHz band (benchmarks/results/inline4_basis.json, rows relax*):
+  /// 0.01 takes about 2.5x the steps of 0.1, 1 moves a bearing force by over 1 %; 0 adds
+  /// nothing.
   double relaxation{0.1};
 };
 
