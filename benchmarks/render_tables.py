@@ -526,7 +526,32 @@ def steady_state(res):
                   "cycle 2 vs steady", "transient decay per cycle"], rows), [doc]
 
 
+def campbell_inline4(res):
+    doc = res("campbell_inline4")
+    r = doc["data"]["runs"][0]
+    rows = [[m["index"], m["class"], m["whirl"], sig3(m["hz_1000"]), sig3(m["hz_3000"]),
+             sig3(m["hz_6500"]), num(m["torsion_3000"], ".2f"), num(m["bending_3000"], ".2f"),
+             num(m["min_mac"], ".3f")] for m in r["modes"]]
+    lines = table(["mode", "class", "whirl", "f at 1000 rpm [Hz]", "f at 3000 rpm [Hz]",
+                   "f at 6500 rpm [Hz]", "torsion fraction", "bending fraction", "min MAC"], rows)
+    lines += ["", "Crossings of the orders 2, 4, 6, 8 in 1000-6500 rpm:", ""]
+    lines += table(["order", "rpm", "f [Hz]", "mode", "class"],
+                   [[num(c["order"]), sig3(c["rpm"]), sig3(c["mode_hz"]), c["mode_index"],
+                     c["class"]] for c in r["main_order_crossings"]])
+    return lines, [doc]
+
+
+def tvd_inline4(res):
+    doc = res("tvd_inline4")
+    r = doc["data"]["runs"][0]
+    rows = [[num(o["order"]), num(o["without_rad"] * 1e3, ".3g"), num(o["with_rad"] * 1e3, ".3g"),
+             num(o["ratio"], ".2f")] for o in r["orders"]]
+    return table(["order", "nose torsion without TVD [mrad]", "with TVD [mrad]", "with / without"],
+                 rows), [doc]
+
+
 TABLES = {f.__name__: f for f in [
+    campbell_inline4, tvd_inline4,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
     crank_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
     crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,

@@ -5,6 +5,7 @@
 #include "libemb/common/error.h"
 #include "libemb/engine/cylinder_pressure.h"
 #include "libemb/engine/journal_bearing.h"
+#include "libemb/engine/torsional_damper.h"
 
 namespace emb::scene {
 
@@ -16,6 +17,17 @@ void ReadJournalBearing(MapReader& r, const std::string& name, mbs::System* sys)
   p.clearance = r.GetDouble("clearance", NumberRange::Positive("m"));
   p.viscosity = r.GetDouble("viscosity", NumberRange::Positive("Pa s"));
   sys->AddForceElement(std::make_shared<mbs::JournalBearing>(name, i, j, p));
+}
+
+void ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys) {
+  engine::TorsionalDamperSpec s;
+  s.name = name;
+  s.hub_marker = r.GetString("hub");
+  s.ring_mass = r.GetDouble("ring_mass", NumberRange::Positive("kg"));
+  s.ring_inertia = r.GetDouble("ring_inertia", NumberRange::Positive("kg m^2"));
+  s.stiffness = r.GetDouble("stiffness", 0.0, NumberRange::NonNegative("N m/rad"));
+  s.damping = r.GetDouble("damping", 0.0, NumberRange::NonNegative("N m s/rad"));
+  engine::AddTorsionalDamper(sys, s);  // names the damper in its errors
 }
 
 mbs::TimeFunction ReadCylinderPressure(const YAML::Node& n, const std::string& file,

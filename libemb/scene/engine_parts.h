@@ -17,6 +17,10 @@ namespace emb::scene {
 /// mbs::JournalBearing. `r` has read name and type.
 void ReadJournalBearing(MapReader& r, const std::string& name, mbs::System* sys);
 
+/// {name, type: torsional-damper, hub, ring_mass, ring_inertia, stiffness, damping}: adds an
+/// engine::AddTorsionalDamper ring (its body, marker, joint and spring-damper) on marker `hub`.
+void ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys);
+
 /// {bore, stroke, rod, compression_ratio, intake_pressure, exhaust_pressure,
 ///  crankcase_pressure, polytropic_exponent, fired, combustion_start_deg,
 ///  combustion_duration_deg, wiebe_a, wiebe_m, heat_released | peak_pressure,

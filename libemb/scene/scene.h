@@ -51,6 +51,14 @@ struct SceneOptions {
 /// names, zero or non-unit axes, bad mass or inertia, bad functions, output paths outside.
 Scene LoadScene(const std::string& path, const SceneOptions& options = {});
 
+/// The text of scene file `path`. @throws InputError if it is missing or unreadable.
+std::string ReadSceneText(const std::string& path);
+
+/// LoadScene for `text` read from (or derived from) the scene file `path`: paths resolve
+/// against path's directory as if the text were that file (operating_point.h).
+Scene LoadSceneText(const std::string& text, const std::string& path,
+                    const SceneOptions& options = {});
+
 /// The same from text; `source` names it in messages (output paths stay as written).
 Scene ParseScene(const std::string& yaml_text, const std::string& source,
                  const SceneOptions& options = {});

@@ -502,7 +502,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   return scene;
 }
 
-Scene LoadScene(const std::string& path, const SceneOptions& options) {
+std::string ReadSceneText(const std::string& path) {
   std::error_code ec;
   EMB_THROW_IF(!std::filesystem::exists(path, ec),
                "scene file '" << path << "' does not exist");
@@ -512,7 +512,11 @@ Scene LoadScene(const std::string& path, const SceneOptions& options) {
   EMB_THROW_IF(!in, "scene file '" << path << "' cannot be read (permissions?)");
   std::ostringstream text;
   text << in.rdbuf();
-  Scene scene = ParseScene(text.str(), path, options);
+  return text.str();
+}
+
+Scene LoadSceneText(const std::string& text, const std::string& path, const SceneOptions& options) {
+  Scene scene = ParseScene(text, path, options);
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   const std::string scene_dir = dir.empty() ? "." : dir.string();
   for (auto [p, key] : {std::pair{&scene.output.file, "output.file"},
@@ -522,6 +526,10 @@ Scene LoadScene(const std::string& path, const SceneOptions& options) {
     CheckConfined(*p, {scene_dir, "."}, path + ": " + key);
   }
   return scene;
+}
+
+Scene LoadScene(const std::string& path, const SceneOptions& options) {
+  return LoadSceneText(ReadSceneText(path), path, options);
 }
 
 }  // namespace emb::scene

@@ -279,6 +279,8 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
       sys->AddForceElement(std::make_shared<mbs::Bushing>(name, i, j, K, D));
     } else if (type == "journal-bearing") {
       ReadJournalBearing(r, name, sys);
+    } else if (type == "torsional-damper") {
+      ReadTorsionalDamper(r, name, sys);
     } else if (type == "lash") {
       ReadLash(r, name, sys);
     } else if (type == "clutch-damper") {
@@ -332,9 +334,10 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
       EMB_THROW(InputError,
                 what << ": unknown type '" << type
                      << "': expected one of spring-damper, rotational-spring-damper, "
-                        "bushing, journal-bearing, lash, clutch-damper, force, torque"
+                        "bushing, journal-bearing, torsional-damper, lash, clutch-damper, force, "
+                        "torque"
                      << DidYouMean(type, {"spring-damper", "rotational-spring-damper",
-                                               "bushing", "journal-bearing", "lash",
+                                               "bushing", "journal-bearing", "torsional-damper", "lash",
                                                "clutch-damper", "force", "torque"}));
     }
     r.Finish();

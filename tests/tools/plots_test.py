@@ -12,6 +12,7 @@ following the run's modal coordinates; and bad input (an unknown body, a body fi
 without mesh shapes) exits non-zero with the thing named and no output written.
 Engine plots: the tube spinning about its axis for one 720-degree cycle gives the trace and
 order-spectrum PNGs (written, valid PNG), and an unknown channel is an error naming it.
+Campbell plot (tools/plots/campbell_plot.py): the diagram of the Jeffcott disc scene gives a PNG.
 Clonk plots (tools/plots/clonk_plots.py): a lash run with output points on the vibrating tube
 gives its five PNGs and metrics that count the results file's contacts.
 """
@@ -41,6 +42,24 @@ def check(condition, what):
 
 def run(args, cwd):
     return subprocess.run(args, cwd=cwd, capture_output=True, text=True)
+
+
+def check_campbell_plot(work):
+    """campbell_plot.py on `emb campbell -o` of the Jeffcott disc: a PNG; a file that is not a
+    diagram is refused, naming the missing key."""
+    scene = os.path.join(SOURCE, "tools", "scenes", "jeffcott_disc.yaml")
+    r = run([EMB, "campbell", "-q", scene, "--rpm", "500:6000:500", "--body", "disc",
+             "--fmax", "300", "-o", "campbell.json"], work)
+    check(r.returncode == 0, "emb campbell ran (%s)" % r.stderr.strip())
+    script = os.path.join(SOURCE, "tools", "plots", "campbell_plot.py")
+    r = run(["/usr/bin/python3", script, "campbell.json", "--out", "campbell.png"], work)
+    check(r.returncode == 0, "campbell_plot.py ran (%s)" % r.stderr.strip())
+    png = os.path.join(work, "campbell.png")
+    check(os.path.exists(png) and open(png, "rb").read(8) == PNG_MAGIC, "campbell.png is a PNG")
+    with open(os.path.join(work, "not_campbell.json"), "w") as f:
+        json.dump({"rpm": [1000]}, f)
+    r = run(["/usr/bin/python3", script, "not_campbell.json", "--out", "bad.png"], work)
+    check(r.returncode == 1 and "modes" in r.stderr, "a non-diagram is refused (%s)" % r.stderr)
 
 
 def check_engine_plots(work):
@@ -358,6 +377,7 @@ def main():
     check_engine_plots(work)
     check_steady_cycle(work)
     check_clonk_plots(work, num_modes)
+    check_campbell_plot(work)
     if failures:
         sys.exit("%d check(s) failed; files kept in %s" % (len(failures), work))
     shutil.rmtree(work)

@@ -23,6 +23,9 @@ void RegisterDofCommand(CLI::App& app);
 void RegisterRunCommand(CLI::App& app);
 /// `emb spectrum RESULTS --channel NAME` (engine-order spectrum of a results channel).
 void RegisterSpectrumCommand(CLI::App& app);
+/// `emb campbell SCENE --rpm ...` (Campbell diagram) and `emb tvd-tune SCENE` (issue 17).
+void RegisterCampbellCommand(CLI::App& app);
+void RegisterTvdTuneCommand(CLI::App& app);
 /// `emb compare PART` (beam vs CMS vs 3-D FE, issue 6).
 void RegisterCompareCommand(CLI::App& app);
 

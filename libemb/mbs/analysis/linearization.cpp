@@ -115,35 +115,47 @@ Eigen::MatrixXd CalcVelocityStiffness(const System& sys, const std::vector<BodyK
   return G;
 }
 
+}  // namespace
+
 bool HasQuasiStaticCoordinates(const System& sys) {
   for (int b = 1; b < sys.num_bodies(); ++b)
     if (sys.body(b).elastic && sys.body(b).elastic->num_quasi_static() > 0) return true;
   return false;
 }
 
-}  // namespace
+LinearizedModel CalcLinearizedModel(const System& system, const Eigen::VectorXd& q,
+                                    const Eigen::VectorXd& v_in, double t,
+                                    const Eigen::VectorXd& lambda, ConstraintWorkspace* workspace,
+                                    const Eigen::VectorXd& vdot) {
+  const int nv = system.layout().nv();
+  const Eigen::VectorXd v = v_in.size() ? v_in : Eigen::VectorXd::Zero(nv);
+  const auto bodies = CalcBodyKinematics(system, q, v);
+  LinearizedModel m;
+  m.M = CalcMassMatrix(system, bodies);
+  m.K = -CalcTangentStiffness(system, q, v, lambda, t, workspace, vdot);
+  m.G = CalcVelocityStiffness(system, bodies, t, workspace);
+  const Eigen::MatrixXd C(CalcConstraints(system, bodies, t, workspace).jacobian);
+  // Null space of C from a complete orthogonal decomposition of C^T.
+  if (C.rows() == 0) {
+    m.Z = Eigen::MatrixXd::Identity(nv, nv);
+  } else {
+    const Eigen::FullPivHouseholderQR<Eigen::MatrixXd> qr(C.transpose());
+    const int rank = static_cast<int>(qr.rank());
+    const Eigen::MatrixXd Q = qr.matrixQ();
+    m.Z = Q.rightCols(nv - rank);
+  }
+  return m;
+}
 
 LinearModes CalcLinearModes(const System& system, const Eigen::VectorXd& q,
                             const Eigen::VectorXd& v_in, double t, const Eigen::VectorXd& lambda,
                             ConstraintWorkspace* workspace, bool undamped,
                             const Eigen::VectorXd& vdot) {
-  const int nv = system.layout().nv();
-  const Eigen::VectorXd v = v_in.size() ? v_in : Eigen::VectorXd::Zero(nv);
-  const auto bodies = CalcBodyKinematics(system, q, v);
-  const Eigen::MatrixXd M = CalcMassMatrix(system, bodies);
-  const Eigen::MatrixXd K = -CalcTangentStiffness(system, q, v, lambda, t, workspace, vdot);
-  const Eigen::MatrixXd G = CalcVelocityStiffness(system, bodies, t, workspace);
-  const Eigen::MatrixXd C(CalcConstraints(system, bodies, t, workspace).jacobian);
-  // Null space of C from a complete orthogonal decomposition of C^T.
-  Eigen::MatrixXd Z;
-  if (C.rows() == 0) {
-    Z = Eigen::MatrixXd::Identity(nv, nv);
-  } else {
-    const Eigen::FullPivHouseholderQR<Eigen::MatrixXd> qr(C.transpose());
-    const int rank = static_cast<int>(qr.rank());
-    const Eigen::MatrixXd Q = qr.matrixQ();
-    Z = Q.rightCols(nv - rank);
-  }
+  const LinearizedModel lin = CalcLinearizedModel(system, q, v_in, t, lambda, workspace, vdot);
+  const Eigen::MatrixXd& M = lin.M;
+  const Eigen::MatrixXd& K = lin.K;
+  const Eigen::MatrixXd& G = lin.G;
+  const Eigen::MatrixXd& Z = lin.Z;
   LinearModes out;
   const int n = static_cast<int>(Z.cols());
   out.num_free = n;

@@ -34,6 +34,22 @@ Eigen::MatrixXd CalcTangentStiffness(const System& system, const Eigen::VectorXd
                                      double t, ConstraintWorkspace* workspace,
                                      const Eigen::VectorXd& vdot = {});
 
+/// The linearised model on null(C) in v-space: M y'' + G y' + K y = 0 with dx = Z y
+/// (see the file comment); M, K, G are nv x nv, Z is nv x num_free (orthonormal columns).
+struct LinearizedModel {
+  Eigen::MatrixXd M, K, G, Z;
+};
+
+/// M, K = -df/dx (CalcTangentStiffness), G = -df/dv and Z = null(C) at (q, v) (v empty:
+/// zero) with multipliers `lambda` and accelerations `vdot` (may be empty). Cost O(nv^3).
+LinearizedModel CalcLinearizedModel(const System& system, const Eigen::VectorXd& q,
+                                    const Eigen::VectorXd& v, double t,
+                                    const Eigen::VectorXd& lambda, ConstraintWorkspace* workspace,
+                                    const Eigen::VectorXd& vdot = {});
+
+/// True if a flexible body has massless (quasi-static) coordinates: M is then singular.
+bool HasQuasiStaticCoordinates(const System& system);
+
 struct LinearModes {
   /// Ascending. Symmetric case: negative for unstable directions (-|f|). First-order case:
   /// the damped frequencies |Im s| / 2 pi of the oscillatory pairs, and `decay` = -Re s.

@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# Campbell diagram of the flexible inline-4 and the torsional vibration damper's effect on its
+# nose torsion (issue 17).
+#   benchmarks/campbell.sh [campbell|tvd|all] [TVD_RPM]
+# campbell: `emb campbell tools/scenes/inline4.yaml --rpm 1000:6500:250` (full body-file basis,
+#   108 elastic coordinates), its CPU time, the installed torsion and bending modes and their
+#   crossings -> benchmarks/results/campbell_inline4.json.
+# tvd: the inline-4 without and with the damper (tools/scenes/inline4_tvd.yaml) run to the
+#   periodic steady state at TVD_RPM (default 3000, the scenes' speed; another speed is set the
+#   way `emb campbell` sets it: the rpm motion, the initial velocities and the steady-state
+#   period scaled), the nose torsion's order amplitudes from `emb spectrum --json` of the steady
+#   cycle -> benchmarks/results/tvd_inline4.json.
+# Needs out/crankshaft_i4.h5 (tools/setup.sh run). Quote the times only from a run under
+# `flock -x /tmp/emb-cpu.lock` (the script takes the lock itself when EMB_BENCH_LOCK=1).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+emb=${EMB:-$root/build/tools/emb/emb}
+what=${1:-all}
+tvd_rpm=${2:-3000}
+dir=$root/out/bench_campbell
+mkdir -p "$dir"
+[ -f "$root/out/crankshaft_i4.h5" ] || { echo "run tools/setup.sh run first (out/crankshaft_i4.h5)" >&2; exit 1; }
+
+# scene NAME RPM: tools/scenes/NAME.yaml with absolute paths, outputs in $dir, at RPM.
+scene() {
+  /usr/bin/python3 - "$root" "$dir" "$1" "$2" <<'PY'
+import sys, yaml
+root, out, name, rpm = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
+s = yaml.safe_load(open(f"{root}/tools/scenes/{name}.yaml"))
+for b in s["bodies"]:
+    for key in ("body_file", "geometry"):
+        if key in b:
+            b[key] = b[key].replace("../../", root + "/")
+(motion,) = [m for m in s["motions"] if "rpm" in m["function"]]
+factor = rpm / motion["function"]["rpm"]
+motion["function"]["rpm"] = rpm
+for b in s["bodies"]:
+    for key in ("velocity", "angular_velocity"):
+        if key in b:
+            b[key] = [factor * x for x in b[key]]
+s["analysis"]["steady_state"]["period"] /= factor
+tag = f"{name}_{rpm:g}"
+s["output"] = {"file": f"{out}/{tag}.h5", "channels": s["output"]["channels"]}
+yaml.safe_dump(s, open(f"{out}/{tag}.yaml", "w"), sort_keys=False)
+print(f"{out}/{tag}.yaml")
+PY
+}
+
+if [ "$what" = campbell ] || [ "$what" = all ]; then
+  f=$(scene inline4 3000)
+  /usr/bin/time -f "%U %S %e" -o "$dir/campbell.time" \
+    "$emb" campbell "$f" --rpm 1000:6500:250 --fmax 2500 -q --json -o "$dir/campbell_diagram.json" \
+    > "$dir/campbell.json"
+  /usr/bin/python3 - "$dir" <<'PY'
+import json, sys
+d = sys.argv[1]
+run = json.load(open(f"{d}/campbell.json"))
+diagram = json.load(open(f"{d}/campbell_diagram.json"))
+user, system, wall = (float(x) for x in open(f"{d}/campbell.time").read().split()[-3:])
+rpm = diagram["rpm"]
+def at(m, n):
+    return m["hz"][rpm.index(n)]
+modes = [{"name": "mode%d" % m["index"], "index": m["index"], "class": m["class"],
+          "whirl": m["whirl"], "hz_1000": at(m, 1000.0), "hz_3000": at(m, 3000.0),
+          "hz_6500": at(m, 6500.0), "min_mac": min(x for x in m["mac"] if x is not None),
+          "torsion_3000": m["torsion"][rpm.index(3000.0)],
+          "bending_3000": m["bending"][rpm.index(3000.0)]} for m in diagram["modes"]]
+main = [c for c in run["crossings"] if c["order"] in (2, 4, 6, 8)]
+json.dump({"speeds": len(rpm), "cpu_s": user + system, "wall_s": wall,
+           "cpu_s_per_speed": (user + system) / len(rpm), "summary": run["summary"],
+           "modes": modes, "main_order_crossings": main,
+           "num_crossings": len(run["crossings"])}, open(f"{d}/campbell_record.json", "w"), indent=1)
+PY
+  /usr/bin/python3 "$root/benchmarks/record.py" merge campbell_inline4 inline4="$dir/campbell_record.json" \
+    --command "bash benchmarks/campbell.sh campbell"
+  /usr/bin/python3 "$root/benchmarks/render_tables.py" --print campbell_inline4
+fi
+
+if [ "$what" = tvd ] || [ "$what" = all ]; then
+  for name in inline4 inline4_tvd; do
+    f=$(scene $name "$tvd_rpm")
+    tag=${name}_$tvd_rpm
+    /usr/bin/time -f "%U %S %e" -o "$dir/$tag.time" "$emb" run "$f" -q --json > "$dir/$tag.run.json" || true
+    "$emb" spectrum "$dir/$tag.h5" --channel nose_torsion.rz --angle crank --orders 12 --json \
+      > "$dir/$tag.spectrum.json"
+  done
+  /usr/bin/python3 - "$dir" "$tvd_rpm" <<'PY'
+import json, sys
+d, rpm = sys.argv[1], sys.argv[2]
+rows = {}
+for name in ("inline4", "inline4_tvd"):
+    sp = json.load(open(f"{d}/{name}_{rpm}.spectrum.json"))
+    run = json.load(open(f"{d}/{name}_{rpm}.run.json"))["summary"]
+    rows[name] = {"orders": {("%g" % o["order"]): o["amplitude"] for o in sp["orders"]},
+                  "status": run["status"], "steady_state": run.get("steady_state", ""),
+                  "steps": run["steps"]}
+base, tvd = rows["inline4"]["orders"], rows["inline4_tvd"]["orders"]
+orders = [{"name": k, "order": float(k), "without_rad": base[k], "with_rad": tvd[k],
+           "ratio": tvd[k] / base[k] if base[k] > 0 else None}
+          for k in base if float(k) > 0 and float(k) == int(float(k))]
+json.dump({"rpm": float(rpm), "runs": rows, "orders": orders},
+          open(f"{d}/tvd_record.json", "w"), indent=1)
+PY
+  /usr/bin/python3 "$root/benchmarks/record.py" merge tvd_inline4 "rpm$tvd_rpm=$dir/tvd_record.json" \
+    --command "bash benchmarks/campbell.sh tvd $tvd_rpm"
+  /usr/bin/python3 "$root/benchmarks/render_tables.py" --print tvd_inline4
+fi

@@ -1,0 +1,102 @@
+// `emb campbell` and `emb tvd-tune` as a user meets them, on the Jeffcott disc scene
+// (tools/scenes/jeffcott_disc.yaml; closed form in tests/mbs/analysis/campbell_test.cpp):
+// the crossings table as JSON, the diagram file, the scene set to each speed; bad input gives
+// a message naming the thing and exit code 1.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+
+#include "tests/support/cli_fixture.h"
+
+namespace {
+
+using emb::test::CliResult;
+const std::string kScene = std::string(EMB_SOURCE_DIR) + "/tools/scenes/jeffcott_disc.yaml";
+
+class EmbCampbellCli : public emb::test::CliTest {};
+
+TEST_F(EmbCampbellCli, CrossingsAsJsonAndTheDiagramFile) {
+  const CliResult r = Run("campbell -q " + kScene +
+                          " --rpm 500:6000:250 --body disc --orders 2,3 --fmax 300 --json -o c.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  EXPECT_EQ(doc["summary"]["num_modes"], 6);
+  EXPECT_EQ(doc["summary"]["num_lost"], 0);
+  // Torsion (120 Hz, flat) crossed by order 2 at 3600 rpm exactly.
+  int torsion = 0;
+  for (const auto& c : doc["crossings"]) {
+    EXPECT_TRUE(c.contains("order") && c.contains("rpm") && c.contains("mode_hz") &&
+                c.contains("mode_index") && c.contains("class"));
+    if (c["class"] == "torsion" && c["order"] == 2.0) {
+      ++torsion;
+      EXPECT_NEAR(c["rpm"].get<double>(), 3600.0, 1e-6);
+    }
+  }
+  EXPECT_EQ(torsion, 1);
+  std::ifstream in(dir_ / "c.json");
+  const auto diagram = nlohmann::json::parse(in);
+  EXPECT_EQ(diagram["rpm"].size(), 23u);
+  ASSERT_EQ(diagram["modes"].size(), 6u);
+  EXPECT_EQ(diagram["modes"][0]["hz"].size(), 23u);
+  // The forward whirl at 6000 rpm (closed form 212.5 Hz) is in the last column of a mode.
+  const double pi = std::numbers::pi, W = 2 * pi * 100.0, Ip = 0.2, Id = 0.1;
+  const double forward =
+      (Ip * W + std::sqrt(Ip * Ip * W * W + 4 * Id * 9.8696044e3)) / (2 * Id) / (2 * pi);
+  bool found = false;
+  for (const auto& m : diagram["modes"])
+    if (std::abs(m["hz"].back().get<double>() / forward - 1.0) < 1e-6) found = true;
+  EXPECT_TRUE(found);
+}
+
+TEST_F(EmbCampbellCli, TvdTuneOnTheTorsionMode) {
+  const CliResult r =
+      Run("tvd-tune -q " + kScene + " --rpm 3000 --body disc --hub disc_centre --ring-inertia 0.02 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  // Torsion of the disc on the mount: 120 Hz, modal inertia at the disc = Ip = 0.2.
+  EXPECT_NEAR(doc["summary"]["mode_hz"].get<double>(), 120.0, 1e-6);
+  EXPECT_NEAR(doc["summary"]["modal_inertia"].get<double>(), 0.2, 1e-8);
+  EXPECT_NEAR(doc["summary"]["mass_ratio"].get<double>(), 0.1, 1e-8);
+  EXPECT_NEAR(doc["summary"]["absorber_hz"].get<double>(), 120.0 / 1.1, 1e-6);
+}
+
+TEST_F(EmbCampbellCli, BadInputIsNamed) {
+  ExpectFailure("campbell " + kScene + " --rpm 2000:1000:250 --body disc", 1,
+                {"--rpm", "empty range"});
+  ExpectFailure("campbell " + kScene + " --rpm 0,1000 --body disc", 1, {"--rpm", "> 0"});
+  ExpectFailure("campbell " + kScene + " --rpm -500 --body disc", 1, {"--rpm"});
+  ExpectFailure("campbell " + kScene + " --rpm 1000 --body dsic", 1, {"dsic"});
+  ExpectFailure("campbell " + kScene + " --rpm 1000", 1, {"--body"});
+  ExpectFailure("tvd-tune " + kScene + " --rpm 1000 --body disc --hub nose --ring-inertia 0.01", 1,
+                {"nose"});
+  ExpectFailure("tvd-tune " + kScene + " --rpm 1000 --body disc --hub disc_centre --ring-inertia -1",
+                1, {"--ring-inertia"});
+  // A TVD with a negative inertia, or on a marker that does not exist, in a scene.
+  std::ifstream in(kScene);
+  std::stringstream text;
+  text << in.rdbuf();
+  auto with_force = [&](const std::string& file, const std::string& force) {
+    std::string t = text.str();
+    const std::size_t at = t.find("forces:\n");
+    ASSERT_NE(at, std::string::npos);
+    t.insert(at + 8, "  - " + force + "\n");
+    std::ofstream(dir_ / file) << t;
+  };
+  with_force("bad_inertia.yaml", "{name: tvd, type: torsional-damper, hub: disc_centre, "
+                                 "ring_mass: 1, ring_inertia: -0.01, stiffness: 1.0e4}");
+  with_force("bad_stiffness.yaml", "{name: tvd, type: torsional-damper, hub: disc_centre, "
+                                   "ring_mass: 1, ring_inertia: 0.01, stiffness: -1.0e4}");
+  with_force("bad_hub.yaml", "{name: tvd, type: torsional-damper, hub: crank_nose, "
+                             "ring_mass: 1, ring_inertia: 0.01, stiffness: 1.0e4}");
+  ExpectFailure("campbell bad_inertia.yaml --rpm 1000 --body disc", 1, {"tvd", "ring_inertia"});
+  ExpectFailure("campbell bad_stiffness.yaml --rpm 1000 --body disc", 1, {"tvd", "stiffness"});
+  ExpectFailure("campbell bad_hub.yaml --rpm 1000 --body disc", 1, {"tvd", "crank_nose"});
+}
+
+}  // namespace

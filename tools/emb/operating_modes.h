@@ -1,0 +1,26 @@
+#pragma once
+/// @file
+/// Shared by `emb campbell` and `emb tvd-tune`: a scene's linearised modes at one steady
+/// speed (scene/operating_point.h, mbs::CalcOperatingPointModes) and the --rpm list.
+
+#include <Eigen/Dense>
+#include <string>
+
+#include "libemb/mbs/analysis/campbell.h"
+#include "libemb/scene/operating_point.h"
+
+namespace emb::cli {
+
+/// LoadSceneAtSpeed + mbs::CalcOperatingPointModes (the scene's analysis settings);
+/// `change` (may be null) gets what the speed change did.
+mbs::OperatingPointModes CalcSceneModesAtSpeed(const std::string& scene_file, double rpm,
+                                               const std::string& rotor, double pool_hz,
+                                               bool trust_geo, bool stationary_frame,
+                                               scene::SpeedChange* change);
+
+/// "1000:6500:250" (first:last:step, last included when on the grid) or "1000,2000,3000".
+/// @throws InputError naming `option` for an empty or malformed list, a value <= 0 or not
+/// finite, a step <= 0, or values that do not increase.
+std::vector<double> ParseSpeedList(const std::string& text, const std::string& option);
+
+}  // namespace emb::cli
