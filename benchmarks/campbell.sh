@@ -39,6 +39,7 @@ for b in s["bodies"]:
         if key in b:
             b[key] = [factor * x for x in b[key]]
 s["analysis"]["steady_state"]["period"] /= factor
+s["analysis"]["output_step"] /= factor
 tag = f"{name}_{rpm:g}"
 s["output"] = {"file": f"{out}/{tag}.h5", "channels": s["output"]["channels"]}
 yaml.safe_dump(s, open(f"{out}/{tag}.yaml", "w"), sort_keys=False)

@@ -62,8 +62,13 @@ std::string SceneTextAtSpeed(const std::string& yaml_text, const std::string& so
         ScaleVector(bodies[i]["velocity"], c.factor);
         ScaleVector(bodies[i]["angular_velocity"], c.factor);
       }
-    if (YAML::Node ss = root["analysis"]["steady_state"]; ss && ss["period"])
+    // The cycle keeps its number of output samples (the period must be a whole number of
+    // output steps).
+    if (YAML::Node ss = root["analysis"]["steady_state"]; ss && ss["period"]) {
       ss["period"] = ss["period"].as<double>() / c.factor;
+      if (YAML::Node a = root["analysis"]; a["output_step"])
+        a["output_step"] = a["output_step"].as<double>() / c.factor;
+    }
   } catch (const YAML::Exception& e) {
     // The nominal scene would fail to load with a precise message; say which speed failed.
     EMB_THROW(InputError, source << ": cannot set the speed to " << rpm << " rpm: " << e.msg);

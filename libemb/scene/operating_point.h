@@ -3,7 +3,8 @@
 /// A scene at another steady speed (issue 17: Campbell diagrams, speed sweeps). The scene's
 /// speed is set by its one motion with function {rpm: n0}; the scene at speed n is the same
 /// file with that motion's rpm set to n and every body's initial velocity and angular
-/// velocity (and analysis.steady_state.period) scaled by n / n0 (period by n0 / n). For a
+/// velocity scaled by n / n0, and a steady-state search's period and the output step by n0 / n
+/// (the same samples per cycle). For a
 /// mechanism driven by that motion the velocities are linear in the driving speed, so the
 /// scaled start is consistent again (PrepareRun projects away what is not).
 
