@@ -9,9 +9,10 @@
 #   periodic steady state at TVD_RPM (default 3000, the scenes' speed; another speed is set the
 #   way `emb campbell` sets it: the rpm motion, the initial velocities and the steady-state
 #   period scaled), the nose torsion's order amplitudes from `emb spectrum --json` of the steady
-#   cycle -> benchmarks/results/tvd_inline4.json.
+#   cycle -> benchmarks/results/tvd_inline4.json (tvd_inline4_<rpm>.json at another speed).
 # Needs out/crankshaft_i4.h5 (tools/setup.sh run). Quote the times only from a run under
-# `flock -x /tmp/emb-cpu.lock` (the script takes the lock itself when EMB_BENCH_LOCK=1).
+# `flock -x /tmp/emb-cpu.lock`. EMB_BENCH_RESUME=1 keeps the emb outputs already in
+# out/bench_campbell/ and only records them again.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 emb=${EMB:-$root/build/tools/emb/emb}
@@ -49,7 +50,7 @@ PY
 
 if [ "$what" = campbell ] || [ "$what" = all ]; then
   f=$(scene inline4 3000)
-  /usr/bin/time -f "%U %S %e" -o "$dir/campbell.time" \
+  [ "${EMB_BENCH_RESUME:-0}" = 1 ] && [ -s "$dir/campbell.json" ] || /usr/bin/time -f "%U %S %e" -o "$dir/campbell.time" \
     "$emb" campbell "$f" --rpm 1000:6500:250 --fmax 2500 -q --json -o "$dir/campbell_diagram.json" \
     > "$dir/campbell.json"
   /usr/bin/python3 - "$dir" <<'PY'
@@ -66,7 +67,8 @@ modes = [{"name": "mode%d" % m["index"], "index": m["index"], "class": m["class"
           "hz_6500": at(m, 6500.0), "min_mac": min(x for x in m["mac"] if x is not None),
           "torsion_3000": m["torsion"][rpm.index(3000.0)],
           "bending_3000": m["bending"][rpm.index(3000.0)]} for m in diagram["modes"]]
-main = [c for c in run["crossings"] if c["order"] in (2, 4, 6, 8)]
+main = [dict(name="order%g_mode%d" % (c["order"], c["mode_index"]), **c)
+        for c in run["crossings"] if c["order"] in (2, 4, 6, 8)]
 json.dump({"speeds": len(rpm), "cpu_s": user + system, "wall_s": wall,
            "cpu_s_per_speed": (user + system) / len(rpm), "summary": run["summary"],
            "modes": modes, "main_order_crossings": main,
@@ -81,6 +83,7 @@ if [ "$what" = tvd ] || [ "$what" = all ]; then
   for name in inline4 inline4_tvd; do
     f=$(scene $name "$tvd_rpm")
     tag=${name}_$tvd_rpm
+    if [ "${EMB_BENCH_RESUME:-0}" = 1 ] && [ -s "$dir/$tag.spectrum.json" ]; then continue; fi
     /usr/bin/time -f "%U %S %e" -o "$dir/$tag.time" "$emb" run "$f" -q --json > "$dir/$tag.run.json" || true
     "$emb" spectrum "$dir/$tag.h5" --channel nose_torsion.rz --angle crank --orders 12 --json \
       > "$dir/$tag.spectrum.json"
@@ -96,13 +99,15 @@ for name in ("inline4", "inline4_tvd"):
                   "status": run["status"], "steady_state": run.get("steady_state", ""),
                   "steps": run["steps"]}
 base, tvd = rows["inline4"]["orders"], rows["inline4_tvd"]["orders"]
-orders = [{"name": k, "order": float(k), "without_rad": base[k], "with_rad": tvd[k],
+orders = [{"name": "order" + k, "order": float(k), "without_rad": base[k], "with_rad": tvd[k],
            "ratio": tvd[k] / base[k] if base[k] > 0 else None}
           for k in base if float(k) > 0 and float(k) == int(float(k))]
 json.dump({"rpm": float(rpm), "runs": rows, "orders": orders},
           open(f"{d}/tvd_record.json", "w"), indent=1)
 PY
-  /usr/bin/python3 "$root/benchmarks/record.py" merge tvd_inline4 "rpm$tvd_rpm=$dir/tvd_record.json" \
+  record=tvd_inline4
+  [ "$tvd_rpm" = 3000 ] || record=tvd_inline4_$tvd_rpm
+  /usr/bin/python3 "$root/benchmarks/record.py" merge $record "rpm$tvd_rpm=$dir/tvd_record.json" \
     --command "bash benchmarks/campbell.sh tvd $tvd_rpm"
-  /usr/bin/python3 "$root/benchmarks/render_tables.py" --print tvd_inline4
+  /usr/bin/python3 "$root/benchmarks/render_tables.py" --print $record
 fi

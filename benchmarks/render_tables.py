@@ -541,17 +541,26 @@ def campbell_inline4(res):
     return lines, [doc]
 
 
-def tvd_inline4(res):
-    doc = res("tvd_inline4")
+def tvd_inline4(res, name="tvd_inline4"):
+    doc = res(name)
     r = doc["data"]["runs"][0]
     rows = [[num(o["order"]), num(o["without_rad"] * 1e3, ".3g"), num(o["with_rad"] * 1e3, ".3g"),
              num(o["ratio"], ".2f")] for o in r["orders"]]
-    return table(["order", "nose torsion without TVD [mrad]", "with TVD [mrad]", "with / without"],
-                 rows), [doc]
+    lines = table(["order", "nose torsion without TVD [mrad]", "with TVD [mrad]", "with / without"],
+                  rows)
+    runs = r["runs"]
+    lines += ["", "Runs at %g rpm: " % r["rpm"] + "; ".join(
+        "`%s` %s, steady state %s, %s IDA steps" % (k, v["status"], v["steady_state"], v["steps"])
+        for k, v in runs.items()) + "."]
+    return lines, [doc]
+
+
+def tvd_inline4_3250(res):
+    return tvd_inline4(res, "tvd_inline4_3250")
 
 
 TABLES = {f.__name__: f for f in [
-    campbell_inline4, tvd_inline4,
+    campbell_inline4, tvd_inline4, tvd_inline4_3250,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
     crank_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
     crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
