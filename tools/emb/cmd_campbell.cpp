@@ -88,7 +88,7 @@ struct CampbellCommand {
                     std::string(mbs::Name(c.kind)), std::string(mbs::Name(c.whirl))});
     Summary s("Campbell diagram of " + scene_file);
     s.Add("rotor", "rotor body (classification)", rotor);
-    s.Add("speed_motion", "speed set through motion", motion + " (" + std::to_string(nominal) +
+    s.Add("speed_motion", "speed set through motion", motion + " (" + FormatNumber(nominal, 6) +
                                                           " rpm in the scene)");
     s.Add("speeds", "speeds", static_cast<long long>(speeds.size()));
     s.Add("frame", "gyroscopic frame", frame);

@@ -81,16 +81,18 @@ ModeSplit ClassifyMode(const System& system, const Eigen::VectorXd& q, int body,
   }
   double axial = 0.0, bending = 0.0, torsion = 0.0, h = 0.0;
   const Complex3 ac = a.cast<std::complex<double>>();
+  // The sense of the orbit of the lateral part of x about a: -Im(conj(x1) x2) > 0 turns
+  // from e1 towards e2 (x1 = 1, x2 = -i: (cos, sin)).
+  const auto lateral_sense = [&e1, &e2](const Complex3& x) {
+    const std::complex<double> x1 = e1.cast<std::complex<double>>().dot(x);
+    const std::complex<double> x2 = e2.cast<std::complex<double>>().dot(x);
+    return -(std::conj(x1) * x2).imag();
+  };
   for (const auto& [u, w] : uw) {
     const std::complex<double> ua = ac.dot(u), wa = ac.dot(w);  // a real: dot = a . u
     axial += std::norm(ua);
     bending += Norm2(u - ac * ua) + rg2 * Norm2(w - ac * wa);
     torsion += rg2 * std::norm(wa);
-    const auto lateral_sense = [&](const Complex3& x) {
-      const std::complex<double> x1 = e1.cast<std::complex<double>>().dot(x);
-      const std::complex<double> x2 = e2.cast<std::complex<double>>().dot(x);
-      return -(std::conj(x1) * x2).imag();
-    };
     h += lateral_sense(u) + rg2 * lateral_sense(w);
   }
   ModeSplit s;
