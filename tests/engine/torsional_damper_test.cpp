@@ -18,6 +18,7 @@
 #include <memory>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "libemb/common/error.h"
 #include "libemb/engine/torsional_damper.h"
@@ -106,14 +107,18 @@ double ClosedFormAmplification(double J2, double k2, double c, double w) {
 }
 
 TEST(TorsionalDamper, HarmonicResponseMatchesTheTwoDofClosedForm) {
-  const double J2 = 0.1 * kJ1, k2 = J2 * std::pow(2 * kPi * 370.0, 2), c = 2.0;
-  const Model m = Primary(Ring(J2, k2, c));
-  // Dense LU of a 2-coordinate system: round-off relative to the amplification.
-  constexpr double kRoundOff = 1e-9;
-  for (double f : {50.0, 300.0, 360.0, 380.0, 400.0, 420.0, 600.0, 2000.0}) {
-    const double w = 2 * kPi * f;
-    const double expected = ClosedFormAmplification(J2, k2, c, w);
-    EXPECT_NEAR(ModelAmplification(m, w) / expected, 1.0, kRoundOff) << f << " Hz";
+  // A rubber ring (k2, c) and a viscous Houdaille ring (k2 = 0: the ring only drags).
+  const double J2 = 0.1 * kJ1;
+  const double rubber_k2 = J2 * std::pow(2 * kPi * 370.0, 2);
+  for (const auto& [k2, c] : {std::pair{rubber_k2, 2.0}, std::pair{0.0, 6.0}}) {
+    const ModelResponse m(Primary(Ring(J2, k2, c)));
+    // Dense LU of a 2-coordinate system: round-off relative to the amplification.
+    constexpr double kRoundOff = 1e-9;
+    for (double f : {50.0, 300.0, 360.0, 380.0, 400.0, 420.0, 600.0, 2000.0}) {
+      const double w = 2 * kPi * f;
+      const double expected = ClosedFormAmplification(J2, k2, c, w);
+      EXPECT_NEAR(m.Amplification(w) / expected, 1.0, kRoundOff) << f << " Hz, k2 = " << k2;
+    }
   }
 }
 
