@@ -5,6 +5,9 @@
 # campbell: `emb campbell tools/scenes/inline4.yaml --rpm 1000:6500:250` (full body-file basis,
 #   108 elastic coordinates), its CPU time, the installed torsion and bending modes and their
 #   crossings -> benchmarks/results/campbell_inline4.json.
+# angles: the same linearisation at 3000 rpm started at crank angles 0, 22.5, ..., 90 degrees
+#   (analysis.t_start): how much the frozen-angle approximation of the steady motion depends
+#   on the angle -> benchmarks/results/campbell_angles.json.
 # tvd: the inline-4 without and with the damper (tools/scenes/inline4_tvd.yaml) run to the
 #   periodic steady state at TVD_RPM (default 3000, the scenes' speed; another speed is set the
 #   way `emb campbell` sets it: the rpm motion, the initial velocities and the steady-state
@@ -22,11 +25,12 @@ dir=$root/out/bench_campbell
 mkdir -p "$dir"
 [ -f "$root/out/crankshaft_i4.h5" ] || { echo "run tools/setup.sh run first (out/crankshaft_i4.h5)" >&2; exit 1; }
 
-# scene NAME RPM: tools/scenes/NAME.yaml with absolute paths, outputs in $dir, at RPM.
+# scene NAME RPM [T_START]: tools/scenes/NAME.yaml with absolute paths, outputs in $dir, at
+# RPM (starting at T_START s).
 scene() {
-  /usr/bin/python3 - "$root" "$dir" "$1" "$2" <<'PY'
+  /usr/bin/python3 - "$root" "$dir" "$1" "$2" "${3:-}" <<'PY'
 import sys, yaml
-root, out, name, rpm = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
+root, out, name, rpm, t_start = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4]), sys.argv[5]
 s = yaml.safe_load(open(f"{root}/tools/scenes/{name}.yaml"))
 for b in s["bodies"]:
     for key in ("body_file", "geometry"):
@@ -42,6 +46,9 @@ for b in s["bodies"]:
 s["analysis"]["steady_state"]["period"] /= factor
 s["analysis"]["output_step"] /= factor
 tag = f"{name}_{rpm:g}"
+if t_start:
+    s["analysis"]["t_start"] = float(t_start)
+    tag += f"_t{t_start}"
 s["output"] = {"file": f"{out}/{tag}.h5", "channels": s["output"]["channels"]}
 yaml.safe_dump(s, open(f"{out}/{tag}.yaml", "w"), sort_keys=False)
 print(f"{out}/{tag}.yaml")
@@ -77,6 +84,32 @@ PY
   /usr/bin/python3 "$root/benchmarks/record.py" merge campbell_inline4 inline4="$dir/campbell_record.json" \
     --command "bash benchmarks/campbell.sh campbell"
   /usr/bin/python3 "$root/benchmarks/render_tables.py" --print campbell_inline4
+fi
+
+if [ "$what" = angles ] || [ "$what" = all ]; then
+  labels=()
+  for deg in 0 22.5 45 67.5 90; do
+    t=$(/usr/bin/python3 -c "print($deg / (6 * 3000))")
+    f=$(scene inline4 3000 "$t")
+    "$emb" campbell "$f" --rpm 3000 --fmax 800 -q --json -o "$dir/angle_$deg.json" > /dev/null
+    labels+=("deg$deg=$dir/angle_$deg.json")
+  done
+  /usr/bin/python3 - "$dir" <<'PY'
+import json, sys
+d = sys.argv[1]
+rows = []
+for deg in ("0", "22.5", "45", "67.5", "90"):
+    g = json.load(open(f"{d}/angle_{deg}.json"))
+    modes = [{"class": m["class"], "hz": m["hz"][0], "decay": m["decay"][0],
+              "torsion": m["torsion"][0]} for m in g["modes"]]
+    tors = [m["hz"] for m in modes if m["class"] == "torsion"]
+    rows.append({"name": "deg" + deg, "angle_deg": float(deg), "modes": modes,
+                 "torsion_hz": tors, "min_decay": min(m["decay"] for m in modes)})
+json.dump({"rpm": 3000.0, "fmax_hz": 800.0, "angles": rows}, open(f"{d}/angles_record.json", "w"), indent=1)
+PY
+  /usr/bin/python3 "$root/benchmarks/record.py" merge campbell_angles inline4="$dir/angles_record.json" \
+    --command "bash benchmarks/campbell.sh angles"
+  /usr/bin/python3 "$root/benchmarks/render_tables.py" --print campbell_angles
 fi
 
 if [ "$what" = tvd ] || [ "$what" = all ]; then

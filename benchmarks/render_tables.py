@@ -555,12 +555,22 @@ def tvd_inline4(res, name="tvd_inline4"):
     return lines, [doc]
 
 
+def campbell_angles(res):
+    doc = res("campbell_angles")
+    r = doc["data"]["runs"][0]
+    rows = [[num(a["angle_deg"]), ", ".join(sig3(f) for f in a["torsion_hz"]),
+             ", ".join("%s %s" % (m["class"], sig3(m["hz"])) for m in a["modes"]),
+             num(a["min_decay"], ".3g")] for a in r["angles"]]
+    return table(["start crank angle [deg]", "torsion modes [Hz]",
+                  "all modes below 800 Hz", "smallest decay [1/s]"], rows), [doc]
+
+
 def tvd_inline4_3250(res):
     return tvd_inline4(res, "tvd_inline4_3250")
 
 
 TABLES = {f.__name__: f for f in [
-    campbell_inline4, tvd_inline4, tvd_inline4_3250,
+    campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
     crank_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
     crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
