@@ -69,10 +69,13 @@ std::vector<ModalStressGroup> CalcModalStresses(const Mesh& mesh, const Isotropi
 
 /// Modal stresses against the full FE model under the same interface loads: the static
 /// load cases of the certificate (one interface held, unit forces and moments at the
-/// others; static_exactness.h). Per group, max over load cases of
-///     ‖σ_red − σ_full‖_∞ / ‖σ_full‖_∞ over the group's components,
-/// σ_full = S_g u_full and σ_red = Σ_g ξ with ξ = Xᵀ M̂ z the elastic part of the reduced
-/// static solution z (the route a multibody run takes).
+/// others, six columns per loaded interface: forces then moments; static_exactness.h). Per
+/// group and kind of load (unit forces, unit moments: one unit each),
+///     max_k ‖σ_red,k − σ_full,k‖_∞ / max_k ‖σ_full,k‖_∞   over the loads k of that kind
+/// and the group's components, the larger of the two kinds; σ_full = S_g u_full and
+/// σ_red = Σ_g ξ with ξ = Xᵀ M̂ z the elastic part of the reduced static solution z (the route
+/// a multibody run takes). Relative to the group's largest stress per unit load, not per
+/// load case: a load that does not reach the group leaves it round-off only.
 struct ModalStressCheck {
   bool run{false};
   std::string note;                  ///< what was loaded, or why it was not run
