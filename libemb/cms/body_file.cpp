@@ -1,8 +1,5 @@
 #include "libemb/cms/body_file.h"
 
-#include "libemb/cms/body_codec.h"
-#include "libemb/cms/modal_stress.h"
-
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +8,8 @@
 #include <optional>
 #include <sstream>
 
+#include "libemb/cms/body_codec.h"
+#include "libemb/cms/modal_stress.h"
 #include "libemb/common/error.h"
 #include "libemb/io/atomic_file.h"
 #include "libemb/io/hdf5_file.h"
