@@ -278,6 +278,59 @@ def crank_reduce_stiffening(res):
                  rows), [doc]
 
 
+def stress_recovery_runs(res, crank):
+    doc = res("stress_recovery_" + crank)
+    return doc, {r["name"]: r for r in doc["data"]["runs"]}
+
+
+def stress_recovery_cost(res, crank):
+    doc, runs = stress_recovery_runs(res, crank)
+    sizes = runs["extras"]["file_mb"]
+    rows = []
+    for key, label in [("with", "fillet stress groups (default)"), ("without", "`--no-stress`")]:
+        s = runs["reduce_" + key]["summary"]
+        r = runs["run_" + key]["summary"]
+        rows.append([label, s["dofs"], s["elastic_modes"],
+                     num(s.get("seconds_modal stresses"), ".2f") if key == "with" else "—",
+                     num(s["seconds_total"], ".1f"), num(sizes[key], ".2f"),
+                     num(r["seconds_run"], ".1f"), r["steps"], r["samples"]])
+    return table(["body file", "FE DOF", "elastic modes", "modal stresses s", "reduce total s",
+                  "file MB", "engine run s (to steady state)", "IDA steps", "samples"], rows), [doc]
+
+
+def stress_recovery_hot_spots(res, crank):
+    doc, runs = stress_recovery_runs(res, crank)
+    checks = {r["group"]: r for r in runs["reduce_with"]["stress"]}
+    fatigue = {r["group"]: r for r in runs["run_with"]["fatigue"]}
+    rows = []
+    for g in runs["extras"]["hot_spots"]["groups"]:
+        c, f = checks[g["name"]], fatigue[g["name"]]
+        rows.append([f"`{g['name']}`", c["nodes"], num(c["check_error"], ".1e"),
+                     num(g["max_von_mises_pa"] / 1e6, ".1f"), g["max_von_mises_node"],
+                     num(g["min_principal_pa"] / 1e6, ".1f") + " .. " + num(g["max_principal_pa"] / 1e6, ".1f"),
+                     num(f["max_range"] / 1e6, ".1f"), num(f["damage"], ".2e"),
+                     num(f["life"], ".2e") if f["life"] is not None else "∞"])
+    return table(["group", "nodes", "modal vs full FE (static)", "max von Mises MPa", "at node",
+                  "group max σ₁ over the cycle, min .. max MPa", "worst node's max rainflow range MPa",
+                  "damage per cycle", "life, engine cycles"], rows), [doc]
+
+
+def stress_recovery_1cyl(res):
+    return stress_recovery_cost(res, "1cyl")
+
+
+def stress_recovery_1cyl_fatigue(res):
+    return stress_recovery_hot_spots(res, "1cyl")
+
+
+def stress_recovery_i4(res):
+    return stress_recovery_cost(res, "i4")
+
+
+def stress_recovery_i4_fatigue(res):
+    return stress_recovery_hot_spots(res, "i4")
+
+
 def beam_vs_cms(res):
     crank, tube = res("beam_vs_cms_crank"), res("beam_vs_cms_tube")
     cases = crank["data"]["cases"] + tube["data"]["cases"]
@@ -573,7 +626,8 @@ TABLES = {f.__name__: f for f in [
     campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
     crank_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
-    crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
+    crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening, stress_recovery_1cyl,
+    stress_recovery_1cyl_fatigue, stress_recovery_i4, stress_recovery_i4_fatigue,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
     inline4_beam, inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule,
     mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state]}

@@ -28,7 +28,7 @@ install(TARGETS emb_tool RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # Headers, with the paths the sources use ("libemb/mbs/core/system.h"). Left out: the
 # headers documented as internal to their module (implementation details that expose
-# SUNDIALS or yaml-cpp types, or the scene loader's section readers).
+# SUNDIALS or yaml-cpp types, the body file's codec, or the scene loader's section readers).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/libemb/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/libemb
         FILES_MATCHING PATTERN "*.h"
         PATTERN "analysis_internal.h" EXCLUDE
@@ -37,6 +37,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/libemb/ DESTINATION ${CMAKE_INSTALL_INCL
         PATTERN "engine_parts.h" EXCLUDE
         PATTERN "driveline_parts.h" EXCLUDE
         PATTERN "output_point_reader.h" EXCLUDE
+        PATTERN "stress_output_reader.h" EXCLUDE
+        PATTERN "body_codec.h" EXCLUDE
         PATTERN "scene_parts.h" EXCLUDE)
 
 set(EMB_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/emb)

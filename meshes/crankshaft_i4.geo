@@ -119,6 +119,11 @@
 //           surface of crankpin i (radius pin_d/2 about the pin axis)
 //   Surface "nose"       tag 301: cylindrical surface of the nose stub
 //   Surface "flange"     tag 302: rear face of the flange (plane x = x_end)
+//   Surface "crankpin_fillet_i" tags 400 + i: the two web faces crankpin i meets
+//           (planes x = xp_i -/+ pin_l/2), around the pin-to-web corners
+//   Surface "journal_fillet_k" tags 500 + k: the web faces journal k's necks meet
+//           (stress groups of emb reduce; sharp corners, see the block below;
+//           not with beam_parts = 1)
 //   Volume  "crankshaft" tag 1  : the single volume
 //
 // BEAM PARTS (only with beam_parts = 1; names exact, tags fixed)
@@ -369,6 +374,49 @@ If (#sel[] == 0)
   Error("crankshaft: flange is empty");
 EndIf
 Physical Surface("flange", 302) = {sel[]};
+
+// Fillet (stress) groups: the web faces around the re-entrant corners where a crankpin or a
+// journal neck meets a web, for stress recovery (emb reduce --stress-groups; the default
+// takes every group named crankpin_fillet_* / journal_fillet_*). The geometry has sharp
+// corners there (no fillet radius), so the peak stress at the corner edge is singular and
+// grows with mesh refinement; the groups select existing faces and change no node.
+// Planar faces normal to x inside a slab at x = xs (all of the web's outline), into sel[].
+Macro WebFacesAt
+  R_all = r + cw_r + web_r_pin + eps;
+  cand[] = Surface In BoundingBox{xs - eps, -R_all, -R_all, xs + eps, R_all, R_all};
+  For q In {0 : #cand[] - 1}
+    bb[] = BoundingBox Surface{cand[q]};
+    If (bb[3] - bb[0] <= 1e-6)
+      sel[] += {cand[q]};
+    EndIf
+  EndFor
+Return
+
+If (!beam_parts)
+  For i In {1 : n_cyl}
+    xp = xj1 + (i - 0.5) * pitch;
+    sel[] = {};
+    xs = xp - pin_l / 2; Call WebFacesAt;
+    xs = xp + pin_l / 2; Call WebFacesAt;
+    If (#sel[] == 0)
+      Error("crankshaft: crankpin_fillet_%g is empty", i);
+    EndIf
+    Physical Surface(Sprintf("crankpin_fillet_%g", i), 400 + i) = {sel[]};
+  EndFor
+  For k In {1 : n_cyl + 1}
+    sel[] = {};
+    If (k > 1)
+      xs = xj1 + (k - 1.5) * pitch + pin_l / 2 + web_t; Call WebFacesAt;
+    EndIf
+    If (k <= n_cyl)
+      xs = xj1 + (k - 0.5) * pitch - pin_l / 2 - web_t; Call WebFacesAt;
+    EndIf
+    If (#sel[] == 0)
+      Error("crankshaft: journal_fillet_%g is empty", k);
+    EndIf
+    Physical Surface(Sprintf("journal_fillet_%g", k), 500 + k) = {sel[]};
+  EndFor
+EndIf
 
 If (!beam_parts)
   Physical Volume("crankshaft", 1) = {crank[]};

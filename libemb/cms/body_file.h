@@ -51,6 +51,9 @@
 ///     translational (3, ne, ne) K_G,6+k per unit a_k [1/m] (a: frame-origin acceleration
 ///                          minus gravity, in B)
 ///     reference_point (3)  c̄, the undeformed centre of mass: the origin of B [m]
+///   /stress                (optional: modal stresses at named surface groups, modal_stress.h;
+///                          present → @content_digest_version 3, which digests them too)
+///     names, <name>/nodes (m), <name>/modal (6 m, ne)  [Pa per unit elastic coordinate]
 ///   /mesh …                the mesh (see mesh_io.h), and
 ///   /modes/mesh_shapes     (ne, n, 3) Φ = T X at every node  — both only if kept
 ///

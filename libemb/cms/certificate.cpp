@@ -169,7 +169,9 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
 
   // 5. Static exactness.
   if (options.static_check) {
-    const StaticExactness st = CheckStaticExactness(mesh, model, basis, Khat);
+    StaticExactness st = CheckStaticExactness(mesh, model, basis, Khat, options.stress_operator);
+    cert.static_full_stresses = std::move(st.full_stresses);
+    cert.static_reduced_z = std::move(st.reduced_z);
     cert.static_run = st.run;
     cert.static_note = st.note;
     cert.static_loads = st.num_loads;

@@ -33,6 +33,9 @@ struct CertificateOptions {
   /// kept (all modes of a free-free basis).
   double fmax_hz{0.0};
   bool static_check{true};  ///< run the static exactness check (one more factorisation)
+  /// Stress operator of the stress groups (modal_stress.h; empty: none): the static check
+  /// then also keeps S u_full and the reduced solutions of its load cases.
+  SparseMatrix stress_operator;
   EigenSolverOptions solver;  ///< for the reference solve
 };
 
@@ -91,6 +94,8 @@ struct ReductionCertificate {
   std::string static_note;    ///< support and loads, or why it was not run
   int static_loads{0};
   double static_error{0.0};   ///< max over loads of ‖d_red − d_full‖/‖d_full‖ (rotations × L)
+  /// With CertificateOptions::stress_operator: StaticExactness::full_stresses, reduced_z.
+  Eigen::MatrixXd static_full_stresses, static_reduced_z;
   // 6.
   std::string reduction_log;
   int constraint_mode_iterations{0};

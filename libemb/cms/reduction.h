@@ -20,6 +20,7 @@
 #include "libemb/cms/geometric_stiffening.h"
 #include "libemb/cms/inertia_invariants.h"
 #include "libemb/cms/interface.h"
+#include "libemb/cms/modal_stress.h"
 #include "libemb/cms/orthonormal_modes.h"
 #include "libemb/fe/material.h"
 
@@ -51,6 +52,9 @@ struct ReductionJob {
   /// carries a sensor or a light attachment must be left out, or its stress (e.g. a free
   /// blade tip held axially: compression instead of centrifugal tension) is wrong.
   std::vector<std::string> stiffening_supports;
+  /// Surface groups whose modal stresses are stored (modal_stress.h); checked against the
+  /// full FE model in the certificate's static load cases when that check runs.
+  std::vector<std::string> stress_groups;
 };
 
 /// A reduced flexible body: everything a multibody run (and Python) needs.
@@ -68,6 +72,8 @@ struct ReducedBody {
   InertiaInvariants invariants;        ///< of the elastic modes Φ = T X
   ReductionCertificate certificate;
   GeometricStiffness geometric_stiffness;  ///< present unless the job switched it off
+  std::vector<ModalStressGroup> stress_groups;  ///< modal stresses (modal_stress.h)
+  ModalStressCheck stress_check;       ///< against the full model (not stored in the file)
   Eigen::MatrixXd mesh_shapes;         ///< 3n × ne, empty unless kept
   int num_fe_dofs{0};
   PhaseTimes times;

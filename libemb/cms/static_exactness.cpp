@@ -12,7 +12,8 @@
 namespace emb {
 
 StaticExactness CheckStaticExactness(const Mesh& mesh, const CoupledModel& model,
-                                     const ReductionBasis& basis, const Eigen::MatrixXd& Khat) {
+                                     const ReductionBasis& basis, const Eigen::MatrixXd& Khat,
+                                     const SparseMatrix& stress) {
   StaticExactness out;
   const auto& itfs = basis.interfaces;
   const int nb = static_cast<int>(itfs.size());
@@ -75,6 +76,11 @@ StaticExactness CheckStaticExactness(const Mesh& mesh, const CoupledModel& model
   E.topRows(nl).setIdentity();
   const Eigen::MatrixXd x = Kff.ldlt().solve(E);
   const Eigen::MatrixXd d_red = x.topRows(nl);
+  if (stress.size() > 0) {
+    out.full_stresses = stress * (model.P * Y);
+    out.reduced_z = Eigen::MatrixXd::Zero(nr, nl);
+    for (size_t a = 0; a < keep.size(); ++a) out.reduced_z.row(keep[a]) = x.row(a);
+  }
 
   // Rotations weigh by the part's size.
   const double L = (mesh.nodes.rowwise().maxCoeff() - mesh.nodes.rowwise().minCoeff()).norm();

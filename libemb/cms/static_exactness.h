@@ -31,10 +31,16 @@ struct StaticExactness {
   int num_loads{0};
   double max_error{0.0};
   double seconds{0.0};
+  /// With a stress operator S (6 m × 3n) given: S u_full of every load case (6 m × loads)
+  /// and the reduced solutions z (nr × loads, the held coordinates zero), for
+  /// CheckModalStresses (modal_stress.h).
+  Eigen::MatrixXd full_stresses, reduced_z;
 };
 
 /// @param model  BuildCoupledModel(mesh, sys, basis.interfaces)
+/// @param stress  optional stress operator (empty: none), see StaticExactness
 StaticExactness CheckStaticExactness(const Mesh& mesh, const CoupledModel& model,
-                                     const ReductionBasis& basis, const Eigen::MatrixXd& Khat);
+                                     const ReductionBasis& basis, const Eigen::MatrixXd& Khat,
+                                     const SparseMatrix& stress = SparseMatrix());
 
 }  // namespace emb

@@ -9,6 +9,7 @@
 
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/core/system.h"
+#include "libemb/results/fatigue.h"
 #include "libemb/results/steady_state.h"
 
 namespace emb::scene {
@@ -22,6 +23,20 @@ struct OutputSpec {
   std::vector<std::string> channels;  ///< CSV channel names (see results_writer.h)
 };
 
+/// A stress output (scene section `stress_outputs`, stress_output_reader.h): a stress probe
+/// (mbs/flexible/stress_probe.h, added to the system under `name`) plus what `emb run` does
+/// with its groups' full stress fields: XDMF at chosen times and a fatigue summary.
+struct StressOutput {
+  std::string name;        ///< the probe's name
+  std::string body;        ///< the flexible part
+  std::string body_file;   ///< its body file (the mesh for the XDMF)
+  std::vector<double> field_times;  ///< [s] write the groups' stress fields at these times
+  bool fatigue{false};
+  /// Stress measure counted per node: "max_principal" (sigma_1) or "signed_von_mises".
+  std::string measure{"max_principal"};
+  SnCurve sn;
+};
+
 struct Scene {
   std::string name;
   std::string description;
@@ -32,6 +47,7 @@ struct Scene {
   /// analysis.steady_state, which then sets analysis.t_end to max_cycles periods).
   SteadyStateSettings steady_state;
   OutputSpec output;
+  std::vector<StressOutput> stress_outputs;
   std::vector<std::string> notes;  ///< what the loader decided, e.g. the modes a part kept
   std::vector<std::string> inputs;  ///< files it reads: the scene, body files, geometries
 };

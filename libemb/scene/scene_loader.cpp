@@ -21,6 +21,7 @@
 #include "libemb/results/channels.h"
 #include "libemb/scene/beam_part_reader.h"
 #include "libemb/scene/output_point_reader.h"
+#include "libemb/scene/stress_output_reader.h"
 #include "libemb/scene/scene.h"
 #include "libemb/scene/scene_parts.h"
 #include "libemb/scene/sensor_reader.h"
@@ -36,6 +37,8 @@ using Eigen::Vector3d;
 // their interfaces).
 struct Parts {
   std::map<std::string, mbs::FlexiblePart> from_body_files;
+  /// The modal stress groups of those parts' body files (cms/modal_stress.h), by part.
+  std::map<std::string, std::vector<ModalStressGroup>> stress_groups;
   std::map<std::string, mbs::BeamPart> beams;
   std::map<std::string, BeamPartOutputs> beam_outputs;  // the same, for output points
   /// Parts with `basis: installed` (the analysis builds their basis at the start).
@@ -164,6 +167,7 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   m.part.body = sys->AddBody(m.body);
   notes->push_back(m.part.note);
   parts->from_body_files[name] = std::move(m.part);
+  parts->stress_groups[name] = reduced.stress_groups;
 }
 
 void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOptions& options,
@@ -483,6 +487,9 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   if (const YAML::Node n = r.Optional("sensors")) ReadSensors(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("output_points"))
     ReadOutputPoints(n, source, &scene.system, parts.from_body_files, parts.beam_outputs);
+  if (const YAML::Node n = r.Optional("stress_outputs"))
+    scene.stress_outputs = ReadStressOutputs(n, source, &scene.system, parts.from_body_files,
+                                             parts.stress_groups);
   YAML::Node analysis_node = r.Optional("analysis");
   if (analysis_node) ReadAnalysis(analysis_node, source, &scene.analysis, &scene.steady_state);
   scene.analysis.installed_bases = parts.installed_bases;

@@ -16,34 +16,10 @@
 #include "libemb/common/error.h"
 #include "libemb/fe/modal_analysis.h"
 #include "libemb/mesh/box_mesh.h"
+#include "tests/support/box_pad.h"
 
 namespace emb {
 namespace {
-
-// The faces of `from` whose nodes all lie at 0.2 ≤ x ≤ 0.4, as group `name` (a pad in the
-// middle of a face, touching no other interface).
-PhysicalGroup MiddlePad(const Mesh& m, const std::string& from, const std::string& name) {
-  PhysicalGroup g;
-  g.name = name;
-  g.dim = 2;
-  const CellBlock& all = m.group(from).faces[0];
-  CellBlock pad;
-  pad.type = all.type;
-  for (int c = 0; c < all.num_cells(); ++c) {
-    const int* v = all.cell(c);
-    bool inside = true;
-    for (int k = 0; k < all.nodes_per_cell(); ++k)
-      inside &= m.nodes(0, v[k]) >= 0.2 - 1e-12 && m.nodes(0, v[k]) <= 0.4 + 1e-12;
-    if (!inside) continue;
-    pad.connectivity.insert(pad.connectivity.end(), v, v + all.nodes_per_cell());
-    pad.tags.push_back(all.tags[c]);
-    g.nodes.insert(g.nodes.end(), v, v + all.nodes_per_cell());
-  }
-  std::sort(g.nodes.begin(), g.nodes.end());
-  g.nodes.erase(std::unique(g.nodes.begin(), g.nodes.end()), g.nodes.end());
-  g.faces.push_back(pad);
-  return g;
-}
 
 // A steel bar 0.6 × 0.06 × 0.04 m of Hex20 with a pad "top" in the middle of its z = 0.04
 // face: small enough for dense references.

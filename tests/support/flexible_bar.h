@@ -25,6 +25,8 @@ struct BarSpec {
   double youngs_modulus{210e9};
   double damping_ratio{0.0};
   bool keep_mesh_shapes{false};  ///< also Φ at every mesh node (ReducedBody::mesh_shapes)
+                                 ///< and the mesh in the body file
+  std::vector<std::string> stress_groups;  ///< modal stresses stored (cms/modal_stress.h)
 
   std::string Key() const {
     std::ostringstream k;
@@ -32,6 +34,7 @@ struct BarSpec {
       << youngs_modulus << "_" << damping_ratio << (keep_mesh_shapes ? "_shapes" : "");
     for (const auto& i : interfaces) k << "_" << i;
     for (const auto& i : stiffening_supports) k << "_held-" << i;
+    for (const auto& g : stress_groups) k << "_stress-" << g;
     std::string s = k.str();
     for (char& c : s)
       if (c == ':' || c == '@' || c == ',') c = '-';
@@ -78,6 +81,7 @@ inline const ReducedBody& FlexibleBar(const BarSpec& spec) {
   job.damping.ratio = spec.damping_ratio;
   job.keep_mesh_shapes = spec.keep_mesh_shapes;
   job.stiffening_supports = spec.stiffening_supports;
+  job.stress_groups = spec.stress_groups;
   return made[key] = ReduceBody(mesh, sys, material, job);
 }
 
@@ -91,7 +95,7 @@ inline std::string FlexibleBarFile(const BarSpec& spec) {
   info.provenance = {"test", "box", MeshHash(mesh), "order=2"};
   info.material = spec.Material();
   const std::string path = ProcessTempDir().File("flexbar_" + key + ".h5");
-  WriteBodyFile(path, "", FlexibleBar(spec), info, nullptr);
+  WriteBodyFile(path, "", FlexibleBar(spec), info, spec.keep_mesh_shapes ? &mesh : nullptr);
   return written[key] = path;
 }
 

@@ -41,6 +41,11 @@ struct InspectCommand {
     s.Add("elastic_modes", "elastic modes", static_cast<long long>(body.modes.frequencies_hz.size()));
     s.Add("damping", "damping", body.damping.Describe());
     s.Add("geometric_stiffness", "geometric stiffening", body.geometric_stiffness.Describe());
+    std::vector<std::string> stress_groups;
+    for (const auto& g : body.stress_groups)
+      stress_groups.push_back(g.name + " (" + std::to_string(g.num_nodes()) + " nodes)");
+    if (stress_groups.empty()) stress_groups.push_back("none");
+    s.Add("stress_groups", "modal stresses (stress groups)", stress_groups);
     const InertiaInvariants& inv = body.invariants;
     s.Add("mass_kg", "mass [kg]", inv.mass);
     const Eigen::Vector3d c = inv.CenterOfMass();

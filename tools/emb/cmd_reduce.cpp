@@ -39,6 +39,8 @@ struct ReduceCommand {
   bool no_mesh_shapes{false};
   bool no_geometric_stiffness{false};
   std::vector<std::string> stiffening_supports;
+  std::vector<std::string> stress_groups;
+  bool no_stress{false};
   bool no_xdmf{false};
   bool allow_failed_certificate{false};
   std::string output;
@@ -85,6 +87,10 @@ struct ReduceCommand {
     job.keep_mesh_shapes = !no_mesh_shapes;
     job.geometric_stiffness = !no_geometric_stiffness;
     job.stiffening_supports = stiffening_supports;
+    EMB_THROW_IF(no_stress && !stress_groups.empty(),
+                 "--no-stress and --stress-groups exclude each other");
+    if (!no_stress)
+      job.stress_groups = stress_groups.empty() ? DefaultStressGroups(mesh) : stress_groups;
     if (free_free) {
       EMB_THROW_IF(!interfaces.empty(), "--free-free and --interface exclude each other");
     } else if (!interfaces.empty()) {
@@ -151,6 +157,19 @@ struct ReduceCommand {
     for (int i = 0; i < body.modes.frequencies_hz.size(); ++i)
       modes.AddRow({static_cast<long long>(i + 1), body.modes.frequencies_hz[i]});
 
+    // Modal stresses and their check against the full FE model (modal_stress.h).
+    const ModalStressCheck& sc = body.stress_check;
+    Table stress("Modal stresses at the stress groups (static check: full FE vs modal)",
+                 {"group", "nodes", "check_error", "peak_stress_per_unit_load"},
+                 {"group", "nodes", "max rel. error", "peak |sigma| per unit load [Pa/N, Pa/(N m)]"});
+    for (std::size_t g = 0; g < body.stress_groups.size(); ++g) {
+      const bool checked = sc.run && g < sc.errors.size();
+      stress.AddRow({body.stress_groups[g].name,
+                     static_cast<long long>(body.stress_groups[g].num_nodes()),
+                     checked ? Table::Cell(sc.errors[g]) : Table::Cell(std::string("-")),
+                     checked ? Table::Cell(sc.peak_stress[g]) : Table::Cell(std::string("-"))});
+    }
+
     Summary cert("Reduction certificate");
     cert.Add("passed", "passed", ct.passed());
     for (size_t i = 0; i < ct.failures.size(); ++i)
@@ -208,6 +227,14 @@ struct ReduceCommand {
     s.Add("dropped", "dependent vectors dropped", static_cast<long long>(body.modes.num_dropped));
     s.Add("damping", "damping", body.damping.Describe());
     s.Add("geometric_stiffness", "geometric stiffening", body.geometric_stiffness.Describe());
+    std::string stress_note = "none (no --stress-groups and no fillet groups in the mesh)";
+    if (no_stress) stress_note = "none (--no-stress)";
+    if (!body.stress_groups.empty())
+      stress_note = std::to_string(body.stress_groups.size()) + " group(s); check: " +
+                    (sc.run ? sc.note + ", max rel. error " + FormatNumber(sc.max_error)
+                            : sc.note.empty() ? std::string("not run") : sc.note);
+    s.Add("stress_groups", "modal stresses", stress_note);
+    if (sc.run) s.Add("stress_check_error", "modal stress check: max rel. error", sc.max_error);
     for (const auto& [name, secs] : times.phases) s.Add("seconds_" + name, "time " + name + " [s]", secs);
     s.Add("seconds_total", "time total [s]", times.Total());
     s.Add("peak_memory_mb", "peak memory [MB]", PeakResidentBytes() / 1e6);
@@ -232,7 +259,8 @@ struct ReduceCommand {
                  {"interfaces", itf_table.ToJson()},
                  {"modes", modes.ToJson()},
                  {"comparison", freq.ToJson()},
-                 {"certificate", cert.ToJson()}});
+                 {"certificate", cert.ToJson()},
+                 {"stress", stress.ToJson()}});
     } else {
       itf_table.Print(std::cout);
       std::cout << "\n";
@@ -244,6 +272,10 @@ struct ReduceCommand {
       }
       cert.Print(std::cout);
       std::cout << "\n";
+      if (!body.stress_groups.empty()) {
+        stress.Print(std::cout);
+        std::cout << "\n";
+      }
       s.Print(std::cout);
     }
     if (!ct.passed())
@@ -307,6 +339,14 @@ void RegisterReduceCommand(CLI::App& app) {
                   "in service, e.g. a blade root); the others are free and take the static "
                   "response. Default: every interface held")
       ->delimiter(',');
+  cmd->add_option("--stress-groups", st->stress_groups,
+                  "Surface groups NAME,... whose modal stresses the body file stores (6 "
+                  "nodal-averaged components at the group's nodes per elastic mode), for "
+                  "stress recovery in emb run; checked against the full FE model under the "
+                  "certificate's static interface loads. Default: the mesh's "
+                  "crankpin_fillet_<i> and journal_fillet_<k> groups, if any")
+      ->delimiter(',');
+  cmd->add_flag("--no-stress", st->no_stress, "Store no modal stresses (not even the default fillet groups)");
   cmd->add_flag("--no-xdmf", st->no_xdmf, "Do not write the .xdmf file next to the .h5");
   cmd->add_flag("--allow-failed-certificate", st->allow_failed_certificate,
                 "Write the body file even if the certificate fails (the exit code is still 3)");

@@ -21,6 +21,7 @@
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/results/results_writer.h"
 #include "libemb/scene/scene.h"
+#include "libemb/scene/stress_recorder.h"
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
 #include "tools/emb/interrupt.h"
@@ -97,12 +98,23 @@ struct RunCommand {
     // Every output checked and locked before any work (and before any file is truncated).
     CheckWritableOutput(h5, output.empty() ? scene_file + ": output.file" : "-o");
     CheckWritableOutput(csv_path, csv.empty() ? scene_file + ": output.csv" : "--csv");
-    CheckDistinctFiles({h5, csv_path}, sc.inputs);
+    // The stress fields of the scene's stress_outputs (field_times) beside the results.
+    bool fields = false;
+    for (const auto& o : sc.stress_outputs) fields |= !o.field_times.empty();
+    const std::string stem =
+        h5.empty() ? "" : (std::filesystem::path(h5).parent_path() / std::filesystem::path(h5).stem()).string();
+    const std::string fields_h5 = fields && !h5.empty() ? stem + ".stress.h5" : "";
+    const std::string fields_xdmf = fields && !h5.empty() ? stem + ".stress.xdmf" : "";
+    CheckWritableOutput(fields_h5, "the stress fields beside the results");
+    CheckWritableOutput(fields_xdmf, "the stress fields' XDMF beside the results");
+    CheckDistinctFiles({h5, csv_path, fields_h5, fields_xdmf}, sc.inputs);
     if (!csv_path.empty()) (void)scene::ChannelSet(sc.system, sc.output.channels);  // names
     CheckOutputSize(sc, st);
     OutputLock h5_lock, csv_lock;
     if (!h5.empty()) h5_lock = OutputLock(h5);
     if (!csv_path.empty()) csv_lock = OutputLock(csv_path);
+    OutputLock fields_lock, xdmf_lock;
+    if (!fields_h5.empty()) fields_lock = OutputLock(fields_h5), xdmf_lock = OutputLock(fields_xdmf);
 
     const ProgressFn progress = MakeProgressDisplay(out.quiet);
     Stopwatch sw;
@@ -116,6 +128,7 @@ struct RunCommand {
       writer->RecordTruncations(run.truncations);
     }
     if (!csv_path.empty()) csv_writer.emplace(csv_path, run.system, sc.output.channels);
+    scene::StressRecorder stress(run.system, sc.stress_outputs);
     std::optional<scene::SteadyStateMonitor> steady;
     if (sc.steady_state.enabled() && st.type == mbs::AnalysisType::kDynamic) {
       steady.emplace(run.system, sc.steady_state, st.t_start, st.output_step);
@@ -134,6 +147,7 @@ struct RunCommand {
             [&](const mbs::Sample& s) {
               if (writer) writer->Write(s);
               if (csv_writer) csv_writer->Write(s);
+              if (!stress.empty()) stress.Add(s);
               if (steady) at_steady_state = steady->Add(s);
               last = s;
               any = true;
@@ -168,6 +182,7 @@ struct RunCommand {
       writer->Close();
     }
     if (csv_writer) csv_writer->Close();
+    if (!fields_h5.empty()) stress.WriteFields(fields_h5, fields_xdmf);
     FinishProgressLine();
     for (const auto& w : run.warnings) std::cerr << "emb: warning: " << w << "\n";
     for (const auto& w : r.warnings) std::cerr << "emb: warning: " << w << "\n";
@@ -270,6 +285,31 @@ struct RunCommand {
     s.Add("seconds_assembly", "time assembly [s]", t_prepare);
     s.Add("seconds_run", "time run [s]", t_run);
     if (!h5.empty()) s.Add("output", "written", h5 + (csv_path.empty() ? "" : " and " + csv_path));
+    if (!fields_h5.empty()) {
+      s.Add("stress_fields", "stress fields written", fields_h5 + " and " + fields_xdmf);
+      if (const auto missed = stress.MissedFieldTimes(); !missed.empty())
+        s.Add("stress_fields_missed", "field times not reached [s]", missed);
+    }
+    // Fatigue over one steady cycle (periodic rainflow) or else the whole run.
+    const bool periodic = steady && steady->report().converged;
+    const double window_start = periodic ? steady->report().cycle_start : st.t_start;
+    const double window_end = periodic ? steady->report().cycle_end : r.t_reached;
+    Table fatigue(
+        std::string("Fatigue at the stress groups (Goodman, Miner; per ") +
+            (periodic ? "steady cycle" : "run") + ")",
+        {"output", "group", "measure", "node", "damage", "life", "cycles", "max_range",
+         "max_equivalent_amplitude"},
+        {"output", "group", "measure", "worst node", std::string("damage per ") + (periodic ? "cycle" : "run"),
+         std::string("life [") + (periodic ? "cycles" : "runs") + "]", "rainflow cycles",
+         "max range [Pa]", "max Goodman amplitude [Pa]"});
+    if (stress.has_fatigue() && r.num_samples > 0) {
+      for (const scene::FatigueRow& f : stress.Fatigue(window_start, window_end, periodic))
+        fatigue.AddRow({f.output, f.group, f.measure, static_cast<long long>(f.node), f.damage,
+                        f.life, f.cycles, f.max_range, f.max_equivalent});
+      s.Add("fatigue_window", "fatigue window [s]",
+            FormatNumber(window_start, 6) + " .. " + FormatNumber(window_end, 6) +
+                (periodic ? " (one steady cycle, periodic rainflow)" : " (whole run)"));
+    }
     // Every contact (also in the results file, /events/contacts); the text shows the first.
     constexpr std::size_t kContactsShown = 20;
     Table contacts("contacts (all in /events/contacts of the results file)",
@@ -287,9 +327,14 @@ struct RunCommand {
     if (out.json) {
       nlohmann::json j = {{"summary", s.ToJson()}};
       if (!r.events.contacts.empty()) j["contacts"] = contacts.ToJson();
+      if (stress.has_fatigue()) j["fatigue"] = fatigue.ToJson();
       PrintJson(j);
     } else {
       s.Print(std::cout);
+      if (stress.has_fatigue()) {
+        std::cout << "\n";
+        fatigue.Print(std::cout);
+      }
       if (!r.events.contacts.empty()) {
         std::cout << "\n";
         contacts.Print(std::cout);

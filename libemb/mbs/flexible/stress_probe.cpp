@@ -1,0 +1,119 @@
+#include "libemb/mbs/flexible/stress_probe.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "libemb/common/did_you_mean.h"
+#include "libemb/common/error.h"
+#include "libemb/fe/stress_measures.h"
+
+namespace emb::mbs {
+namespace {
+
+constexpr const char* kComponents[6] = {"xx", "yy", "zz", "xy", "yz", "zx"};
+
+}  // namespace
+
+StressProbe::StressProbe(std::string name, int body, std::vector<StressRows> groups,
+                         std::vector<int> nodes)
+    : Probe(std::move(name)), body_(body), groups_(std::move(groups)), nodes_(std::move(nodes)) {
+  for (const StressRows& g : groups_) {
+    EMB_CHECK(g.rows.rows() == 6 * static_cast<Eigen::Index>(g.nodes.size()));
+    for (const char* c : {".von_mises", ".von_mises_node", ".max_principal", ".max_principal_node"})
+      channels_.push_back(g.name + c);
+  }
+  for (int node : nodes_) {
+    int slot_group = -1, slot = -1;
+    for (std::size_t g = 0; g < groups_.size() && slot_group < 0; ++g) {
+      const auto& n = groups_[g].nodes;
+      const auto it = std::find(n.begin(), n.end(), node);
+      if (it != n.end()) slot_group = static_cast<int>(g), slot = static_cast<int>(it - n.begin());
+    }
+    EMB_THROW_IF(slot_group < 0, "stress output '" << this->name() << "': node " << node
+                                                   << " is in none of its groups; expected a "
+                                                      "node of a stress group");
+    node_slots_.emplace_back(slot_group, slot);
+    const std::string prefix = std::string("n").append(std::to_string(node)).append(".");
+    for (const char* c : kComponents) channels_.push_back(prefix + c);
+  }
+}
+
+std::shared_ptr<const Probe> StressProbe::WithElasticBasis(int body,
+                                                           const Eigen::MatrixXd& T) const {
+  if (body != body_) return nullptr;
+  std::vector<StressRows> groups = groups_;
+  for (StressRows& g : groups) {
+    EMB_CHECK(g.rows.cols() == T.rows());
+    g.rows = g.rows * T;
+  }
+  return std::make_shared<StressProbe>(name(), body_, std::move(groups), nodes_);
+}
+
+Eigen::MatrixXd StressProbe::GroupStresses(int g, const Eigen::VectorXd& eta) const {
+  const StressRows& s = groups_[static_cast<std::size_t>(g)];
+  const Eigen::VectorXd v = s.rows * eta;
+  return Eigen::Map<const Eigen::MatrixXd>(v.data(), 6, static_cast<Eigen::Index>(s.nodes.size()));
+}
+
+void StressProbe::DoEval(const System&, const std::vector<BodyKinematics>& bodies,
+                         const Eigen::VectorXd&, Eigen::Ref<Eigen::VectorXd> values) const {
+  const Eigen::VectorXd& eta = bodies[static_cast<std::size_t>(body_)].eta;
+  Eigen::Index k = 0;
+  std::vector<Eigen::MatrixXd> sigma(groups_.size());
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    sigma[g] = GroupStresses(static_cast<int>(g), eta);
+    double vm_max = -1.0, p1_max = -std::numeric_limits<double>::infinity();
+    int vm_node = -1, p1_node = -1;
+    for (Eigen::Index i = 0; i < sigma[g].cols(); ++i) {
+      const Voigt6 s = sigma[g].col(i);
+      const double vm = VonMises(s), p1 = PrincipalStresses(s)[0];
+      if (vm > vm_max) vm_max = vm, vm_node = groups_[g].nodes[static_cast<std::size_t>(i)];
+      if (p1 > p1_max) p1_max = p1, p1_node = groups_[g].nodes[static_cast<std::size_t>(i)];
+    }
+    values[k++] = vm_max;
+    values[k++] = vm_node;
+    values[k++] = p1_max;
+    values[k++] = p1_node;
+  }
+  for (const auto& [g, i] : node_slots_)
+    for (int c = 0; c < 6; ++c) values[k++] = sigma[static_cast<std::size_t>(g)](c, i);
+}
+
+std::shared_ptr<StressProbe> MakeStressProbe(const FlexiblePart& part,
+                                             const std::vector<ModalStressGroup>& file_groups,
+                                             const StressProbeSpec& spec) {
+  const std::string who = "stress output '" + spec.name + "': part '" + part.name + "' (" +
+                          part.source + ")";
+  EMB_THROW_IF(!part.flexible, who << " is rigid: no elastic coordinates to recover stresses "
+                                      "from; expected a flexible (cms) part");
+  EMB_THROW_IF(file_groups.empty(), who << ": the body file has no modal stresses; reduce it "
+                                           "with --stress-groups NAME,... (emb reduce)");
+  std::vector<std::string> available;
+  for (const auto& g : file_groups) available.push_back(g.name);
+  std::string listed;
+  for (const auto& n : available) listed += (listed.empty() ? "" : ", ") + n;
+  const std::vector<std::string> names = spec.groups.empty() ? available : spec.groups;
+  std::vector<StressRows> rows;
+  for (const std::string& name : names) {
+    const auto it = std::find_if(file_groups.begin(), file_groups.end(),
+                                 [&](const ModalStressGroup& g) { return g.name == name; });
+    EMB_THROW_IF(it == file_groups.end(), who << ": unknown stress group '" << name << "'"
+                                              << DidYouMean(name, available)
+                                              << "; the body file has: " << listed);
+    StressRows r;
+    r.name = name;
+    r.nodes = it->nodes;
+    r.rows.resize(it->stresses.rows(), part.num_modes());
+    for (int j = 0; j < part.num_modes(); ++j) {
+      const int mode = part.kept_modes[static_cast<std::size_t>(j)];
+      EMB_THROW_IF(mode >= it->stresses.cols(),
+                   who << ": stress group '" << name << "' has " << it->stresses.cols()
+                       << " modes; expected " << part.num_available_modes);
+      r.rows.col(j) = it->stresses.col(mode);
+    }
+    rows.push_back(std::move(r));
+  }
+  return std::make_shared<StressProbe>(spec.name, part.body, std::move(rows), spec.nodes);
+}
+
+}  // namespace emb::mbs

@@ -1,0 +1,96 @@
+#include "libemb/scene/stress_output_reader.h"
+
+#include <cmath>
+
+#include "libemb/common/error.h"
+#include "libemb/mbs/flexible/stress_probe.h"
+#include "libemb/scene/yaml_reader.h"
+
+namespace emb::scene {
+namespace {
+
+std::vector<std::string> Strings(const YAML::Node& n, const std::string& file,
+                                 const std::string& what) {
+  EMB_THROW_IF(!n.IsSequence(), Where(file, n) << ": " << what << ": expected a list of names");
+  std::vector<std::string> out;
+  for (const auto& e : n) {
+    EMB_THROW_IF(!e.IsScalar(), Where(file, e) << ": " << what << ": expected a name");
+    out.push_back(e.Scalar());
+  }
+  return out;
+}
+
+std::vector<int> Nodes(const YAML::Node& n, const std::string& file, const std::string& what) {
+  std::vector<int> out;
+  for (double x : AsDoubles(n, file, what)) {
+    EMB_THROW_IF(!(x >= 0.0 && x == std::floor(x) && x < 2147483647.0),
+                 Where(file, n) << ": " << what << ": expected 0-based mesh node indices, got "
+                                << x);
+    out.push_back(static_cast<int>(x));
+  }
+  return out;
+}
+
+SnCurve ReadSn(MapReader& f, StressOutput* out) {
+  out->measure = f.GetString("measure", out->measure);
+  EMB_THROW_IF(out->measure != "max_principal" && out->measure != "signed_von_mises",
+               f.what() << " measure: expected max_principal or signed_von_mises, got '"
+                        << out->measure << "'");
+  SnCurve sn;
+  sn.fatigue_strength_coefficient = f.GetDouble("fatigue_strength_coefficient");
+  sn.exponent = f.GetDouble("exponent");
+  sn.ultimate_strength = f.GetDouble("ultimate_strength");
+  sn.endurance_limit = f.GetDouble("endurance_limit", 0.0);
+  sn.Validate(f.what());
+  return sn;
+}
+
+}  // namespace
+
+std::vector<StressOutput> ReadStressOutputs(
+    const YAML::Node& list, const std::string& file, mbs::System* sys,
+    const std::map<std::string, mbs::FlexiblePart>& body_file_parts,
+    const std::map<std::string, std::vector<ModalStressGroup>>& stress_groups) {
+  std::vector<StressOutput> outputs;
+  ReadNamedList(
+      list, file, "stress_outputs", "stress output",
+      [&](MapReader& r, const std::string& name, const YAML::Node&) {
+        StressOutput out;
+        out.name = name;
+        out.body = r.GetString("body");
+        mbs::StressProbeSpec spec;
+        spec.name = name;
+        if (const YAML::Node g = r.Optional("groups"))
+          spec.groups = Strings(g, file, r.what() + " groups");
+        if (const YAML::Node n = r.Optional("nodes")) spec.nodes = Nodes(n, file, r.what() + " nodes");
+        if (r.Has("field_times")) {
+          out.field_times = r.GetDoubles("field_times");
+          for (double t : out.field_times)
+            EMB_THROW_IF(!std::isfinite(t), r.what() << " field_times: expected finite times [s], got " << t);
+        } else {
+          r.Optional("field_times");
+        }
+        if (const YAML::Node f = r.Optional("fatigue")) {
+          MapReader fr(f, file, r.what() + " fatigue");
+          out.fatigue = true;
+          out.sn = ReadSn(fr, &out);
+          fr.Finish();
+        }
+        r.Finish();
+        const auto part = body_file_parts.find(out.body);
+        if (part == body_file_parts.end()) {
+          sys->FindBody(out.body);  // an unknown body: did-you-mean
+          EMB_THROW(InputError, "stress output '" << name << "': body '" << out.body
+                                                  << "' is not a part from a body file; "
+                                                     "expected a cms part");
+        }
+        out.body_file = part->second.source;
+        const auto groups = stress_groups.find(out.body);
+        EMB_CHECK(groups != stress_groups.end());
+        sys->AddProbe(mbs::MakeStressProbe(part->second, groups->second, spec));
+        outputs.push_back(std::move(out));
+      });
+  return outputs;
+}
+
+}  // namespace emb::scene

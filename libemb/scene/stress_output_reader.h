@@ -1,0 +1,41 @@
+#pragma once
+/// @file
+/// The scene section `stress_outputs` (internal to emb_scene): hot-spot stress histories of a
+/// flexible part's stress groups (mbs/flexible/stress_probe.h), the groups' stress fields at
+/// chosen times (XDMF, written by `emb run`) and a fatigue summary (results/fatigue.h).
+///
+///   stress_outputs:
+///     - name: fillets                    # channels fillets.<group>.von_mises, ...
+///       body: crank                      # a cms part whose body file has modal stresses
+///       groups: [crankpin_fillet_1]      # default: every stress group of the body file
+///       nodes: [1234]                    # full components: fillets.n1234.xx ... (optional)
+///       field_times: [0.05, 0.06]        # XDMF of the groups' stress fields [s] (optional)
+///       fatigue:                         # optional
+///         measure: max_principal         # or signed_von_mises
+///         fatigue_strength_coefficient: 1.2e9   # Basquin sigma_f' [Pa]
+///         exponent: -0.085                       # Basquin b, in (-1, 0)
+///         ultimate_strength: 9.0e8               # Goodman sigma_u [Pa]
+///         endurance_limit: 0                     # [Pa], optional
+
+#include <yaml-cpp/yaml.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "libemb/mbs/core/system.h"
+#include "libemb/mbs/flexible/flexible_body.h"
+#include "libemb/scene/scene.h"
+
+namespace emb::scene {
+
+/// Reads the list (`stress_groups`: the body files' modal stresses by part), adds a stress probe per entry to `sys` (not finalized) and returns the
+/// entries. @throws InputError with file:line naming the entry: unknown body, a rigid part or
+/// one without a body file, a body file without modal stresses, an unknown group, a node in
+/// none of the groups, a bad S-N curve, a negative field time, bad keys.
+std::vector<StressOutput> ReadStressOutputs(
+    const YAML::Node& list, const std::string& file, mbs::System* sys,
+    const std::map<std::string, mbs::FlexiblePart>& body_file_parts,
+    const std::map<std::string, std::vector<ModalStressGroup>>& stress_groups);
+
+}  // namespace emb::scene
