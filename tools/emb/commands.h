@@ -23,6 +23,10 @@ void RegisterDofCommand(CLI::App& app);
 void RegisterRunCommand(CLI::App& app);
 /// `emb spectrum RESULTS --channel NAME` (engine-order spectrum of a results channel).
 void RegisterSpectrumCommand(CLI::App& app);
+/// `emb sweep SCENE --rpm LIST` (speed sweep to steady state, orders) and `emb runup RESULTS`
+/// (order tracking of a speed ramp), issue 17.
+void RegisterSweepCommand(CLI::App& app);
+void RegisterRunUpCommand(CLI::App& app);
 /// `emb compare PART` (beam vs CMS vs 3-D FE, issue 6).
 void RegisterCompareCommand(CLI::App& app);
 

@@ -8,6 +8,8 @@
 //   emb dof SCENE             degrees of freedom and redundant constraints of a multibody scene
 //   emb run SCENE             run a multibody scene (kinematic/static/dynamic), results to HDF5
 //   emb spectrum RESULTS      engine-order spectrum of a results channel over whole cycles
+//   emb sweep SCENE --rpm ..  speed sweep: every speed to steady state, engine orders per point
+//   emb runup RESULTS         order tracking of a speed-ramp run
 // Sample run:
 //   emb modes meshes/crankshaft_i4.geo --modes 20 -o crank_modes.h5
 // Inputs: a gmsh geometry (.geo with parameters, .step, .brep) or a mesh (.msh, .unv, .bdf).
@@ -95,6 +97,8 @@ int main(int argc, char** argv) {
   RegisterRunCommand(app);
   RegisterSpectrumCommand(app);
   RegisterCompareCommand(app);
+  RegisterSweepCommand(app);
+  RegisterRunUpCommand(app);
   // Name an unknown subcommand (CLI11 would only say that one is required).
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;
