@@ -526,13 +526,28 @@ def steady_state(res):
                   "cycle 2 vs steady", "transient decay per cycle"], rows), [doc]
 
 
+def sweep_inline4(res):
+    doc = res("sweep_inline4")
+    runs = doc["data"]["runs"]
+    base = next((r for r in runs if r["jobs"] == 1), None)
+    rows = [[f"-j {r['jobs']}", r["rpm"], r["points"], r["converged"], r["not_converged"],
+             r["failed"], r["cycles"], num(r["wall_seconds"], ".1f"),
+             num(r["wall_seconds"] / r["points"], ".2f"), num(r["point_cpu_seconds"], ".1f"),
+             num(r["point_cpu_seconds"] / r["cycles"], ".3f"),
+             num(base["wall_seconds"] / r["wall_seconds"], ".2f") if base else "–"]
+            for r in runs]
+    return table(["processes", "speeds [rpm]", "points", "converged", "not settled", "failed",
+                  "cycles run", "wall [s]", "wall per point [s]", "CPU of the points [s]",
+                  "CPU per cycle [s]", "speed-up vs -j 1"], rows), [doc]
+
+
 TABLES = {f.__name__: f for f in [
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
     crank_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
     crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
     inline4_beam, inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule,
-    mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state]}
+    mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state, sweep_inline4]}
 
 
 def render_table(name, res):
