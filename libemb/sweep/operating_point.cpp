@@ -42,6 +42,20 @@ PointStatus ParsePointStatus(const std::string& name) {
                         "got '" << name << "'");
 }
 
+OperatingPoint FailedPoint(double rpm, const std::string& message, const OrderSettings& settings) {
+  OperatingPoint p;
+  p.rpm = rpm;
+  p.status = PointStatus::kFailed;
+  p.message = message;
+  p.change = kNaN;
+  const auto nc = static_cast<Eigen::Index>(settings.channels.size());
+  const auto no = static_cast<Eigen::Index>(settings.orders.size());
+  p.mean = Eigen::VectorXd::Constant(nc, kNaN);
+  p.amplitude = Eigen::MatrixXd::Constant(nc, no, kNaN);
+  p.phase_deg = Eigen::MatrixXd::Constant(nc, no, kNaN);
+  return p;
+}
+
 void CheckSweepable(const scene::Scene& scene, const OrderSettings& settings) {
   EMB_THROW_IF(scene.analysis.type != mbs::AnalysisType::kDynamic,
                scene.source << ": a sweep runs a dynamic analysis, the scene's is '"
@@ -67,14 +81,9 @@ OperatingPoint RunOperatingPoint(const scene::Scene& scene, double rpm,
                                  const OrderSettings& settings, const ProgressFn& progress) {
   CheckSweepable(scene, settings);
   const double cpu0 = ProcessCpuSeconds();
-  OperatingPoint p;
-  p.rpm = rpm;
+  OperatingPoint p = FailedPoint(rpm, "", settings);
   const auto nc = static_cast<Eigen::Index>(settings.channels.size());
   const auto no = static_cast<Eigen::Index>(settings.orders.size());
-  p.mean = Eigen::VectorXd::Constant(nc, kNaN);
-  p.amplitude = Eigen::MatrixXd::Constant(nc, no, kNaN);
-  p.phase_deg = Eigen::MatrixXd::Constant(nc, no, kNaN);
-  p.change = kNaN;
 
   mbs::AnalysisSettings st = scene.analysis;
   const mbs::PreparedRun run = mbs::PrepareRun(scene.system, st);

@@ -47,6 +47,10 @@ struct OperatingPoint {
   Eigen::MatrixXd phase_deg;     ///< [channels, orders] of cos(o theta + phase)
 };
 
+/// A point that failed at `rpm` with `message`: change, means, amplitudes and phases NaN, sized
+/// for `settings`.
+OperatingPoint FailedPoint(double rpm, const std::string& message, const OrderSettings& settings);
+
 /// Checks that `scene` can be swept with `settings`: a dynamic analysis with steady_state,
 /// known channels, orders that are positive multiples of 1/2 below the resampling Nyquist
 /// order samples_per_cycle / 4. @throws InputError naming the problem.

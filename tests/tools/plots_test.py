@@ -40,6 +40,14 @@ def check(condition, what):
         print("FAILED:", what)
 
 
+def is_png(path):
+    """A PNG file of more than 1 kB (a plot, not an empty canvas)."""
+    if not os.path.exists(path):
+        return False
+    with open(path, "rb") as f:
+        return f.read(8) == PNG_MAGIC and os.path.getsize(path) > 1000
+
+
 def run(args, cwd):
     return subprocess.run(args, cwd=cwd, capture_output=True, text=True)
 
@@ -57,12 +65,7 @@ def check_engine_plots(work):
     r = run(plots + ["--traces", "tube.omega.x,energy.total", "--spectrum", "tube.omega.x"], work)
     check(r.returncode == 0, "engine_plots.py exit code 0: " + r.stderr)
     for png in ("spin_traces.png", "spin_spectrum_tube_omega_x.png"):
-        path = os.path.join(work, "plots", png)
-        ok = os.path.exists(path)
-        if ok:
-            with open(path, "rb") as f:
-                ok = f.read(8) == PNG_MAGIC and os.path.getsize(path) > 1000
-        check(ok, "engine_plots.py wrote a PNG " + png)
+        check(is_png(os.path.join(work, "plots", png)), "engine_plots.py wrote a PNG " + png)
     r = run(plots + ["--traces", "tube.spin.x"], work)
     check(r.returncode != 0 and "tube.spin.x" in r.stderr,
           "unknown channel: non-zero exit naming it (%s)" % r.stderr.strip()[-200:])
@@ -85,12 +88,7 @@ def check_sweep_plots(work):
     r = run(plots + ["--critical", "campbell.json"], work)
     check(r.returncode == 0, "sweep_plots.py exit code 0: " + r.stderr)
     for png in ("sw_waterfall_crank_speed_T_z.png", "sw_order_cuts_crank_speed_T_z.png"):
-        path = os.path.join(work, "sweep_plots", png)
-        ok = os.path.exists(path)
-        if ok:
-            with open(path, "rb") as f:
-                ok = f.read(8) == PNG_MAGIC and os.path.getsize(path) > 1000
-        check(ok, "sweep_plots.py wrote a PNG " + png)
+        check(is_png(os.path.join(work, "sweep_plots", png)), "sweep_plots.py wrote a PNG " + png)
     r = run(plots + ["--critical", "bad.json"], work)
     check(r.returncode != 0 and "bad.json" in r.stderr, "bad critical speeds: non-zero exit "
           "naming the file (%s)" % r.stderr.strip()[-200:])

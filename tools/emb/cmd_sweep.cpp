@@ -101,16 +101,7 @@ struct SweepCommand {
       const scene::Scene sc = scene::LoadSceneAtSpeed(scene_file, rpm, options);
       p = sweep::RunOperatingPoint(sc, rpm, d.settings);
     } catch (const std::exception& e) {  // an assembly or solver failure at this speed
-      p = OperatingPoint{};
-      p.rpm = rpm;
-      p.status = PointStatus::kFailed;
-      p.message = e.what();
-      p.change = NAN;
-      const auto nc = static_cast<Eigen::Index>(d.settings.channels.size());
-      const auto no = static_cast<Eigen::Index>(d.settings.orders.size());
-      p.mean = Eigen::VectorXd::Constant(nc, NAN);
-      p.amplitude = Eigen::MatrixXd::Constant(nc, no, NAN);
-      p.phase_deg = Eigen::MatrixXd::Constant(nc, no, NAN);
+      p = sweep::FailedPoint(rpm, e.what(), d.settings);
     }
     SweepData one = d;
     one.index = {index};
@@ -169,15 +160,10 @@ struct SweepCommand {
           if (outcome.empty() && fs::exists(path)) {
             p = sweep::ReadSweepFile(path).points.front();
           } else {  // the worker died: recorded here, not in a point file (a resume retries it)
-            p.rpm = rpm;
-            p.status = PointStatus::kFailed;
-            p.message = "the worker process of this point " + (outcome.empty() ? "wrote no file" : outcome);
-            p.change = NAN;
-            const auto nc = static_cast<Eigen::Index>(d.settings.channels.size());
-            const auto no = static_cast<Eigen::Index>(d.settings.orders.size());
-            p.mean = Eigen::VectorXd::Constant(nc, NAN);
-            p.amplitude = Eigen::MatrixXd::Constant(nc, no, NAN);
-            p.phase_deg = Eigen::MatrixXd::Constant(nc, no, NAN);
+            p = sweep::FailedPoint(rpm,
+                                   "the worker process of this point " +
+                                       (outcome.empty() ? std::string("wrote no file") : outcome),
+                                   d.settings);
           }
           done[i] = p;
           if (!out.quiet)
