@@ -541,13 +541,29 @@ def sweep_inline4(res):
                   "CPU per cycle [s]", "speed-up vs -j 1"], rows), [doc]
 
 
+def runup_vs_sweep(res):
+    doc = res("runup_vs_sweep")
+    d = doc["data"]["runs"][0]
+    rows = [[r["name"], num(r["steady_min"], ".1f") + " – " + num(r["steady_max"], ".1f"),
+             num(r["max_abs_difference"], ".2f"), num(100 * r["max_difference_relative"], ".1f"),
+             num(r["at_rpm"], ".0f")] for r in d["orders"]]
+    lines = table(["order", "steady amplitude [N m]", "max \\|run-up − steady\\| [N m]",
+                   "of the largest steady [%]", "at [rpm]"], rows)
+    lines += ["", f"Compared at {len(d['compared_rpm'])} steady speeds "
+                  f"{num(min(d['compared_rpm']), '.0f')}–{num(max(d['compared_rpm']), '.0f')} rpm "
+                  f"({d['windows']} run-up windows). CPU: steady sweep "
+                  f"{num(d['sweep_cpu_seconds'], '.1f')} s, run-up (run + tracking) "
+                  f"{num(d['runup_cpu_seconds'], '.1f')} s."]
+    return lines, [doc]
+
+
 TABLES = {f.__name__: f for f in [
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
     crank_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
     crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
     inline4_beam, inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule,
-    mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state, sweep_inline4]}
+    mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state, sweep_inline4, runup_vs_sweep]}
 
 
 def render_table(name, res):
