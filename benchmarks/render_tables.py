@@ -554,6 +554,11 @@ def runup_vs_sweep(res):
                   f"({d['windows']} run-up windows). CPU: steady sweep "
                   f"{num(d['sweep_cpu_seconds'], '.1f')} s, run-up (run + tracking) "
                   f"{num(d['runup_cpu_seconds'], '.1f')} s."]
+    unsettled = [num(n, ".0f") for n, st in zip(d["steady_rpm"], d["steady_status"])
+                 if st != "converged"]
+    if unsettled:
+        lines[-1] += (f" Steady points without a steady state within the scene's max_cycles "
+                      f"(their last cycle used, flagged in the sweep file): {', '.join(unsettled)} rpm.")
     return lines, [doc]
 
 
