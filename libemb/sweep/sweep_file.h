@@ -6,11 +6,12 @@
 ///                     of the scene text), digest (SweepDigest: scene text, all speeds,
 ///                     channels, orders, samples per cycle), shard_index, shard_count,
 ///                     samples_per_cycle, phase_reference, num_converged,
-///                     num_not_converged, num_failed
+///                     num_not_converged, num_failed, num_run_up_windows
 ///   /sweep_rpm        [N] every speed of the whole sweep (all shards) [rpm]
 ///   /index            [n] each point's position in /sweep_rpm
 ///   /rpm              [n] [rpm]
-///   /status           [n] "converged", "not-converged" or "failed" (operating_point.h)
+///   /status           [n] "converged", "not-converged", "failed" or, for the windows of a
+///                     run-up (emb runup, order_tracking.h), "run-up" (operating_point.h)
 ///   /message          [n] why a point failed or did not converge ("" otherwise)
 ///   /cycles           [n] whole cycles run;  /change [n] last cycle-to-cycle change
 ///   /cpu_seconds      [n] CPU time of the point [s];  /steps [n] integrator steps
