@@ -81,11 +81,13 @@ def check_sweep_plots(work):
     if r.returncode != 0:
         sys.exit("emb sweep failed: " + r.stderr)
     with open(os.path.join(work, "campbell.json"), "w") as f:
-        json.dump({"summary": {}, "crossings": [{"order": 1.0, "rpm": 2500, "mode_hz": 41.7}]}, f)
+        json.dump({"summary": {}, "crossings": [
+            {"order": 1.0, "rpm": 2500, "mode_hz": 41.7, "class": "torsion"},
+            {"order": 2.0, "rpm": 2600, "mode_hz": 86.7, "class": "bending"}]}, f)
     with open(os.path.join(work, "bad.json"), "w") as f:
         json.dump([{"order": "x", "rpm": 1}], f)
     plots = ["/usr/bin/python3", SWEEP_PLOTS, "sw.h5", "--out", "sweep_plots"]
-    r = run(plots + ["--critical", "campbell.json"], work)
+    r = run(plots + ["--critical", "campbell.json", "--critical-class", "torsion"], work)
     check(r.returncode == 0, "sweep_plots.py exit code 0: " + r.stderr)
     for png in ("sw_waterfall_crank_speed_T_z.png", "sw_order_cuts_crank_speed_T_z.png"):
         check(is_png(os.path.join(work, "sweep_plots", png)), "sweep_plots.py wrote a PNG " + png)

@@ -2,7 +2,8 @@
 """Plots of a speed sweep (emb sweep) or a run-up (emb runup): a waterfall and order cuts.
 
     /usr/bin/python3 tools/plots/sweep_plots.py SWEEP.h5 [--channel nose_torsion.rz]
-        [--orders 0.5,1,2,4] [--critical campbell.json] [--scale 57.29578 --unit deg]
+        [--orders 0.5,1,2,4] [--critical campbell.json [--critical-class torsion]]
+        [--scale 57.29578 --unit deg]
         [--out DIR]
 
 Writes DIR/<sweep stem>_waterfall_<channel>.png (engine order against speed, each point's
@@ -15,7 +16,9 @@ reach their steady state are drawn hollow).
 (mode_hz optional, "label" optional), or any JSON document holding such a list (e.g.
 `emb campbell --json` output: the first list of objects with "order" and "rpm" keys found, depth
 first). Each critical speed of an order that is cut is a dashed vertical line in that order's
-colour, and on the waterfall a cross at (rpm, order).
+colour, and on the waterfall a cross at (rpm, order). `emb campbell --json` (or its -o file)
+holds them as "crossings" with a "class" per mode (torsion, bending, axial): --critical-class
+keeps the ones of that class (e.g. torsion for the nose torsion).
 --channel defaults to the first channel whose name starts with "nose_torsion", else the first.
 --scale multiplies the amplitudes (e.g. 57.29578 for rad -> deg) and --unit labels them.
 """
@@ -62,7 +65,7 @@ def find_critical(doc):
     return None
 
 
-def read_critical(path):
+def read_critical(path, kind=None):
     try:
         with open(path) as f:
             doc = json.load(f)
@@ -76,6 +79,8 @@ def read_critical(path):
                  "\"mode_hz\"]} objects" % path)
     out = []
     for c in found:
+        if kind is not None and c.get("class") != kind:
+            continue
         try:
             out.append((float(c["order"]), float(c["rpm"]), c.get("mode_hz"), c.get("label")))
         except (TypeError, ValueError):
@@ -90,6 +95,7 @@ def main():
     p.add_argument("--channel")
     p.add_argument("--orders", help="orders to cut, comma-separated (default: the 6 largest)")
     p.add_argument("--critical", help="JSON of critical speeds (see the file's doc)")
+    p.add_argument("--critical-class", help="keep only critical speeds of this mode class")
     p.add_argument("--scale", type=float, default=1.0)
     p.add_argument("--unit", default="")
     p.add_argument("--out", default=".")
@@ -108,7 +114,7 @@ def main():
     if not ok.any():
         sys.exit("sweep_plots.py: error: every point of %s failed; nothing to plot" % a.sweep)
     rpm = s["rpm"]
-    critical = read_critical(a.critical) if a.critical else []
+    critical = read_critical(a.critical, a.critical_class) if a.critical else []
     if a.orders:
         try:
             cut = [float(x) for x in a.orders.split(",")]
