@@ -622,6 +622,42 @@ def tvd_inline4_3250(res):
     return tvd_inline4(res, "tvd_inline4_3250")
 
 
+def sweep_inline4(res):
+    doc = res("sweep_inline4")
+    runs = doc["data"]["runs"]
+    base = next((r for r in runs if r["jobs"] == 1), None)
+    rows = [[f"-j {r['jobs']}", r["rpm"], r["points"], r["converged"], r["not_converged"],
+             r["failed"], r["cycles"], num(r["wall_seconds"], ".1f"),
+             num(r["wall_seconds"] / r["points"], ".2f"), num(r["point_cpu_seconds"], ".1f"),
+             num(r["point_cpu_seconds"] / r["cycles"], ".3f"),
+             num(base["wall_seconds"] / r["wall_seconds"], ".2f") if base else "–"]
+            for r in runs]
+    return table(["processes", "speeds [rpm]", "points", "converged", "not settled", "failed",
+                  "cycles run", "wall [s]", "wall per point [s]", "CPU of the points [s]",
+                  "CPU per cycle [s]", "speed-up vs -j 1"], rows), [doc]
+
+
+def runup_vs_sweep(res):
+    doc = res("runup_vs_sweep")
+    d = doc["data"]["runs"][0]
+    rows = [[r["name"], num(r["steady_min"], ".1f") + " – " + num(r["steady_max"], ".1f"),
+             num(r["max_abs_difference"], ".2f"), num(100 * r["max_difference_relative"], ".1f"),
+             num(r["at_rpm"], ".0f")] for r in d["orders"]]
+    lines = table(["order", "steady amplitude [N m]", "max \\|run-up − steady\\| [N m]",
+                   "of the largest steady [%]", "at [rpm]"], rows)
+    lines += ["", f"Compared at {len(d['compared_rpm'])} steady speeds "
+                  f"{num(min(d['compared_rpm']), '.0f')}–{num(max(d['compared_rpm']), '.0f')} rpm "
+                  f"({d['windows']} run-up windows). CPU: steady sweep "
+                  f"{num(d['sweep_cpu_seconds'], '.1f')} s, run-up (run + tracking) "
+                  f"{num(d['runup_cpu_seconds'], '.1f')} s."]
+    unsettled = [num(n, ".0f") for n, st in zip(d["steady_rpm"], d["steady_status"])
+                 if st != "converged"]
+    if unsettled:
+        lines[-1] += (f" Steady points without a steady state within the scene's max_cycles "
+                      f"(their last cycle used, flagged in the sweep file): {', '.join(unsettled)} rpm.")
+    return lines, [doc]
+
+
 TABLES = {f.__name__: f for f in [
     campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
@@ -630,7 +666,7 @@ TABLES = {f.__name__: f for f in [
     stress_recovery_1cyl_fatigue, stress_recovery_i4, stress_recovery_i4_fatigue,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
     inline4_beam, inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule,
-    mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state]}
+    mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state, sweep_inline4, runup_vs_sweep]}
 
 
 def render_table(name, res):

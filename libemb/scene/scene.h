@@ -71,7 +71,7 @@ Scene LoadScene(const std::string& path, const SceneOptions& options = {});
 std::string ReadSceneText(const std::string& path);
 
 /// LoadScene for `text` read from (or derived from) the scene file `path`: paths resolve
-/// against path's directory as if the text were that file (operating_point.h).
+/// against path's directory as if the text were that file (scene_at_speed.h).
 Scene LoadSceneText(const std::string& text, const std::string& path,
                     const SceneOptions& options = {});
 

@@ -374,6 +374,35 @@ cli_values("spectrum", [*SPECTRUM, "--angle", "disc"], "--samples-per-cycle",
 cli_values("spectrum", [*SPECTRUM, "--angle", "disc"], "--angle-start", {"nan": "nan"})
 cli_values("spectrum", SPECTRUM, "--rpm", {"zero": "0", "neg": "-3000", "nan": "nan"})
 cli_values("spectrum", [*SPECTRUM, "--angle", "disc"], "--axis", {"w": "w"}, frag="axis")
+SWEEP = ["sweep", "{src}/tests/sweep/data/one_cylinder_direct.yaml", "-q", "-o", "out.h5"]
+cli_values("sweep", SWEEP, "--rpm", {"zero": "0", "neg": "-3000", "nan": "nan", "text": "abc",
+                                     "range_down": "3000:1000:100", "step_zero": "1:5:0",
+                                     "repeated": "1000,1000", "too_many": "0:1e9:1",
+                                     "empty_item": "1000,,2000"}, frag="--rpm")
+cli_values("sweep", [*SWEEP, "--rpm", "3000"], "--orders",
+           {"third": "0.3", "zero": "0", "too_high": "1000", "text": "x"}, frag="order")
+cli_values("sweep", [*SWEEP, "--rpm", "3000"], "--shard",
+           {"k_eq_n": "2/2", "no_slash": "1", "neg": "-1/2", "text": "a/b"}, frag="--shard")
+cli_values("sweep", [*SWEEP, "--rpm", "3000"], "-j", {"zero": "0", "neg": "-2"}, frag="-j")
+cli_values("sweep", [*SWEEP, "--rpm", "3000"], "--channels", {"unknown": "nope.T.z"},
+           frag="nope.T.z")
+case("cli_sweep_no_rpm_motion", "cli",
+     ["sweep", "{fix}/pendulum.yaml", "-q", "--rpm", "1000", "-o", "out.h5"], 1,
+     ["no motion with function {rpm"], absent=["out.h5", "out.h5.points"])
+case("cli_sweep_no_rpm_option", "cli", SWEEP, 1, ["--rpm"], absent=["out.h5"])
+case("cli_sweep_shard_auto_without_environment", "cli", [*SWEEP, "--rpm", "3000", "--shard",
+     "auto"], 1, ["no shard in the environment"], absent=["out.h5"])
+case("cli_sweep_merge_not_a_sweep_file", "cli",
+     ["sweep", "--merge", "{fix}/pendulum.h5", "-o", "out.h5", "-q"], 1, ["not a sweep file"],
+     absent=["out.h5"])
+case("cli_sweep_merge_without_output", "cli", ["sweep", "--merge", "{fix}/pendulum.h5", "-q"], 1,
+     ["-o"])
+case("cli_runup_unknown_angle", "cli",
+     ["runup", "{fix}/disc.h5", "--angle", "crank", "--channels", "disc.omega.x", "-o", "out.h5",
+      "-q"], 1, ["crank"], absent=["out.h5"])
+case("cli_runup_unknown_channel", "cli",
+     ["runup", "{fix}/disc.h5", "--angle", "disc", "--channels", "disk.omega.x", "-o", "out.h5",
+      "-q"], 1, ["disk"], absent=["out.h5"])
 case("cli_spectrum_angle_and_rpm", "cli", [*SPECTRUM, "--angle", "disc", "--rpm", "3000"], 1,
      ["exactly one"])
 case("cli_spectrum_neither", "cli", SPECTRUM, 1, ["exactly one"])

@@ -30,6 +30,7 @@ import numpy as np
 EMB, SOURCE = sys.argv[1], sys.argv[2]
 SCRIPT = os.path.join(SOURCE, "tools", "plots", "animate_body.py")
 ENGINE_PLOTS = os.path.join(SOURCE, "tools", "plots", "engine_plots.py")
+SWEEP_PLOTS = os.path.join(SOURCE, "tools", "plots", "sweep_plots.py")
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 failures = []
 
@@ -38,6 +39,14 @@ def check(condition, what):
     if not condition:
         failures.append(what)
         print("FAILED:", what)
+
+
+def is_png(path):
+    """A PNG file of more than 1 kB (a plot, not an empty canvas)."""
+    if not os.path.exists(path):
+        return False
+    with open(path, "rb") as f:
+        return f.read(8) == PNG_MAGIC and os.path.getsize(path) > 1000
 
 
 def run(args, cwd):
@@ -75,15 +84,37 @@ def check_engine_plots(work):
     r = run(plots + ["--traces", "tube.omega.x,energy.total", "--spectrum", "tube.omega.x"], work)
     check(r.returncode == 0, "engine_plots.py exit code 0: " + r.stderr)
     for png in ("spin_traces.png", "spin_spectrum_tube_omega_x.png"):
-        path = os.path.join(work, "plots", png)
-        ok = os.path.exists(path)
-        if ok:
-            with open(path, "rb") as f:
-                ok = f.read(8) == PNG_MAGIC and os.path.getsize(path) > 1000
-        check(ok, "engine_plots.py wrote a PNG " + png)
+        check(is_png(os.path.join(work, "plots", png)), "engine_plots.py wrote a PNG " + png)
     r = run(plots + ["--traces", "tube.spin.x"], work)
     check(r.returncode != 0 and "tube.spin.x" in r.stderr,
           "unknown channel: non-zero exit naming it (%s)" % r.stderr.strip()[-200:])
+
+
+def check_sweep_plots(work):
+    """sweep_plots.py on a small sweep of tests/sweep/data/one_cylinder_direct.yaml, with the
+    critical speeds as `emb campbell --json` gives them (a list under some key) and as a bare
+    list; a malformed critical-speed file or an unknown channel is a non-zero exit naming it."""
+    scene = os.path.join(SOURCE, "tests", "sweep", "data", "one_cylinder_direct.yaml")
+    r = run([EMB, "sweep", scene, "--rpm", "2000,3000", "--orders", "0.5:3:0.5", "-q", "-o",
+             "sw.h5"], work)
+    if r.returncode != 0:
+        sys.exit("emb sweep failed: " + r.stderr)
+    with open(os.path.join(work, "campbell.json"), "w") as f:
+        json.dump({"summary": {}, "crossings": [
+            {"order": 1.0, "rpm": 2500, "mode_hz": 41.7, "class": "torsion"},
+            {"order": 2.0, "rpm": 2600, "mode_hz": 86.7, "class": "bending"}]}, f)
+    with open(os.path.join(work, "bad.json"), "w") as f:
+        json.dump([{"order": "x", "rpm": 1}], f)
+    plots = ["/usr/bin/python3", SWEEP_PLOTS, "sw.h5", "--out", "sweep_plots"]
+    r = run(plots + ["--critical", "campbell.json", "--critical-class", "torsion"], work)
+    check(r.returncode == 0, "sweep_plots.py exit code 0: " + r.stderr)
+    for png in ("sw_waterfall_crank_speed_T_z.png", "sw_order_cuts_crank_speed_T_z.png"):
+        check(is_png(os.path.join(work, "sweep_plots", png)), "sweep_plots.py wrote a PNG " + png)
+    r = run(plots + ["--critical", "bad.json"], work)
+    check(r.returncode != 0 and "bad.json" in r.stderr, "bad critical speeds: non-zero exit "
+          "naming the file (%s)" % r.stderr.strip()[-200:])
+    r = run(plots + ["--channel", "nope.T.z"], work)
+    check(r.returncode != 0 and "nope.T.z" in r.stderr, "unknown channel: non-zero exit")
 
 
 def check_sensor_and_force_channels(work):
@@ -375,6 +406,7 @@ def main():
         check(not os.path.exists(os.path.join(work, out)), "%s: no output written" % what)
 
     check_engine_plots(work)
+    check_sweep_plots(work)
     check_steady_cycle(work)
     check_clonk_plots(work, num_modes)
     check_campbell_plot(work)

@@ -31,6 +31,7 @@ DEPENDS = {
     "driveline": ["mbs/forces"],
     "results": ["mbs/analysis", "io"],
     "scene": ["mbs/analysis", "mbs/flexible", "engine", "driveline", "results"],
+    "sweep": ["scene", "results", "io"],
 }
 
 

@@ -1,5 +1,5 @@
 // emb campbell SCENE --rpm 1000:6500:250: the Campbell diagram of a scene (issue 17). At each
-// speed the scene is set to that speed (libemb/scene/operating_point.h), linearised about its
+// speed the scene is set to that speed (libemb/scene/scene_at_speed.h), linearised about its
 // assembled start with multipliers from the acceleration level (tools/emb/operating_modes.h),
 // its installed natural frequencies computed (first-order form, gyroscopic terms in the
 // stationary frame: forward/backward whirl split), the modes followed across speeds by MAC,
@@ -56,12 +56,13 @@ struct CampbellCommand {
     double nominal = 0.0;
     for (double n : speeds) {
       if (!out.quiet) std::cerr << "emb campbell: " << n << " rpm\r" << std::flush;
-      scene::SpeedChange change;
+      scene::SceneAtSpeed change;
       mbs::OperatingPointModes m = CalcSceneModesAtSpeed(
           scene_file, n, body, pool_factor * fmax_hz, trust_geo, frame == "stationary", &change);
       rotor = m.system.body(m.rotor_body).name;
-      motion = change.motion;
-      nominal = change.nominal_rpm;
+      for (const std::string& c : change.changes)
+        if (c.rfind("motion", 0) == 0) motion = c.substr(0, c.find(':'));
+      nominal = change.reference_rpm;
       points.push_back(std::move(m.point));
     }
     if (!out.quiet) std::cerr << "\n";

@@ -26,6 +26,10 @@ void RegisterSpectrumCommand(CLI::App& app);
 /// `emb campbell SCENE --rpm ...` (Campbell diagram) and `emb tvd-tune SCENE` (issue 17).
 void RegisterCampbellCommand(CLI::App& app);
 void RegisterTvdTuneCommand(CLI::App& app);
+/// `emb sweep SCENE --rpm LIST` (speed sweep to steady state, orders) and `emb runup RESULTS`
+/// (order tracking of a speed ramp), issue 17.
+void RegisterSweepCommand(CLI::App& app);
+void RegisterRunUpCommand(CLI::App& app);
 /// `emb compare PART` (beam vs CMS vs 3-D FE, issue 6).
 void RegisterCompareCommand(CLI::App& app);
 

@@ -10,6 +10,8 @@
 //   emb spectrum RESULTS      engine-order spectrum of a results channel over whole cycles
 //   emb campbell SCENE        Campbell diagram: installed frequencies vs speed, crossings
 //   emb tvd-tune SCENE        Den Hartog tuning of a torsional damper ring
+//   emb sweep SCENE --rpm ..  speed sweep: every speed to steady state, engine orders per point
+//   emb runup RESULTS         order tracking of a speed-ramp run
 // Sample run:
 //   emb modes meshes/crankshaft_i4.geo --modes 20 -o crank_modes.h5
 // Inputs: a gmsh geometry (.geo with parameters, .step, .brep) or a mesh (.msh, .unv, .bdf).
@@ -99,6 +101,8 @@ int main(int argc, char** argv) {
   RegisterCampbellCommand(app);
   RegisterTvdTuneCommand(app);
   RegisterCompareCommand(app);
+  RegisterSweepCommand(app);
+  RegisterRunUpCommand(app);
   // Name an unknown subcommand (CLI11 would only say that one is required).
   if (argc > 1 && argv[1][0] != '-') {
     bool known = false;

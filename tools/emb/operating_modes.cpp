@@ -10,7 +10,7 @@ namespace emb::cli {
 mbs::OperatingPointModes CalcSceneModesAtSpeed(const std::string& scene_file, double rpm,
                                                const std::string& rotor, double pool_hz,
                                                bool trust_geo, bool stationary_frame,
-                                               scene::SpeedChange* change) {
+                                               scene::SceneAtSpeed* change) {
   scene::SceneOptions options;
   options.trust_geo_scripts = trust_geo;
   const scene::Scene sc = scene::LoadSceneAtSpeed(scene_file, rpm, options, change);

@@ -1,13 +1,13 @@
 #pragma once
 /// @file
 /// Shared by `emb campbell` and `emb tvd-tune`: a scene's linearised modes at one steady
-/// speed (scene/operating_point.h, mbs::CalcOperatingPointModes) and the --rpm list.
+/// speed (scene/scene_at_speed.h, mbs::CalcOperatingPointModes) and the --rpm list.
 
 #include <Eigen/Dense>
 #include <string>
 
 #include "libemb/mbs/analysis/campbell.h"
-#include "libemb/scene/operating_point.h"
+#include "libemb/scene/scene_at_speed.h"
 
 namespace emb::cli {
 
@@ -16,7 +16,7 @@ namespace emb::cli {
 mbs::OperatingPointModes CalcSceneModesAtSpeed(const std::string& scene_file, double rpm,
                                                const std::string& rotor, double pool_hz,
                                                bool trust_geo, bool stationary_frame,
-                                               scene::SpeedChange* change);
+                                               scene::SceneAtSpeed* change);
 
 /// "1000:6500:250" (first:last:step, last included when on the grid) or "1000,2000,3000".
 /// @throws InputError naming `option` for an empty or malformed list, a value <= 0 or not

@@ -69,7 +69,7 @@ struct OperatingPointModes {
 };
 
 /// The steady-motion approximation a Campbell diagram linearises about: the model (set to its
-/// speed by the caller, e.g. scene/operating_point.h) prepared as a dynamic run would be
+/// speed by the caller, e.g. scene/scene_at_speed.h) prepared as a dynamic run would be
 /// (PrepareRun: assembled at t_start, velocities projected, flexible bodies on their
 /// quasi-static deformation under the initial loads and centrifugal field if
 /// settings.elastic_start asks), but with every flexible body on its full basis (the
