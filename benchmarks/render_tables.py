@@ -476,8 +476,10 @@ def inline4_beam(res):
 
 def driveline_clonk(res):
     doc = res("driveline_clonk")
-    names = {"ref": "CMS to 5 kHz, rtol 1e-8 (reference)", "cms5k": "CMS to 5 kHz",
-             "cms2k": "CMS to 2 kHz (scene default)", "cms2k_rtol1e-5": "CMS to 2 kHz",
+    names = {"ref": "CMS installed basis 5 kHz, rtol 1e-8 (reference)",
+             "inst5k": "CMS installed basis 5 kHz (scene default)",
+             "inst2k": "CMS installed basis 2 kHz", "full": "CMS, every free-free mode of the file",
+             "ff5k": "CMS, free-free modes to 5 kHz", "ff2k": "CMS, free-free modes to 2 kHz",
              "beam": "beam tube"}
     rows = []
     for r in doc["data"]["runs"]:
@@ -658,6 +660,24 @@ def runup_vs_sweep(res):
     return lines, [doc]
 
 
+def order_cuts_inline4(res):
+    doc = res("order_cuts_inline4")
+    d = doc["data"]["runs"][0] if isinstance(doc["data"].get("runs"), list) else doc["data"]["inline4"]
+    rows = [[num(r["order"], "g"), num(r["sweep_peak_rpm"], ".0f"), num(r["sweep_peak_hz"], ".0f"),
+             num(r.get("campbell_rpm"), ".0f"), num(r.get("campbell_mode_hz"), ".0f"),
+             num(r.get("campbell_error_pct"), "+.1f"), num(r["sweep_peak_amplitude"] * 1e3, ".3f"),
+             num(r["tvd_peak_amplitude"] * 1e3, ".3f"), num(r["tvd_peak_ratio"], ".2f")]
+            for r in d["orders"]]
+    lines = table(["order", "sweep peak [rpm]", "sweep peak × order [Hz]", "Campbell crossing [rpm]",
+                   "Campbell torsion mode [Hz]", "Campbell vs sweep %", "peak torsion [mrad]",
+                   "with TVD: peak [mrad]", "with / without"], rows)
+    unsettled = {k: v for k, v in d["points_not_converged"].items() if v}
+    if unsettled:
+        lines[-1] += " Points without a steady state within max_cycles: " + "; ".join(
+            f"{k}: {', '.join(str(int(x)) for x in v)} rpm" for k, v in unsettled.items()) + "."
+    return lines, [doc]
+
+
 TABLES = {f.__name__: f for f in [
     campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
@@ -666,7 +686,8 @@ TABLES = {f.__name__: f for f in [
     stress_recovery_1cyl_fatigue, stress_recovery_i4, stress_recovery_i4_fatigue,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
     inline4_beam, inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule,
-    mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state, sweep_inline4, runup_vs_sweep]}
+    mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state, sweep_inline4, runup_vs_sweep,
+    order_cuts_inline4]}
 
 
 def render_table(name, res):
