@@ -84,8 +84,22 @@ def commit():
     return sha, bool(dirty)
 
 
+def relative_paths(x):
+    """`x` with the checkout's absolute path left out of every string (results name files
+    relative to the repository, never this machine's paths)."""
+    if isinstance(x, str):
+        return x.replace(ROOT + os.sep, "")
+    if isinstance(x, dict):
+        return {k: relative_paths(v) for k, v in x.items()}
+    if isinstance(x, list):
+        return [relative_paths(v) for v in x]
+    return x
+
+
 def write_result(name, command, data):
-    """benchmarks/results/NAME.json with the metadata around `data` (atomically)."""
+    """benchmarks/results/NAME.json with the metadata around `data` (atomically; paths inside
+    the checkout made relative to it)."""
+    data = relative_paths(data)
     sha, dirty = commit()
     doc = {"benchmark": name, "commit": sha, "dirty": dirty,
            "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
