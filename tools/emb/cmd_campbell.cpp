@@ -1,6 +1,8 @@
 // emb campbell SCENE --rpm 1000:6500:250: the Campbell diagram of a scene (issue 17). At each
 // speed the scene is set to that speed (libemb/scene/scene_at_speed.h), linearised about its
-// assembled start with multipliers from the acceleration level (tools/emb/operating_modes.h),
+// assembled start with multipliers from the acceleration level (tools/emb/operating_modes.h)
+// and, by default, averaged over --angles angles of a revolution (--linearise cycle-average,
+// libemb/mbs/analysis/cycle_average.h; the spread of the frozen frequencies is reported),
 // its installed natural frequencies computed (first-order form, gyroscopic terms in the
 // stationary frame: forward/backward whirl split), the modes followed across speeds by MAC,
 // classified torsion/bending/axial on the rotor body, and the engine-order crossings listed.
@@ -52,6 +54,8 @@ struct CampbellCommand {
     CheckNumber("--min-mac", min_mac, NumberRange::Closed(0.0, 1.0));
     EMB_THROW_IF(frame != "stationary" && frame != "body",
                  "--frame: expected 'stationary' or 'body', got '" << frame << "'");
+    EMB_THROW_IF(linearise != "frozen" && linearise != "cycle-average",
+                 "--linearise: expected 'cycle-average' or 'frozen', got '" << linearise << "'");
     EMB_THROW_IF(num_angles < 1 || num_angles > 720,
                  "--angles: expected 1 to 720 angles per revolution, got " << num_angles);
     mbs::OperatingPointOptions lin;
