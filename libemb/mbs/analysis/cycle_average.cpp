@@ -65,7 +65,8 @@ std::vector<int> SelectCommonRows(const System& sys, const Eigen::MatrixXd& Z, i
 
 Eigen::MatrixXd Rows(const Eigen::MatrixXd& A, const std::vector<int>& rows) {
   Eigen::MatrixXd out(static_cast<Eigen::Index>(rows.size()), A.cols());
-  for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = A.row(rows[i]);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    out.row(static_cast<Eigen::Index>(i)) = A.row(rows[i]);
   return out;
 }
 
@@ -77,11 +78,24 @@ Eigen::MatrixXd CommonTransform(const Eigen::MatrixXd& Z, const std::vector<int>
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled);
   const double smin = svd.singularValues().size() ? svd.singularValues().minCoeff() : 1.0;
   if (!(smin > kCommonRowsConditioning))
-    EMB_THROW(NumericalError, "cycle average: the coordinates chosen at the start angle are "
-                              "dependent at t = "
-                                  << t << " s (smallest singular value " << smin
-                                  << "); use the frozen linearisation");
+    EMB_THROW(NumericalError,
+              "cycle average: the coordinates chosen at the start angle are "
+              "dependent at t = "
+                  << t << " s (smallest singular value " << smin
+                  << "); use the frozen linearisation");
   return Z * ZS.inverse();
+}
+
+// x with the entries `dependent` set to the least-squares solution d of C_D d = rhs
+// (C_D: the columns `dependent` of C), the others kept.
+void SolveDependent(const Eigen::MatrixXd& C, const std::vector<int>& dependent,
+                    const Eigen::VectorXd& rhs, Eigen::VectorXd* x) {
+  Eigen::MatrixXd CD(C.rows(), static_cast<Eigen::Index>(dependent.size()));
+  for (std::size_t j = 0; j < dependent.size(); ++j)
+    CD.col(static_cast<Eigen::Index>(j)) = C.col(dependent[j]);
+  const Eigen::VectorXd d = CD.completeOrthogonalDecomposition().solve(rhs);
+  for (std::size_t j = 0; j < dependent.size(); ++j)
+    (*x)[dependent[j]] = d[static_cast<Eigen::Index>(j)];
 }
 
 // The dependent velocities for independent rows v_S (others solved from C v + Phi_t = 0).
@@ -90,11 +104,7 @@ Eigen::VectorXd Velocities(const ConstraintEval& c, const std::vector<int>& comm
   const Eigen::MatrixXd C(c.jacobian);
   Eigen::VectorXd v = Eigen::VectorXd::Zero(nv);
   for (std::size_t i = 0; i < common.size(); ++i) v[common[i]] = vS[static_cast<Eigen::Index>(i)];
-  Eigen::MatrixXd CD(C.rows(), static_cast<Eigen::Index>(dependent.size()));
-  for (std::size_t j = 0; j < dependent.size(); ++j) CD.col(static_cast<Eigen::Index>(j)) = C.col(dependent[j]);
-  const Eigen::VectorXd rhs = -(C * v + c.phi_t);
-  const Eigen::VectorXd vD = CD.completeOrthogonalDecomposition().solve(rhs);
-  for (std::size_t j = 0; j < dependent.size(); ++j) v[dependent[j]] = vD[static_cast<Eigen::Index>(j)];
+  SolveDependent(C, dependent, -(C * v + c.phi_t), &v);
   return v;
 }
 
@@ -118,22 +128,19 @@ void March(const System& sys, const std::vector<int>& common, const std::vector<
       c = CalcConstraints(sys, CalcBodyKinematics(sys, *q, no_v), *t, ws);
       residual = c.phi.size() ? c.phi.cwiseAbs().maxCoeff() : 0.0;
       if (residual <= AssemblyOptions{}.tolerance) break;
-      const Eigen::MatrixXd C(c.jacobian);
-      Eigen::MatrixXd CD(C.rows(), static_cast<Eigen::Index>(dependent.size()));
-      for (std::size_t j = 0; j < dependent.size(); ++j) CD.col(static_cast<Eigen::Index>(j)) = C.col(dependent[j]);
-      const Eigen::VectorXd dD = CD.completeOrthogonalDecomposition().solve(-c.phi);
       Eigen::VectorXd dx = Eigen::VectorXd::Zero(nv);
-      for (std::size_t j = 0; j < dependent.size(); ++j) dx[dependent[j]] = dD[static_cast<Eigen::Index>(j)];
+      SolveDependent(Eigen::MatrixXd(c.jacobian), dependent, -c.phi, &dx);
       *q = ApplyDisplacement(sys, *q, dx);
     }
     if (!(residual <= AssemblyOptions{}.tolerance))
-      EMB_THROW(NumericalError, "cycle average: the bodies do not re-assemble about the rotor at t = "
-                                    << *t << " s (residual " << residual << ")");
+      EMB_THROW(NumericalError,
+                "cycle average: the bodies do not re-assemble about the rotor at t = "
+                    << *t << " s (residual " << residual << ")");
   }
 }
 
 struct Reduced {
-  Eigen::MatrixXd M, G, K;  // n x n in y (frozen: T' = 0)
+  Eigen::MatrixXd M, G, K;            // n x n in y (frozen: T' = 0)
   Eigen::MatrixXd T, M_full, G_full;  // v = T y; M, G - M W (nv x nv)
 };
 
@@ -158,7 +165,8 @@ Reduced ReducedAt(const PreparedRun& run, double t, const std::vector<int>& comm
   const System& sys = run.system;
   ConstraintWorkspace ws(sys);
   const AccelerationSolution acc = SolveAccelerations(sys, run.q0, run.v0, t, &ws);
-  const LinearizedModel lin = CalcLinearizedModel(sys, run.q0, run.v0, t, acc.lambda, &ws, acc.vdot);
+  const LinearizedModel lin =
+      CalcLinearizedModel(sys, run.q0, run.v0, t, acc.lambda, &ws, acc.vdot);
   const Eigen::MatrixXd T = CommonTransform(lin.Z, common, t);
   Eigen::MatrixXd G = lin.G;
   if (stationary_frame) G -= lin.M * CalcFrameRotationRate(sys, run.q0, run.v0);
@@ -174,7 +182,8 @@ const char* Name(Linearisation l) {
 Linearisation ParseLinearisation(const std::string& name) {
   if (name == "frozen") return Linearisation::kFrozen;
   if (name == "cycle-average") return Linearisation::kCycleAverage;
-  EMB_THROW(InputError, "linearisation: expected 'frozen' or 'cycle-average', got '" << name << "'");
+  EMB_THROW(InputError,
+            "linearisation: expected 'frozen' or 'cycle-average', got '" << name << "'");
 }
 
 CycleAveragedModes CalcCycleAveragedModes(const System& system, AnalysisSettings settings,
@@ -202,7 +211,12 @@ CycleAveragedModes CalcCycleAveragedModes(const System& system, AnalysisSettings
   const Reduced ref = ReducedAt(start, t0, common, stationary_frame);
 
   const Eigen::Index n = static_cast<Eigen::Index>(common.size());
-  Reduced mean{Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n), {}, {}, {}};
+  Reduced mean{Eigen::MatrixXd::Zero(n, n),
+               Eigen::MatrixXd::Zero(n, n),
+               Eigen::MatrixXd::Zero(n, n),
+               {},
+               {},
+               {}};
   std::vector<Reduced> at;
   // March backwards from the start to the negative angles, forwards to the others.
   Eigen::VectorXd q_back = start.q0, q_fwd = start.q0;
@@ -224,7 +238,8 @@ CycleAveragedModes CalcCycleAveragedModes(const System& system, AnalysisSettings
     }
   for (int k = 0; k < num_angles; ++k) {
     ConstraintWorkspace ws(sys);
-    const ConstraintEval c = CalcConstraints(sys, CalcBodyKinematics(sys, states[k], Eigen::VectorXd()), times[k], &ws);
+    const ConstraintEval c =
+        CalcConstraints(sys, CalcBodyKinematics(sys, states[k], Eigen::VectorXd()), times[k], &ws);
     const Eigen::VectorXd v = Velocities(c, common, dependent, vS, sys.layout().nv());
     AnalysisSettings s = settings;
     s.t_start = times[k];
@@ -262,7 +277,8 @@ CycleAveragedModes CalcCycleAveragedModes(const System& system, AnalysisSettings
   for (const Reduced& r : at) {
     const RotatingModes frozen = CalcReducedRotatingModes(r.M, r.G, r.K, I, mean.M, 2 * pool_hz);
     if (frozen.frequencies_hz.size() == 0 || nm == 0) continue;
-    const std::vector<int> match = MatchModes(CalcMac(avg_y.shapes, frozen.shapes, mean.M), kSpreadMinMac);
+    const std::vector<int> match =
+        MatchModes(CalcMac(avg_y.shapes, frozen.shapes, mean.M), kSpreadMinMac);
     for (Eigen::Index j = 0; j < nm; ++j) {
       if (match[j] < 0) continue;
       const double f = frozen.frequencies_hz[match[j]];

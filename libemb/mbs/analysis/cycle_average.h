@@ -62,7 +62,7 @@ struct CycleAveragedModes {
   /// Mbar) among the frozen modes of the N angles [Hz]; NaN if no angle has a partner.
   Eigen::VectorXd hz_min, hz_max;
   int num_angles{0};
-  double period_s{0.0};         ///< one rotor revolution [s]
+  double period_s{0.0};          ///< one rotor revolution [s]
   std::vector<int> coordinates;  ///< S: the rows of v used as y
 };
 

@@ -11,6 +11,8 @@
 // of the exact kinematics; the frozen linearisation at top dead centre sees J(0) = Jc + Ir
 // (r / l)^2 + mr (r (l - a) / l)^2 (the piston does not move).
 
+#include "libemb/mbs/analysis/cycle_average.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,7 +21,6 @@
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/analysis/campbell.h"
-#include "libemb/mbs/analysis/cycle_average.h"
 #include "libemb/mbs/forces/bushing.h"
 
 namespace emb {
@@ -29,29 +30,21 @@ using Eigen::Matrix3d;
 using Eigen::Vector3d;
 constexpr double kPi = std::numbers::pi;
 
-constexpr double kJc = 0.05;                  // [kg m^2] crank (and flywheel) about x
-constexpr double kR = 0.05, kL = 0.15;         // [m] crank radius, rod length (lambda = 1/3)
-constexpr double kMp = 2.0;                   // [kg] piston
-constexpr double kMr = 1.0, kA = kL / 3;      // [kg] rod, [m] its centre of mass from the big end
-constexpr double kIr = 4e-3;                  // [kg m^2] rod about its centre of mass (x)
-constexpr double kTorsion = 2e4;              // [N m / rad] crank to hub
+constexpr double kJc = 0.05;              // [kg m^2] crank (and flywheel) about x
+constexpr double kR = 0.05, kL = 0.15;    // [m] crank radius, rod length (lambda = 1/3)
+constexpr double kMp = 2.0;               // [kg] piston
+constexpr double kMr = 1.0, kA = kL / 3;  // [kg] rod, [m] its centre of mass from the big end
+constexpr double kIr = 4e-3;              // [kg m^2] rod about its centre of mass (x)
+constexpr double kTorsion = 2e4;          // [N m / rad] crank to hub
 
-// Marker axes with z along world x (the crank axis).
-Matrix3d AxisX() {
+// Marker axes (columns in W) with z along `z` and x along `x` (unit, orthogonal).
+Matrix3d Axes(const Vector3d& z, const Vector3d& x) {
   Matrix3d R;
-  R.col(2) = Vector3d::UnitX();
-  R.col(0) = Vector3d::UnitY();
-  R.col(1) = R.col(2).cross(R.col(0));
+  R << x, z.cross(x), z;
   return R;
 }
-// Marker axes with z along world z (the bore).
-Matrix3d AxisZ() {
-  Matrix3d R;
-  R.col(2) = Vector3d::UnitZ();
-  R.col(0) = Vector3d::UnitX();
-  R.col(1) = R.col(2).cross(R.col(0));
-  return R;
-}
+const Matrix3d kAxisX = Axes(Vector3d::UnitX(), Vector3d::UnitY());  // crank axis
+const Matrix3d kAxisZ = Axes(Vector3d::UnitZ(), Vector3d::UnitX());  // bore
 
 mbs::RigidBody Body(const std::string& name, double mass, const Vector3d& inertia,
                     const Vector3d& p, const Vector3d& v, double omega_x) {
@@ -78,15 +71,15 @@ mbs::System SliderCrank(double rpm) {
                    Vector3d(0, -W * kR * (1 - kA / kL), 0), w_rod));
   sys.AddBody(Body("piston", kMp, Vector3d(2e-3, 2e-3, 2e-3), Vector3d(0, 0, kR + kL),
                    Vector3d::Zero(), 0.0));
-  sys.AddMarker("hub_axis", "hub", Vector3d::Zero(), AxisX());
-  sys.AddMarker("frame_axis", "ground", Vector3d::Zero(), AxisX());
-  sys.AddMarker("crank_axis", "crank", Vector3d::Zero(), AxisX());
-  sys.AddMarker("crank_pin", "crank", Vector3d(0, 0, kR), AxisX());
-  sys.AddMarker("rod_big", "rod", Vector3d(0, 0, -kA), AxisX());
-  sys.AddMarker("rod_small", "rod", Vector3d(0, 0, kL - kA), AxisX());
-  sys.AddMarker("piston_pin", "piston", Vector3d::Zero(), AxisX());
-  sys.AddMarker("piston_axis", "piston", Vector3d::Zero(), AxisZ());
-  sys.AddMarker("bore", "ground", Vector3d::Zero(), AxisZ());
+  sys.AddMarker("hub_axis", "hub", Vector3d::Zero(), kAxisX);
+  sys.AddMarker("frame_axis", "ground", Vector3d::Zero(), kAxisX);
+  sys.AddMarker("crank_axis", "crank", Vector3d::Zero(), kAxisX);
+  sys.AddMarker("crank_pin", "crank", Vector3d(0, 0, kR), kAxisX);
+  sys.AddMarker("rod_big", "rod", Vector3d(0, 0, -kA), kAxisX);
+  sys.AddMarker("rod_small", "rod", Vector3d(0, 0, kL - kA), kAxisX);
+  sys.AddMarker("piston_pin", "piston", Vector3d::Zero(), kAxisX);
+  sys.AddMarker("piston_axis", "piston", Vector3d::Zero(), kAxisZ);
+  sys.AddMarker("bore", "ground", Vector3d::Zero(), kAxisZ);
   sys.AddJoint("hub_bearing", mbs::JointType::kRevolute, "hub_axis", "frame_axis");
   sys.AddMotion("drive", "hub_bearing", mbs::JointCoordinate::kRotation,
                 mbs::TimeFunction::Polynomial({0.0, W}));
