@@ -667,17 +667,21 @@ def order_cuts_inline4(res):
     doc = res("order_cuts_inline4")
     d = doc["data"]["runs"][0] if isinstance(doc["data"].get("runs"), list) else doc["data"]["inline4"]
     rows = [[num(r["order"], "g"), num(r["sweep_peak_rpm"], ".0f"), num(r["sweep_peak_hz"], ".0f"),
-             num(r.get("campbell_rpm"), ".0f"), num(r.get("campbell_mode_hz"), ".0f"),
+             (f'{num(r["campbell_rpm"], ".0f")} (mode {r["campbell_mode_index"]}, '
+              f'{num(r["campbell_mode_hz"], ".0f")} Hz, torsion {num(r["campbell_torsion_share"], ".2f")})'
+              if "campbell_rpm" in r else "–"),
              num(r.get("campbell_error_pct"), "+.1f"),
-             (f'{num(r["nearest_rpm"], ".0f")} (mode {r["nearest_mode_index"]}, {r["nearest_class"]}, '
-              f'{num(r["nearest_mode_hz"], ".0f")} Hz)' if "nearest_rpm" in r else "–"),
-             num(r.get("nearest_error_pct"), "+.1f"), num(r["sweep_peak_amplitude"] * 1e3, ".3f"),
+             str(len(r.get("candidates", []))),
+             (f'{num(r["torsion_class_rpm"], ".0f")} ({num(r["torsion_class_mode_hz"], ".0f")} Hz)'
+              if "torsion_class_rpm" in r else "–"),
+             num(r.get("torsion_class_error_pct"), "+.1f"), num(r["sweep_peak_amplitude"] * 1e3, ".3f"),
              num(r["tvd_peak_amplitude"] * 1e3, ".3f"), num(r["tvd_peak_ratio"], ".2f")]
             for r in d["orders"]]
-    lines = table(["order", "sweep peak [rpm]", "sweep peak × order [Hz]", "Campbell crossing [rpm]",
-                   "Campbell torsion mode [Hz]", "Campbell vs sweep %",
-                   "nearest Campbell crossing, any mode [rpm]", "nearest vs sweep %", "peak torsion [mrad]",
-                   "with TVD: peak [mrad]", "with / without"], rows)
+    lines = table(["order", "sweep peak [rpm]", "sweep peak × order [Hz]",
+                   f"Campbell crossing of a torsion-carrying mode (share ≥ {d.get('torsion_share_min', 0.25):g}) [rpm]",
+                   "Campbell vs sweep %", "such crossings of the order",
+                   "crossing of the lowest torsion-class mode [rpm]", "that vs sweep %",
+                   "peak torsion [mrad]", "with TVD: peak [mrad]", "with / without"], rows)
     lin = d.get("campbell_linearisation")
     if lin:
         lines += ["", (f"Campbell linearisation: {lin}; largest spread of a tracked mode's frozen frequency "

@@ -39,9 +39,14 @@ TEST_F(EmbCampbellCli, CrossingsAsJsonAndTheDiagramFile) {
   for (const auto& c : doc["crossings"]) {
     EXPECT_TRUE(c.contains("order") && c.contains("rpm") && c.contains("mode_hz") &&
                 c.contains("mode_index") && c.contains("class"));
+    // The energy split of the crossed mode: fractions summing to one.
+    constexpr double kSplitRoundOff = 1e-9;
+    EXPECT_NEAR(c["torsion"].get<double>() + c["bending"].get<double>() + c["axial"].get<double>(),
+                1.0, kSplitRoundOff) << c;
     if (c["class"] == "torsion" && c["order"] == 2.0) {
       ++torsion;
       EXPECT_NEAR(c["rpm"].get<double>(), 3600.0, kSceneDigits * 3600.0);
+      EXPECT_GT(c["torsion"].get<double>(), 0.5) << c;  // the class is the largest share
     }
   }
   EXPECT_EQ(torsion, 1);

@@ -110,6 +110,22 @@ def check_sweep_plots(work):
     check(r.returncode == 0, "sweep_plots.py exit code 0: " + r.stderr)
     for png in ("sw_waterfall_crank_speed_T_z.png", "sw_order_cuts_crank_speed_T_z.png"):
         check(is_png(os.path.join(work, "sweep_plots", png)), "sweep_plots.py wrote a PNG " + png)
+    # Crossings of modes the torsion channel sees: by torsion share, whatever their class.
+    with open(os.path.join(work, "shares.json"), "w") as f:
+        json.dump({"crossings": [
+            {"order": 1.0, "rpm": 2500, "mode_hz": 41.7, "class": "torsion", "torsion": 0.9},
+            {"order": 2.0, "rpm": 2600, "mode_hz": 86.7, "class": "bending", "torsion": 0.48},
+            {"order": 2.0, "rpm": 2900, "mode_hz": 96.7, "class": "bending", "torsion": 0.02}]}, f)
+    sys.path.insert(0, os.path.dirname(SWEEP_PLOTS))
+    import sweep_plots
+    kept = sweep_plots.read_critical(os.path.join(work, "shares.json"), None, 0.25)
+    check([c[1] for c in kept] == [2500.0, 2600.0],
+          "--critical-min-torsion keeps the coupled mode, drops the pure bending one (%r)" % kept)
+    r = run(plots + ["--critical", "shares.json", "--critical-min-torsion", "0.25"], work)
+    check(r.returncode == 0, "sweep_plots.py --critical-min-torsion exit code 0: " + r.stderr)
+    r = run(plots + ["--critical", "campbell.json", "--critical-min-torsion", "0.25"], work)
+    check(r.returncode != 0 and "torsion" in r.stderr,
+          "crossings without torsion shares: non-zero exit (%s)" % r.stderr.strip()[-200:])
     r = run(plots + ["--critical", "bad.json"], work)
     check(r.returncode != 0 and "bad.json" in r.stderr, "bad critical speeds: non-zero exit "
           "naming the file (%s)" % r.stderr.strip()[-200:])

@@ -103,12 +103,15 @@ struct CampbellCommand {
                     std::string(mbs::Name(t.whirl)), t.hz.front(), last, lo, spread});
     }
     Table cross("Critical speeds: engine order k crosses mode f at rpm = 60 f / k",
-                {"order", "rpm", "mode_hz", "mode_index", "class", "whirl"},
-                {"order", "rpm", "f [Hz]", "mode", "class", "whirl"});
+                {"order", "rpm", "mode_hz", "mode_index", "class", "whirl", "torsion",
+                 "bending", "axial"},
+                {"order", "rpm", "f [Hz]", "mode", "class", "whirl", "torsion", "bending",
+                 "axial"});
     cross.set_precision(6);
     for (const auto& c : crossings)
       cross.AddRow({c.order, c.rpm, c.mode_hz, static_cast<long long>(c.mode_index),
-                    std::string(mbs::Name(c.kind)), std::string(mbs::Name(c.whirl))});
+                    std::string(mbs::Name(c.kind)), std::string(mbs::Name(c.whirl)), c.torsion,
+                    c.bending, c.axial});
     Summary s("Campbell diagram of " + scene_file);
     s.Add("rotor", "rotor body (classification)", rotor);
     s.Add("speed_motion", "speed set through motion", motion + " (" + FormatNumber(nominal, 6) +

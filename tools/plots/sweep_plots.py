@@ -2,7 +2,8 @@
 """Plots of a speed sweep (emb sweep) or a run-up (emb runup): a waterfall and order cuts.
 
     /usr/bin/python3 tools/plots/sweep_plots.py SWEEP.h5 [--channel nose_torsion.rz]
-        [--orders 0.5,1,2,4] [--critical campbell.json [--critical-class torsion]]
+        [--orders 0.5,1,2,4] [--critical campbell.json [--critical-class torsion]
+        [--critical-min-torsion 0.25]]
         [--scale 57.29578 --unit deg]
         [--out DIR]
 
@@ -18,7 +19,9 @@ reach their steady state are drawn hollow).
 first). Each critical speed of an order that is cut is a dashed vertical line in that order's
 colour, and on the waterfall a cross at (rpm, order). `emb campbell --json` (or its -o file)
 holds them as "crossings" with a "class" per mode (torsion, bending, axial): --critical-class
-keeps the ones of that class (e.g. torsion for the nose torsion).
+keeps the ones of that class (e.g. torsion for the nose torsion); --critical-min-torsion S
+keeps the crossings of modes with a torsion share >= S (the crossing's "torsion"), which a
+torsion channel sees even when their class is bending (coupled modes).
 --channel defaults to the first channel whose name starts with "nose_torsion", else the first.
 --scale multiplies the amplitudes (e.g. 57.29578 for rad -> deg) and --unit labels them.
 """
@@ -65,7 +68,7 @@ def find_critical(doc):
     return None
 
 
-def read_critical(path, kind=None):
+def read_critical(path, kind=None, min_torsion=None):
     try:
         with open(path) as f:
             doc = json.load(f)
@@ -81,6 +84,12 @@ def read_critical(path, kind=None):
     for c in found:
         if kind is not None and c.get("class") != kind:
             continue
+        if min_torsion is not None:
+            if "torsion" not in c:
+                sys.exit("sweep_plots.py: error: --critical-min-torsion: '%s' has crossings "
+                         "without a \"torsion\" share (emb campbell writes them)" % path)
+            if float(c["torsion"]) < min_torsion:
+                continue
         try:
             out.append((float(c["order"]), float(c["rpm"]), c.get("mode_hz"), c.get("label")))
         except (TypeError, ValueError):
@@ -96,6 +105,8 @@ def main():
     p.add_argument("--orders", help="orders to cut, comma-separated (default: the 6 largest)")
     p.add_argument("--critical", help="JSON of critical speeds (see the file's doc)")
     p.add_argument("--critical-class", help="keep only critical speeds of this mode class")
+    p.add_argument("--critical-min-torsion", type=float,
+                   help="keep only critical speeds of modes with at least this torsion share")
     p.add_argument("--scale", type=float, default=1.0)
     p.add_argument("--unit", default="")
     p.add_argument("--out", default=".")
@@ -114,7 +125,8 @@ def main():
     if not ok.any():
         sys.exit("sweep_plots.py: error: every point of %s failed; nothing to plot" % a.sweep)
     rpm = s["rpm"]
-    critical = read_critical(a.critical, a.critical_class) if a.critical else []
+    critical = (read_critical(a.critical, a.critical_class, a.critical_min_torsion)
+                if a.critical else [])
     if a.orders:
         try:
             cut = [float(x) for x in a.orders.split(",")]

@@ -278,6 +278,9 @@ std::vector<Crossing> FindCrossings(const CampbellDiagram& d, const std::vector<
         const ModeSplit& s = t.splits[x < 0.5 ? i : i + 1];
         c.kind = s.kind;
         c.whirl = s.whirl;
+        c.torsion = s.torsion;
+        c.bending = s.bending;
+        c.axial = s.axial;
         out.push_back(c);
       }
     }

@@ -140,6 +140,9 @@ struct Crossing {
   int mode_index{0};    ///< TrackedMode::index
   ModeClass kind{ModeClass::kTorsion};
   Whirl whirl{Whirl::kNone};
+  /// The mode's energy split at the grid speed nearest the crossing (ClassifyMode): a mode of
+  /// mixed class (e.g. torsion 0.48, bending 0.51) resonates in a torsion channel too.
+  double torsion{0.0}, bending{0.0}, axial{0.0};
 };
 
 /// All crossings of `orders` (> 0) with the tracked modes inside the speed range, by rpm.
