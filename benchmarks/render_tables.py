@@ -145,7 +145,7 @@ def slepc_modes(res):
         s = r["seconds"]
         flops = r["factor_flops"]
         rows.append([r["name"], r["ranks"], r["dofs"], f"{r['nnz_factor'] / 1e6:.1f}M",
-                     num(flops / 1e9 if flops else None, ".0f"), num(s.get("factorisation"), ".2f"),
+                     sig3(flops / 1e9 if flops else None), num(s.get("factorisation"), ".2f"),
                      num(s.get("eigen-solve"), ".2f"), num(s["total"], ".1f"),
                      num(r["wall_s"], ".1f"), num(r["factor_peak_mb"], ".0f"),
                      num(r["rank0_peak_memory_mb"], ".0f"), r["solves"],

@@ -3,7 +3,7 @@
 # shift-invert over MPI) against the default CHOLMOD path, on the inline-4 crankshaft.
 # Usage (repository root, after tools/setup.sh build; timings are quoted, so alone):
 #   flock -x /tmp/emb-cpu.lock bash benchmarks/slepc_modes.sh [H] [MODES]
-# H: mesh size [m] (default: the .geo's default mesh); MODES: 20. The mesh is made once
+# H: mesh size [m] or "default" (the .geo's own mesh, the default); MODES: 20. The mesh is made once
 # (emb mesh --save-mesh) and every run and rank reads that .msh. Runs: cholmod (the default
 # path, its own threads on all cores), slepc on 1 and on 2 MPI ranks with one thread per rank
 # (OMP_NUM_THREADS=OPENBLAS_NUM_THREADS=1: a rank per core). Raw outputs out/bench/slepc_*;
@@ -14,6 +14,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 emb=${EMB_EXE:-$root/build/tools/emb/emb}
 command="bash benchmarks/slepc_modes.sh $*"
 h=${1:-}
+[ "$h" = default ] && h=""
 modes=${2:-20}
 out="$root/out/bench"
 mkdir -p "$out"
