@@ -12,6 +12,9 @@ namespace emb::distributed {
 [[noreturn]] void ThrowPetscError(PetscErrorCode code, const char* call, const char* file,
                                   int line);
 
+/// Throws NumericalError naming `call` if an MPI call returned `code` != MPI_SUCCESS.
+void CheckMpi(int code, const char* call);
+
 }  // namespace emb::distributed
 
 /// Calls a PETSc/SLEPc function and throws emb::NumericalError if it fails.

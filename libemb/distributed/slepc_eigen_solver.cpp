@@ -31,10 +31,6 @@ using OwnedVec = Owned<Vec, VecDestroy>;
 using OwnedEps = Owned<EPS, EPSDestroy>;
 using OwnedScatter = Owned<VecScatter, VecScatterDestroy>;
 
-void CheckMpi(int code, const char* call) {
-  if (code != MPI_SUCCESS) EMB_THROW(NumericalError, "MPI error " << code << " from " << call);
-}
-
 // The rows [begin, end) this rank owns in PETSc's default split of n rows.
 std::pair<PetscInt, PetscInt> OwnedRows(PetscInt n) {
   PetscInt local = PETSC_DECIDE, global = n;

@@ -40,6 +40,10 @@ void ThrowPetscError(PetscErrorCode code, const char* call, const char* file, in
   throw NumericalError(s.str());
 }
 
+void CheckMpi(int code, const char* call) {
+  if (code != MPI_SUCCESS) EMB_THROW(NumericalError, "MPI error " << code << " from " << call);
+}
+
 SlepcSession::SlepcSession() {
   EMB_CHECK(!g_session_alive);
   // argv as PETSc sees it: no emb options (CLI11 owns those), PETSc's signal handler off.
@@ -54,8 +58,8 @@ SlepcSession::SlepcSession() {
                                   << " (is MPI usable here? under mpirun, every rank needs it)");
   g_session_alive = true;
   EMB_PETSC_CALL(PetscPushErrorHandler(RecordError, nullptr));
-  EMB_PETSC_CALL(MPI_Comm_rank(PETSC_COMM_WORLD, &rank_) == MPI_SUCCESS ? 0 : PETSC_ERR_MPI);
-  EMB_PETSC_CALL(MPI_Comm_size(PETSC_COMM_WORLD, &size_) == MPI_SUCCESS ? 0 : PETSC_ERR_MPI);
+  CheckMpi(MPI_Comm_rank(PETSC_COMM_WORLD, &rank_), "MPI_Comm_rank");
+  CheckMpi(MPI_Comm_size(PETSC_COMM_WORLD, &size_), "MPI_Comm_size");
 }
 
 SlepcSession::~SlepcSession() {

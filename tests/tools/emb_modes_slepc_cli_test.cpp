@@ -50,15 +50,16 @@ class ModesSlepcCli : public emb::test::CliTest {
     return "'" + std::string(EMB_EXE) + "' " + args;
   }
 #endif
-  // The SLEPc run on `ranks` against the default run: same modes, same rigid count.
-  void ExpectSameModes(const std::string& args, int ranks, int rigid) {
+  // The SLEPc run on `ranks` against the default run: same modes, same rigid count, and
+  // MUMPS's inertia of K − σM counts `below_shift` eigenvalues below σ.
+  void ExpectSameModes(const std::string& args, int ranks, int rigid, int below_shift = 0) {
     const nlohmann::json ref = Json(args + " --no-output", 0);
     const nlohmann::json dist = Json(args + " --no-output --backend slepc", ranks);
     ASSERT_FALSE(ref.is_null());
     ASSERT_FALSE(dist.is_null());
     EXPECT_EQ(dist["summary"]["status"], "success");
     EXPECT_EQ(dist["summary"]["mpi_ranks"], ranks);
-    EXPECT_EQ(dist["summary"]["negative_pivots"], 0) << "shift below the spectrum";
+    EXPECT_EQ(dist["summary"]["negative_pivots"], below_shift);
     EXPECT_EQ(ref["summary"]["rigid_modes"], rigid);
     EXPECT_EQ(dist["summary"]["rigid_modes"], rigid);
     ASSERT_EQ(dist["modes"].size(), ref["modes"].size());
@@ -91,6 +92,12 @@ TEST_F(ModesSlepcCli, ConstraintEliminationMatchesCholmod) {
   ExpectSameModes("modes bar.geo --modes 8 --rbe2 x0:x,y,z", 2, 3);
 }
 
+TEST_F(ModesSlepcCli, InteriorShiftMatchesCholmodAndCountsTheModesBelowIt) {
+  // σ at 2 kHz, between the first bending pair (1.03 kHz) and the second (2.70 kHz): K − σM is
+  // indefinite (LDLᵀ, not Cholesky), and its inertia counts the 6 rigid modes and the pair.
+  ExpectSameModes("modes bar.geo --modes 4 --shift-hz 2000", 2, 0, 8);
+}
+
 TEST_F(ModesSlepcCli, RankZeroWritesTheModesFile) {
   const emb::test::CliResult r =
       RunCommand(Command("modes bar.geo --modes 8 --backend slepc -q -o out.h5", 2));
@@ -103,6 +110,17 @@ TEST_F(ModesSlepcCli, RankZeroWritesTheModesFile) {
   for (const auto& e : std::filesystem::directory_iterator(dir_))
     files += e.path().filename().string().rfind("out.", 0) == 0;
   EXPECT_EQ(files, 2);
+}
+
+TEST_F(ModesSlepcCli, TooFewConvergedPairsAreANumericalFailureOnEveryRank) {
+  // One restart of a 14-vector basis cannot converge 13 pairs (12 + the probe for a
+  // degenerate partner): exit code 3 (numerical), the count in the message, no file.
+  const emb::test::CliResult r = RunCommand(Command(
+      "modes bar.geo --modes 12 --backend slepc --max-restarts 1 --ncv 14 -q -o out.h5", 2));
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("SLEPc Krylov-Schur converged"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("of 13 eigenpairs"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "out.h5"));
 }
 
 TEST_F(ModesSlepcCli, OptionsItDoesNotUseAreRefused) {
