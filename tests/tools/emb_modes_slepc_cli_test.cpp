@@ -100,8 +100,10 @@ TEST_F(ModesSlepcCli, InteriorShiftMatchesCholmodAndCountsTheModesBelowIt) {
 
 TEST_F(ModesSlepcCli, RankZeroWritesTheModesFile) {
   const emb::test::CliResult r =
-      RunCommand(Command("modes bar.geo --modes 8 --backend slepc -q -o out.h5", 2));
+      RunCommand(Command("modes bar.geo --modes 8 --backend slepc -q -o out.h5 --save-mesh "
+                         "bar.msh", 2));
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "bar.msh"));
   EXPECT_TRUE(std::filesystem::exists(dir_ / "out.h5"));
   EXPECT_TRUE(std::filesystem::exists(dir_ / "out.xdmf"));
   // One table on stdout (rank 0's), nothing left behind by the others.

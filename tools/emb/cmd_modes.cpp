@@ -70,17 +70,19 @@ struct ModesCommand {
     const SupportSpecs specs = supports.Specs();
     // Every output checked and locked before any work.
     const std::string h5_path = no_output || !root ? "" : OutputPath();
+    MeshingOptions meshing = part.Meshing();
+    if (!root) meshing.save_as.clear();  // --save-mesh: rank 0 writes it
     const std::string xdmf_path =
         h5_path.empty() || no_xdmf
             ? ""
             : std::filesystem::path(h5_path).replace_extension(".xdmf").string();
     const PreparedOutputs outputs(
-        {{h5_path, "-o"}, {xdmf_path, "the .xdmf beside -o"}, {part.save_mesh, "--save-mesh"}},
+        {{h5_path, "-o"}, {xdmf_path, "the .xdmf beside -o"}, {meshing.save_as, "--save-mesh"}},
         {part.file});
     const ProgressFn progress = MakeProgressDisplay(out.quiet || !root);
     PhaseTimes times;
     Stopwatch sw;
-    const Mesh mesh = ReadMesh(part.file, part.Meshing(), progress);
+    const Mesh mesh = ReadMesh(part.file, meshing, progress);
     times.Add("mesh", sw.seconds());
 
     ModalOptions mo;
