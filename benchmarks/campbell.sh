@@ -5,9 +5,10 @@
 # campbell: `emb campbell tools/scenes/inline4.yaml --rpm 1000:6500:250` (full body-file basis,
 #   108 elastic coordinates), its CPU time, the installed torsion and bending modes and their
 #   crossings -> benchmarks/results/campbell_inline4.json.
-# angles: the same linearisation at 3000 rpm started at crank angles 0, 22.5, ..., 90 degrees
-#   (analysis.t_start): how much the frozen-angle approximation of the steady motion depends
-#   on the angle -> benchmarks/results/campbell_angles.json.
+# angles: the inline-4 at 3000 rpm linearised frozen at its start angle and cycle-averaged over
+#   4, 8, 16, 32 angles of a revolution (emb campbell --linearise, --angles): convergence in the
+#   number of angles and the spread of the frozen frequencies over them
+#   -> benchmarks/results/campbell_angles.json.
 # tvd: the inline-4 without and with the damper (tools/scenes/inline4_tvd.yaml) run to the
 #   periodic steady state at TVD_RPM (default 3000, the scenes' speed; another speed is set the
 #   way `emb campbell` sets it: the rpm motion, the initial velocities and the steady-state
@@ -87,24 +88,30 @@ PY
 fi
 
 if [ "$what" = angles ] || [ "$what" = all ]; then
-  labels=()
-  for deg in 0 22.5 45 67.5 90; do
-    t=$(/usr/bin/python3 -c "print($deg / (6 * 3000))")
-    f=$(scene inline4 3000 "$t")
-    "$emb" campbell "$f" --rpm 3000 --fmax 800 -q --json -o "$dir/angle_$deg.json" > /dev/null
-    labels+=("deg$deg=$dir/angle_$deg.json")
+  f=$(scene inline4 3000)
+  "$emb" campbell "$f" --rpm 3000 --fmax 800 --linearise frozen -q --json -o "$dir/angles_frozen.json" > /dev/null
+  for n in 4 8 16 32; do
+    "$emb" campbell "$f" --rpm 3000 --fmax 800 --angles $n -q --json -o "$dir/angles_$n.json" > /dev/null
   done
   /usr/bin/python3 - "$dir" <<'PY'
 import json, sys
 d = sys.argv[1]
 rows = []
-for deg in ("0", "22.5", "45", "67.5", "90"):
-    g = json.load(open(f"{d}/angle_{deg}.json"))
+for name, n in (("frozen", 1), ("n4", 4), ("n8", 8), ("n16", 16), ("n32", 32)):
+    g = json.load(open(f"{d}/angles_{'frozen' if n == 1 else n}.json"))
     modes = [{"class": m["class"], "hz": m["hz"][0], "decay": m["decay"][0],
-              "torsion": m["torsion"][0]} for m in g["modes"]]
-    tors = [m["hz"] for m in modes if m["class"] == "torsion"]
-    rows.append({"name": "deg" + deg, "angle_deg": float(deg), "modes": modes,
-                 "torsion_hz": tors, "min_decay": min(m["decay"] for m in modes)})
+              "hz_angle_min": m["hz_angle_min"][0], "hz_angle_max": m["hz_angle_max"][0]}
+             for m in g["modes"]]
+    tors = [m for m in modes if m["class"] == "torsion"]
+    rows.append({"name": name, "linearisation": g["linearisation"], "num_angles": n,
+                 "modes": modes, "torsion_hz": [m["hz"] for m in tors],
+                 "torsion_angle_min_hz": [m["hz_angle_min"] for m in tors],
+                 "torsion_angle_max_hz": [m["hz_angle_max"] for m in tors],
+                 "min_decay": min(m["decay"] for m in modes)})
+# Convergence: the change of every tracked frequency when the angles double.
+for a, b in zip(rows[1:], rows[2:]):
+    b["max_change_pct_vs_half"] = max(abs(y["hz"] / x["hz"] - 1) * 100
+                                      for x, y in zip(a["modes"], b["modes"]))
 json.dump({"rpm": 3000.0, "fmax_hz": 800.0, "angles": rows}, open(f"{d}/angles_record.json", "w"), indent=1)
 PY
   /usr/bin/python3 "$root/benchmarks/record.py" merge campbell_angles inline4="$dir/angles_record.json" \

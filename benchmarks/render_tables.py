@@ -631,11 +631,14 @@ def tvd_inline4(res, name="tvd_inline4"):
 def campbell_angles(res):
     doc = res("campbell_angles")
     r = doc["data"]["runs"][0]
-    rows = [[num(a["angle_deg"]), ", ".join(sig3(f) for f in a["torsion_hz"]),
+    rows = [[a["linearisation"], num(a["num_angles"], "d"), ", ".join(sig3(f) for f in a["torsion_hz"]),
+             ", ".join(f"{sig3(lo)}–{sig3(hi)}" for lo, hi in
+                       zip(a["torsion_angle_min_hz"], a["torsion_angle_max_hz"]) if lo is not None) or "–",
              ", ".join("%s %s" % (m["class"], sig3(m["hz"])) for m in a["modes"]),
-             num(a["min_decay"], ".3g")] for a in r["angles"]]
-    return table(["start crank angle [deg]", "torsion modes [Hz]",
-                  "all modes below 800 Hz", "smallest decay [1/s]"], rows), [doc]
+             num(a.get("max_change_pct_vs_half"), ".2g"), num(a["min_decay"], ".3g")] for a in r["angles"]]
+    return table(["linearisation", "angles", "torsion modes [Hz]",
+                  "torsion: frozen range over the angles [Hz]", "all modes below 800 Hz",
+                  "largest change vs half the angles [%]", "smallest decay [1/s]"], rows), [doc]
 
 
 def tvd_inline4_3250(res):
@@ -683,12 +686,20 @@ def order_cuts_inline4(res):
     d = doc["data"]["runs"][0] if isinstance(doc["data"].get("runs"), list) else doc["data"]["inline4"]
     rows = [[num(r["order"], "g"), num(r["sweep_peak_rpm"], ".0f"), num(r["sweep_peak_hz"], ".0f"),
              num(r.get("campbell_rpm"), ".0f"), num(r.get("campbell_mode_hz"), ".0f"),
-             num(r.get("campbell_error_pct"), "+.1f"), num(r["sweep_peak_amplitude"] * 1e3, ".3f"),
+             num(r.get("campbell_error_pct"), "+.1f"),
+             (f'{num(r["nearest_rpm"], ".0f")} (mode {r["nearest_mode_index"]}, {r["nearest_class"]}, '
+              f'{num(r["nearest_mode_hz"], ".0f")} Hz)' if "nearest_rpm" in r else "–"),
+             num(r.get("nearest_error_pct"), "+.1f"), num(r["sweep_peak_amplitude"] * 1e3, ".3f"),
              num(r["tvd_peak_amplitude"] * 1e3, ".3f"), num(r["tvd_peak_ratio"], ".2f")]
             for r in d["orders"]]
     lines = table(["order", "sweep peak [rpm]", "sweep peak × order [Hz]", "Campbell crossing [rpm]",
-                   "Campbell torsion mode [Hz]", "Campbell vs sweep %", "peak torsion [mrad]",
+                   "Campbell torsion mode [Hz]", "Campbell vs sweep %",
+                   "nearest Campbell crossing, any mode [rpm]", "nearest vs sweep %", "peak torsion [mrad]",
                    "with TVD: peak [mrad]", "with / without"], rows)
+    lin = d.get("campbell_linearisation")
+    if lin:
+        lines += ["", (f"Campbell linearisation: {lin}; largest spread of a tracked mode's frozen frequency "
+                      f"over the angles {num(d.get('campbell_max_angle_spread_pct'), '.1f')} %.")]
     unsettled = {k: v for k, v in d["points_not_converged"].items() if v}
     if unsettled:
         lines[-1] += " Points without a steady state within max_cycles: " + "; ".join(

@@ -297,12 +297,8 @@ ReducedBody ReadBodyFile(const std::string& path, BodyFileInfo* info_out) {
     EMB_THROW_IF(!h5.Exists(o), "body file '" << path << "': missing " << o);
     return h5.ReadStringAttribute(o, n);
   };
-  std::string format;
-  try {
-    format = h5.ReadStringAttribute("/", "format");
-  } catch (const InputError&) {
-    format = "(none)";
-  }
+  const std::string format =
+      h5.HasAttribute("/", "format") ? h5.ReadStringAttribute("/", "format") : "(none)";
   EMB_THROW_IF(format != kBodyFormat, "body file '" << path << "': expected format '" << kBodyFormat
                                                     << "', got '" << format << "'");
   BodyFileInfo info;

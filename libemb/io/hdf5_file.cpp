@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "libemb/common/error.h"
+#include "libemb/io/h5_strings.h"
 
 namespace emb {
 namespace {
@@ -57,12 +58,8 @@ Handle LinkCreateProps() {
   return lcpl;
 }
 
-Handle VarString() {
-  Handle t(H5Tcopy(H5T_C_S1), H5Tclose);
-  H5Tset_size(t.get(), H5T_VARIABLE);
-  H5Tset_cset(t.get(), H5T_CSET_UTF8);
-  return t;
-}
+// A fixed-length string type (libemb/io/h5_strings.h says why never variable-length).
+Handle FixedString(std::size_t bytes) { return Handle(h5::NewFixedStringType(bytes), H5Tclose); }
 
 }  // namespace
 
@@ -70,7 +67,8 @@ H5File::H5File(const std::string& path, Mode mode) : path_(path) {
   SilenceHdf5();
   if (mode == Mode::kCreate) {
     Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
-    id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), H5P_DEFAULT);
+    Handle fapl(h5::NewFileAccessProps(), H5Pclose);
+    id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
     EMB_THROW_IF(id_ < 0, "HDF5 file '" << path << "' cannot be created (directory? permissions?)");
   } else {
     std::error_code ec;
@@ -203,10 +201,10 @@ void H5File::Write(const std::string& path, const std::uint64_t* data,
   WriteRaw(id_, path_, path, H5T_STD_U64LE, H5T_NATIVE_UINT64, data, dims);
 }
 void H5File::Write(const std::string& path, const std::vector<std::string>& strings) {
-  std::vector<const char*> ptrs;
-  for (const auto& s : strings) ptrs.push_back(s.c_str());
-  Handle t = VarString();
-  WriteRaw(id_, path_, path, t.get(), t.get(), ptrs.data(), {strings.size()});
+  std::size_t width = 0;
+  const std::vector<char> packed = h5::PackFixed(strings, &width);
+  Handle t = FixedString(width);
+  WriteRaw(id_, path_, path, t.get(), t.get(), packed.data(), {strings.size()});
 }
 
 namespace {
@@ -260,9 +258,10 @@ Handle OpenAttribute(hid_t file, const std::string& fname, const std::string& ob
 
 void H5File::SetAttribute(const std::string& object, const std::string& name,
                           const std::string& value) {
-  Handle t = VarString();
-  const char* p = value.c_str();
-  WriteAttribute(id_, path_, object, name, t.get(), &p);
+  std::size_t width = 0;
+  const std::vector<char> packed = h5::PackFixed({value}, &width);
+  Handle t = FixedString(width);
+  WriteAttribute(id_, path_, object, name, t.get(), packed.data());
 }
 void H5File::SetAttribute(const std::string& object, const std::string& name, double value) {
   WriteAttribute(id_, path_, object, name, H5T_NATIVE_DOUBLE, &value);
@@ -338,39 +337,24 @@ std::vector<int> H5File::ReadInts(const std::string& path) const {
 }
 std::vector<std::string> H5File::ReadStrings(const std::string& path) const {
   const auto shape = Shape(path);
-  Handle t = VarString();
-  std::vector<char*> ptrs = ReadAll<char*>(id_, path_, path, t.get(), shape, file_size_);
-  std::vector<std::string> out;
-  for (char* p : ptrs) out.emplace_back(p ? p : "");
-  if (!ptrs.empty()) {
-    Handle ds(H5Dopen2(id_, path.c_str(), H5P_DEFAULT), H5Dclose);
-    Handle space(H5Dget_space(ds.get()), H5Sclose);
-    H5Dvlen_reclaim(t.get(), space.get(), H5P_DEFAULT, ptrs.data());
-  }
-  return out;
+  Handle ds(CheckId(H5Dopen2(id_, path.c_str(), H5P_DEFAULT), path_, "opening " + path),
+            H5Dclose);
+  Handle ftype(H5Dget_type(ds.get()), H5Tclose);
+  const std::size_t n = h5::FixedStringWidth(ftype.get(), path_, "dataset " + path);
+  std::vector<std::uint64_t> bytes_shape = shape;
+  bytes_shape.push_back(n);  // ReadAll bounds the total against the file's size
+  Handle t(h5::NewReadStringType(ftype.get()), H5Tclose);
+  return h5::UnpackFixed(ReadAll<char>(id_, path_, path, t.get(), bytes_shape, file_size_), n);
 }
 
 std::string H5File::ReadStringAttribute(const std::string& object, const std::string& name) const {
   Handle attr = OpenAttribute(id_, path_, object, name);
   Handle ftype(H5Aget_type(attr.get()), H5Tclose);
-  EMB_THROW_IF(H5Tget_class(ftype.get()) != H5T_STRING,
-               "HDF5 file '" << path_ << "': attribute " << object << "@" << name
-                             << ": expected a string");
-  if (H5Tis_variable_str(ftype.get()) > 0) {
-    Handle t = VarString();
-    char* p = nullptr;
-    Check(H5Aread(attr.get(), t.get(), &p), path_, "reading attribute " + name);
-    std::string s = p ? p : "";
-    H5free_memory(p);
-    return s;
-  }
-  const size_t n = H5Tget_size(ftype.get());
-  EMB_THROW_IF(n > (std::size_t{1} << 24), "HDF5 file '" << path_ << "': attribute " << object
-                                                         << "@" << name << " is a string of "
-                                                         << n << " bytes; expected < 16 MiB");
-  std::string s(n, '\0');
-  Check(H5Aread(attr.get(), ftype.get(), s.data()), path_, "reading attribute " + name);
-  return s.substr(0, s.find('\0'));
+  const std::size_t n = h5::FixedStringWidth(ftype.get(), path_, "attribute " + object + "@" + name);
+  Handle t(h5::NewReadStringType(ftype.get()), H5Tclose);
+  std::vector<char> bytes(n, '\0');
+  Check(H5Aread(attr.get(), t.get(), bytes.data()), path_, "reading attribute " + name);
+  return h5::UnpackFixed(bytes, n).front();
 }
 
 double H5File::ReadDoubleAttribute(const std::string& object, const std::string& name) const {

@@ -3,6 +3,7 @@
 #include <hdf5.h>
 
 #include "libemb/common/error.h"
+#include "libemb/io/h5_strings.h"
 
 namespace emb {
 namespace {
@@ -37,7 +38,8 @@ hid_t LinkProps() {
 
 TimeSeriesFile::TimeSeriesFile(const std::string& path) : path_(path) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  Closer fapl{h5::NewFileAccessProps(), H5Pclose};
+  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.id);
   EMB_THROW_IF(file_ < 0, "HDF5 file '" << path << "' cannot be created (directory? permissions?)");
 }
 
@@ -147,9 +149,9 @@ void TimeSeriesFile::WriteDoubles(const std::string& path, const std::vector<dou
 
 void TimeSeriesFile::WriteStrings(const std::string& path,
                                   const std::vector<std::string>& strings) {
-  Closer type{H5Tcopy(H5T_C_S1), H5Tclose};
-  H5Tset_size(type.id, H5T_VARIABLE);
-  H5Tset_cset(type.id, H5T_CSET_UTF8);
+  std::size_t width = 0;
+  const std::vector<char> packed = h5::PackFixed(strings, &width);
+  Closer type{h5::NewFixedStringType(width), H5Tclose};
   const hsize_t n = strings.size();
   Closer space{CheckId(H5Screate_simple(1, &n, nullptr), path_, "dataspace " + path), H5Sclose};
   Closer lcpl{LinkProps(), H5Pclose};
@@ -157,10 +159,8 @@ void TimeSeriesFile::WriteStrings(const std::string& path,
       CheckId(H5Dcreate2(file_, path.c_str(), type.id, space.id, lcpl.id, H5P_DEFAULT, H5P_DEFAULT),
               path_, "creating dataset " + path),
       H5Dclose};
-  std::vector<const char*> ptrs;
-  for (const auto& s : strings) ptrs.push_back(s.c_str());
-  if (!ptrs.empty())
-    Check(H5Dwrite(ds.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()), path_,
+  if (!strings.empty())
+    Check(H5Dwrite(ds.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, packed.data()), path_,
           "writing " + path);
 }
 
@@ -181,11 +181,10 @@ void WriteAttr(hid_t file, const std::string& fname, const std::string& object,
 void TimeSeriesFile::SetAttribute(const std::string& object, const std::string& name,
                                   const std::string& value) {
   EnsureGroup(object);
-  Closer type{H5Tcopy(H5T_C_S1), H5Tclose};
-  H5Tset_size(type.id, H5T_VARIABLE);
-  H5Tset_cset(type.id, H5T_CSET_UTF8);
-  const char* p = value.c_str();
-  WriteAttr(file_, path_, object, name, type.id, &p);
+  std::size_t width = 0;
+  const std::vector<char> packed = h5::PackFixed({value}, &width);
+  Closer type{h5::NewFixedStringType(width), H5Tclose};
+  WriteAttr(file_, path_, object, name, type.id, packed.data());
 }
 
 void TimeSeriesFile::SetAttribute(const std::string& object, const std::string& name,

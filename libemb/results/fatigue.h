@@ -12,6 +12,12 @@
 ///   Miner:     D = sum_i n_i / N(sigma_ar,i)   over the rainflow cycles (rainflow.h), with
 ///              sigma_a = range / 2; failure at D = 1.
 /// Amplitudes below the endurance limit (if given, > 0) do no damage. Units: Pa.
+///
+/// Or an S–N curve as points (N_k, S_k) from a test or a standard, N increasing and S
+/// decreasing: log N is interpolated linearly in log S between points (each segment a
+/// Basquin law); above S_1 the first segment is extrapolated; below the last point's
+/// amplitude S_n (the curve's knee) no damage, unless an endurance_limit below S_n is given,
+/// which then ends the last segment extrapolated.
 
 #include <string>
 #include <vector>
@@ -20,10 +26,17 @@
 
 namespace emb::scene {
 
-/// A Basquin S–N curve with the data of the Goodman correction.
+/// One point of a tabulated S–N curve.
+struct SnPoint {
+  double cycles{0.0};     ///< N to failure, > 0
+  double amplitude{0.0};  ///< fully reversed stress amplitude S [Pa] > 0
+};
+
+/// A Basquin or tabulated S–N curve with the data of the Goodman correction.
 struct SnCurve {
-  double fatigue_strength_coefficient{0.0};  ///< sigma_f' [Pa] > 0
-  double exponent{0.0};                      ///< Basquin b, in (−1, 0)
+  double fatigue_strength_coefficient{0.0};  ///< sigma_f' [Pa] > 0 (Basquin; unused with points)
+  double exponent{0.0};                      ///< Basquin b, in (−1, 0) (unused with points)
+  std::vector<SnPoint> points;               ///< tabulated curve; empty: Basquin
   double ultimate_strength{0.0};             ///< sigma_u [Pa] > 0 (Goodman)
   double endurance_limit{0.0};               ///< [Pa] >= 0; 0: none
   /// @throws InputError naming `what` and the parameter for a value out of range.

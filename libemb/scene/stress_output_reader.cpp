@@ -37,8 +37,23 @@ SnCurve ReadSn(MapReader& f, StressOutput* out) {
                f.what() << " measure: expected max_principal or signed_von_mises, got '"
                         << out->measure << "'");
   SnCurve sn;
-  sn.fatigue_strength_coefficient = f.GetDouble("fatigue_strength_coefficient");
-  sn.exponent = f.GetDouble("exponent");
+  if (const YAML::Node pts = f.Optional("sn_points")) {
+    EMB_THROW_IF(f.Has("fatigue_strength_coefficient") || f.Has("exponent"),
+                 f.what() << ": expected either sn_points or fatigue_strength_coefficient and "
+                             "exponent (Basquin), not both");
+    EMB_THROW_IF(!pts.IsSequence(), f.what() << " sn_points: expected a list of [cycles, "
+                                                "amplitude Pa] pairs");
+    for (const YAML::Node& p : pts) {
+      const std::vector<double> v = AsDoubles(p, f.file(), f.what() + " sn_points");
+      EMB_THROW_IF(v.size() != 2, f.what() << " sn_points: expected [cycles, amplitude Pa] "
+                                              "pairs, got a list of "
+                                           << v.size());
+      sn.points.push_back({v[0], v[1]});
+    }
+  } else {
+    sn.fatigue_strength_coefficient = f.GetDouble("fatigue_strength_coefficient");
+    sn.exponent = f.GetDouble("exponent");
+  }
   sn.ultimate_strength = f.GetDouble("ultimate_strength");
   sn.endurance_limit = f.GetDouble("endurance_limit", 0.0);
   sn.Validate(f.what());

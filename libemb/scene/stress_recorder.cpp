@@ -20,8 +20,16 @@ namespace {
 // A sample within this of a field time takes it (output times are sums of steps).
 constexpr double kFieldTimeSlack = 1e-9;  // [s]
 
-double Measure(const std::string& measure, const Voigt6& s) {
-  return measure == "signed_von_mises" ? SignedVonMises(s) : PrincipalStresses(s)[0];
+// The fatigue measure of every node of group g (fe/stress_measures.h, SignedVonMises).
+Eigen::VectorXd Measure(const std::string& measure, const mbs::StressSnapshot& snap,
+                        std::size_t g) {
+  if (measure != "signed_von_mises") return snap.max_principal[g];
+  const Eigen::VectorXd& p1 = snap.max_principal[g];
+  const Eigen::VectorXd& p3 = snap.min_principal[g];
+  Eigen::VectorXd m = snap.von_mises[g];
+  for (Eigen::Index i = 0; i < m.size(); ++i)
+    if (std::abs(p1[i]) < std::abs(p3[i])) m[i] = -m[i];
+  return m;
 }
 
 }  // namespace
@@ -68,17 +76,16 @@ void StressRecorder::Add(const mbs::Sample& s) {
     if (!out.fatigue && !take_field[static_cast<std::size_t>(g.output)]) continue;
     const mbs::StressProbe& probe = *probes_[static_cast<std::size_t>(g.output)];
     const int b = probe.body();
-    const Eigen::VectorXd eta = s.q.segment(L.elastic_q(b), L.num_elastic(b));
-    const Eigen::MatrixXd sigma = probe.GroupStresses(g.index, eta);
+    const mbs::StressSnapshot& snap =
+        probe.Evaluate(s.q.segment(L.elastic_q(b), L.num_elastic(b)));
+    const auto gi = static_cast<std::size_t>(g.index);
     if (out.fatigue) {
-      Eigen::VectorXd m(sigma.cols());
-      for (Eigen::Index i = 0; i < sigma.cols(); ++i) m[i] = Measure(out.measure, sigma.col(i));
       g.t.push_back(s.t);
-      g.measure.push_back(std::move(m));
+      g.measure.push_back(Measure(out.measure, snap, gi));
     }
     if (take_field[static_cast<std::size_t>(g.output)]) {
       g.field_t.push_back(s.t);
-      g.field.push_back(sigma);
+      g.field.push_back(snap.sigma[gi]);
     }
   }
 }

@@ -2,8 +2,10 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/io/atomic_file.h"
@@ -33,10 +35,21 @@ std::string TextDigest(const std::string& text) {
   return buf;
 }
 
-std::string SweepDigest(const std::string& scene_text, const std::vector<double>& sweep_rpm,
-                        const OrderSettings& settings) {
+std::string FileDigest(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  EMB_THROW_IF(!in, "file '" << path << "' cannot be read (for the sweep's digest)");
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  EMB_THROW_IF(in.bad(), "file '" << path << "': read error (for the sweep's digest)");
+  return TextDigest(bytes.str());
+}
+
+std::string SweepDigest(const std::string& scene_text, const std::vector<std::string>& inputs,
+                        const std::vector<double>& sweep_rpm, const OrderSettings& settings) {
   std::string s = std::string(kSweepFormat) + " " + std::to_string(kSweepFormatVersion) + "\n" +
-                  TextDigest(scene_text) + "\nrpm";
+                  TextDigest(scene_text) + "\ninputs";
+  for (const auto& f : inputs) s += " " + FileDigest(f);
+  s += "\nrpm";
   for (double n : sweep_rpm) s += " " + Text(n);
   s += "\nchannels";
   for (const auto& c : settings.channels) s += " " + c;

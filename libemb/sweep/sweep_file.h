@@ -3,8 +3,9 @@
 /// The results of a speed sweep (HDF5, format "emb-sweep", version 1, SI units; n points,
 /// nc channels, no orders; row-major as h5py shows it), written atomically (temp + rename):
 ///   /                 attrs format, version, emb_version, scene (path), scene_digest (FNV-1a
-///                     of the scene text), digest (SweepDigest: scene text, all speeds,
-///                     channels, orders, samples per cycle), shard_index, shard_count,
+///                     of the scene text), digest (SweepDigest: scene text, the files it
+///                     reads, all speeds, channels, orders, samples per cycle), shard_index,
+///                     shard_count,
 ///                     samples_per_cycle, phase_reference, num_converged,
 ///                     num_not_converged, num_failed, num_run_up_windows
 ///   /sweep_rpm        [N] every speed of the whole sweep (all shards) [rpm]
@@ -45,10 +46,13 @@ struct SweepData {
 
 /// FNV-1a 64-bit digest of `text` as 16 hex digits.
 std::string TextDigest(const std::string& text);
-/// The digest of a sweep definition: the scene text, every speed, the channels, the orders
-/// and the samples per cycle (not the body files the scene reads: keep those fixed).
-std::string SweepDigest(const std::string& scene_text, const std::vector<double>& sweep_rpm,
-                        const OrderSettings& settings);
+/// FNV-1a digest of a file's bytes. @throws InputError if it cannot be read.
+std::string FileDigest(const std::string& path);
+/// The digest of a sweep definition: the scene text, the bytes of every other file the scene
+/// reads (`inputs`: body files, geometries; a re-reduced body file makes another sweep), every
+/// speed, the channels, the orders and the samples per cycle.
+std::string SweepDigest(const std::string& scene_text, const std::vector<std::string>& inputs,
+                        const std::vector<double>& sweep_rpm, const OrderSettings& settings);
 
 /// Writes `data` to `path` atomically. @throws InputError if it cannot be written.
 void WriteSweepFile(const std::string& path, const SweepData& data);

@@ -840,6 +840,8 @@ BODY_MUTATIONS = {
     "K_ints": (["replace", "/reduced/K", [12, 12], "i4"], []),
     "K_strings": (["replace", "/reduced/K", [4], "str"], ["/reduced/K"]),
     "names_fixed_strings": (["replace", "/interfaces/names", [2], "str"], []),
+    "names_vlen_strings": (["replace", "/interfaces/names", [2], "vlen_str"], ["variable-length string", "/interfaces/names"]),
+    "format_vlen_string": (["set_attr", "/", "format", "emb.body", "vlen_str"], ["variable-length string", "format"]),
     "huge_K": (["huge", "/reduced/K"], ["/reduced/K"]),
     "huge_X": (["huge", "/modes/X"], ["/modes/X"]),
     "stiffening_wrong_count": (["replace", "/geometric_stiffness/centrifugal", [5, 4, 4], "f8"], ["centrifugal"]),

@@ -115,7 +115,9 @@ def h5_mutate(path, op, args, ctx, case_dir):
                 f[obj].attrs[name] = np.float64(float(value))
             elif kind == "int":
                 f[obj].attrs[name] = np.int64(int(value))
-            elif kind == "str":
+            elif kind == "str":  # fixed-length, as emb writes strings
+                f[obj].attrs[name] = np.bytes_(str(value).encode())
+            elif kind == "vlen_str":  # h5py's default for str: refused by emb
                 f[obj].attrs[name] = str(value)
             elif kind == "array":
                 f[obj].attrs[name] = np.full(int(value), 1.0)
@@ -138,6 +140,9 @@ def h5_mutate(path, op, args, ctx, case_dir):
             del f[name]
             if dtype == "str":
                 f.create_dataset(name, data=np.array([b"x"] * int(np.prod(shape)), dtype="S1"))
+            elif dtype == "vlen_str":
+                f.create_dataset(name, data=["x"] * int(np.prod(shape)),
+                                 dtype=h5py.string_dtype())
             else:
                 f.create_dataset(name, data=np.zeros(shape, dtype=dtype))
         elif op == "huge":  # claims far more values than the file holds

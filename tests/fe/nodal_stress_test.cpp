@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <numeric>
 
@@ -126,6 +128,38 @@ TEST(StressMeasures, ClosedForms) {
   EXPECT_NEAR(PrincipalStresses(rotated)[0], s, 1e-9 * s);
   EXPECT_NEAR(SignedVonMises(uniaxial), s, kRoundOff * s);
   EXPECT_NEAR(SignedVonMises(-uniaxial), -s, kRoundOff * s);
+}
+
+// The closed-form principal stresses against Eigen's iterative (QL) symmetric eigensolver on
+// random states, and on states with repeated principal stresses, where the trigonometric
+// formula is least accurate (the error of the repeated pair grows like sqrt(eps) |sigma|).
+TEST(StressMeasures, PrincipalStressesMatchAnIterativeEigensolver) {
+  constexpr double kRandomTolerance = 1e-12;    // relative to |sigma|: simple roots
+  constexpr double kRepeatedTolerance = 1e-7;   // relative to |sigma|: ~ sqrt(eps)
+  auto check = [](const Voigt6& v, double tolerance) {
+    Eigen::Matrix3d m;
+    m << v[0], v[3], v[5], v[3], v[1], v[4], v[5], v[4], v[2];
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> qr(m, Eigen::EigenvaluesOnly);
+    const Eigen::Vector3d ref = qr.eigenvalues().reverse(), got = PrincipalStresses(v);
+    const double scale = std::max(m.norm(), 1.0);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i], ref[i], tolerance * scale) << v.transpose();
+    EXPECT_GE(got[0], got[1]);
+    EXPECT_GE(got[1], got[2]);
+  };
+  std::srand(17);
+  for (int k = 0; k < 2000; ++k) check(Voigt6::Random() * 3e8, kRandomTolerance);
+  const double s = 2.5e8;
+  Voigt6 v;
+  v << s, 0, 0, 0, 0, 0;  // uniaxial tension: s, 0, 0
+  check(v, kRepeatedTolerance);
+  check(-v, kRepeatedTolerance);  // compression: 0, 0, -s
+  v << s, s, s, 0, 0, 0;  // hydrostatic: the isotropic branch
+  check(v, kRepeatedTolerance);
+  v << 0.3 * s, 0.3 * s, -s, 0.3 * s, 0, 0;  // shear in xy on a z load: 0.6 s, 0, -s
+  check(v, kRepeatedTolerance);
+  v << s / 2, s / 2, s, s / 2, 0, 0;  // s n n^T + s e_z e_z^T: s, s, 0
+  check(v, kRepeatedTolerance);
+  check(Voigt6::Zero(), kRepeatedTolerance);
 }
 
 }  // namespace

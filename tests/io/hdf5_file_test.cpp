@@ -3,11 +3,13 @@
 #include "libemb/io/hdf5_file.h"
 
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 
 #include "libemb/common/error.h"
@@ -73,6 +75,61 @@ TEST(H5File, ErrorsNameTheFileAndObject) {
   EXPECT_THROW(H5File(text.string(), H5File::Mode::kRead), InputError);
   fs::remove(text);
   EXPECT_THROW(H5File(TempPath("missing.h5").string(), H5File::Mode::kRead), InputError);
+}
+
+// Strings are stored fixed-length: any content (UTF-8, long, empty) comes back unchanged.
+TEST(H5File, StringsOfAnyLengthRoundTrip) {
+  const fs::path p = TempPath("strings.h5");
+  const std::string long_text(100000, 'k');
+  const std::vector<std::string> names{"", "Kurbelwelle_\xC3\xBC", long_text, "a"};
+  {
+    H5File f(p.string(), H5File::Mode::kCreate);
+    f.Write("/names", names);
+    f.Write("/none", std::vector<std::string>{});
+    f.SetAttribute("/", "empty", std::string());
+    f.SetAttribute("/", "long", long_text);
+  }
+  H5File f(p.string(), H5File::Mode::kRead);
+  EXPECT_EQ(f.ReadStrings("/names"), names);
+  EXPECT_TRUE(f.ReadStrings("/none").empty());
+  EXPECT_EQ(f.ReadStringAttribute("/", "empty"), "");
+  EXPECT_EQ(f.ReadStringAttribute("/", "long"), long_text);
+  fs::remove(p);
+}
+
+// Variable-length strings (h5py's default) are refused by name, before HDF5's global-heap
+// reader runs: a damaged heap drove that reader into an endless loop (fuzz_body_file).
+TEST(H5File, VariableLengthStringsAreRefusedByName) {
+  const fs::path p = TempPath("vlen.h5");
+  {
+    const hid_t file = H5Fcreate(p.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    const hid_t scalar = H5Screate(H5S_SCALAR);
+    const char* text = "emb.body";
+    const hid_t attr = H5Acreate2(file, "format", type, scalar, H5P_DEFAULT, H5P_DEFAULT);
+    ASSERT_GE(H5Awrite(attr, type, &text), 0);
+    const hsize_t two = 2;
+    const hid_t space = H5Screate_simple(1, &two, nullptr);
+    const char* names[] = {"x0", "x1"};
+    const hid_t ds = H5Dcreate2(file, "names", type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    ASSERT_GE(H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, names), 0);
+    for (hid_t id : {ds, space, attr, scalar}) H5Idec_ref(id);
+    H5Tclose(type);
+    H5Fclose(file);
+  }
+  H5File f(p.string(), H5File::Mode::kRead);
+  for (const auto& read : std::vector<std::function<void()>>{
+           [&] { f.ReadStringAttribute("/", "format"); }, [&] { f.ReadStrings("/names"); }}) {
+    try {
+      read();
+      FAIL() << "a variable-length string was read";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("variable-length string"), std::string::npos)
+          << e.what();
+    }
+  }
+  fs::remove(p);
 }
 
 TEST(AtomicFile, NothingAppearsUnlessCommitted) {

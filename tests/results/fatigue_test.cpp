@@ -84,6 +84,57 @@ TEST(Fatigue, GoodmanMinerClosedForm) {
   EXPECT_NEAR(CalcMinerDamage(cycles, sn).damage, 0.5 / 4.8828125e6, kRoundOff * 1e-7);
 }
 
+// A tabulated S–N curve: log-log interpolation is exact for points taken from a Basquin law;
+// the geometric midpoint of a segment has the geometric mean life; the knee ends the damage.
+TEST(Fatigue, TabulatedSnCurveInterpolatesLogLog) {
+  SnCurve basquin;
+  basquin.fatigue_strength_coefficient = 1000e6;
+  basquin.exponent = -0.1;
+  basquin.ultimate_strength = 800e6;
+  SnCurve table = basquin;
+  for (double s : {500e6, 300e6, 200e6}) table.points.push_back({basquin.CyclesToFailure(s), s});
+  table.Validate("test");
+  for (double s : {600e6, 450e6, 350e6, 250e6, 200e6})  // above the first point: extrapolated
+    EXPECT_NEAR(table.CyclesToFailure(s), basquin.CyclesToFailure(s),
+                kRoundOff * basquin.CyclesToFailure(s)) << s;
+  EXPECT_TRUE(std::isinf(table.CyclesToFailure(199e6)));  // below the knee
+  table.endurance_limit = 150e6;  // the last segment goes on to the endurance limit
+  EXPECT_NEAR(table.CyclesToFailure(160e6), basquin.CyclesToFailure(160e6),
+              kRoundOff * basquin.CyclesToFailure(160e6));
+  EXPECT_TRUE(std::isinf(table.CyclesToFailure(149e6)));
+  // Two points, not a power law: at the geometric midpoint the geometric mean of N.
+  SnCurve two;
+  two.ultimate_strength = 1e9;
+  two.points = {{1e3, 800e6}, {1e6, 200e6}};
+  two.Validate("test");
+  EXPECT_NEAR(two.CyclesToFailure(400e6), std::sqrt(1e3 * 1e6), kRoundOff * 1e5);
+  // Miner on the table equals Miner on the law it came from.
+  const std::vector<RainflowCycle> cycles{{700e6, 0.0, 3.0}, {500e6, 100e6, 1.5}};
+  table.endurance_limit = 0.0;
+  EXPECT_NEAR(CalcMinerDamage(cycles, table).damage, CalcMinerDamage(cycles, basquin).damage,
+              kRoundOff * CalcMinerDamage(cycles, basquin).damage);
+}
+
+TEST(Fatigue, BadSnPointsAreNamed) {
+  SnCurve sn;
+  sn.ultimate_strength = 8e8;
+  const std::vector<std::pair<std::vector<SnPoint>, std::string>> bad{
+      {{{1e3, 5e8}}, "at least 2 points"},
+      {{{1e3, 5e8}, {1e6, 6e8}}, "sn_points[1]"},
+      {{{1e6, 5e8}, {1e3, 2e8}}, "sn_points[1]"},
+      {{{-1.0, 5e8}, {1e3, 2e8}}, "sn_points[0]"},
+      {{{1e3, 5e8}, {1e6, 0.0}}, "sn_points[1]"}};
+  for (const auto& [points, words] : bad) {
+    sn.points = points;
+    try {
+      sn.Validate("stress output 'fillets' fatigue");
+      FAIL() << words;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(Fatigue, BadSnCurveIsNamed) {
   SnCurve ok;
   ok.fatigue_strength_coefficient = 1e9;

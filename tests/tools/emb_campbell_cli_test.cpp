@@ -28,6 +28,10 @@ TEST_F(EmbCampbellCli, CrossingsAsJsonAndTheDiagramFile) {
   const auto doc = nlohmann::json::parse(r.out);
   EXPECT_EQ(doc["summary"]["num_modes"], 6);
   EXPECT_EQ(doc["summary"]["num_lost"], 0);
+  // The default linearisation, named in the summary.
+  EXPECT_NE(doc["summary"]["linearisation"].get<std::string>().find("cycle average over 16"),
+            std::string::npos);
+  EXPECT_EQ(doc["summary"]["num_angles"], 16);
   // Torsion (120 Hz, flat) crossed by order 2 at 3600 rpm exactly, up to the scene's
   // stiffness written with 9 digits (relative 1e-9 in k, half that in f).
   constexpr double kSceneDigits = 1e-8;
@@ -56,6 +60,27 @@ TEST_F(EmbCampbellCli, CrossingsAsJsonAndTheDiagramFile) {
   EXPECT_TRUE(found);
 }
 
+TEST_F(EmbCampbellCli, FrozenAndAveragedAgreeOnAnAxisymmetricRotor) {
+  // The disc's model is the same at every angle (body axes, symmetric mount): the cycle
+  // average is the frozen model, up to the round-off of the coordinate change and the sum.
+  constexpr double kSameModel = 1e-9;
+  const CliResult a = Run("campbell -q " + kScene + " --rpm 1000,4000 --body disc --fmax 300 --json");
+  const CliResult f = Run("campbell -q " + kScene +
+                          " --rpm 1000,4000 --body disc --fmax 300 --json --linearise frozen");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(f.exit_code, 0) << f.err;
+  const auto da = nlohmann::json::parse(a.out), df = nlohmann::json::parse(f.out);
+  EXPECT_EQ(df["summary"]["num_angles"], 1);
+  EXPECT_NE(df["summary"]["linearisation"].get<std::string>().find("frozen"), std::string::npos);
+  ASSERT_EQ(da["modes"].size(), df["modes"].size());
+  for (std::size_t k = 0; k < da["modes"].size(); ++k) {
+    EXPECT_NEAR(da["modes"][k]["hz_last"].get<double>() / df["modes"][k]["hz_last"].get<double>(),
+                1.0, kSameModel);
+    // Every angle's frozen model is the same: no spread.
+    EXPECT_LT(da["modes"][k]["angle_spread_pct"].get<double>(), 100 * kSameModel);
+  }
+}
+
 TEST_F(EmbCampbellCli, TvdTuneOnTheTorsionMode) {
   const CliResult r =
       Run("tvd-tune -q " + kScene + " --rpm 3000 --body disc --hub disc_centre --ring-inertia 0.02 --json");
@@ -75,6 +100,9 @@ TEST_F(EmbCampbellCli, BadInputIsNamed) {
   ExpectFailure("campbell " + kScene + " --rpm -500 --body disc", 1, {"--rpm"});
   ExpectFailure("campbell " + kScene + " --rpm 1000 --body dsic", 1, {"dsic"});
   ExpectFailure("campbell " + kScene + " --rpm 1000", 1, {"--body"});
+  ExpectFailure("campbell " + kScene + " --rpm 1000 --body disc --linearise floquet", 1,
+                {"--linearise", "floquet", "cycle-average"});
+  ExpectFailure("campbell " + kScene + " --rpm 1000 --body disc --angles 0", 1, {"--angles"});
   ExpectFailure("tvd-tune " + kScene + " --rpm 1000 --body disc --hub nose --ring-inertia 0.01", 1,
                 {"nose"});
   ExpectFailure("tvd-tune " + kScene + " --rpm 1000 --body disc --hub disc_centre --ring-inertia -1",

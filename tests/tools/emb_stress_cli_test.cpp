@@ -112,6 +112,24 @@ TEST_F(EmbStressCli, DynamicFatigueAndFields) {
   emb::H5File f((dir_ / "dyn.stress.h5").string(), emb::H5File::Mode::kRead);
   EXPECT_EQ(f.Shape("/s/z1/times")[0], 2u);
   EXPECT_EQ(f.Shape("/s/z1/stress")[2], 6u);
+  // The same curve as points taken from the Basquin law, N = 0.5 (S / 1e9 Pa)^-10: the same
+  // damage (log-log interpolation of a power law is exact; the knee at 1e5 Pa is below every
+  // counted amplitude).
+  WriteScene("table.yaml", bar,
+             "  - name: s\n    body: bar\n"
+             "    fatigue: {measure: signed_von_mises, ultimate_strength: 8.0e8,\n"
+             "              sn_points: [[0.5, 1.0e9], [5.0e19, 1.0e7], [5.0e39, 1.0e5]]}\n",
+             "{harmonic: {amplitude: 500, frequency_hz: 200, offset: 500}}",
+             "{type: dynamic, t_end: 0.03, output_step: 2.5e-4}");
+  const CliResult t = Run("run -q --json table.yaml -o table.h5");
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  const nlohmann::json table_rows = nlohmann::json::parse(t.out)["fatigue"];
+  ASSERT_EQ(table_rows.size(), rows.size());
+  constexpr double kPowRoundOff = 1e-9;  // log/pow of ratios up to 1e40
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double d = rows[i]["damage"].get<double>();
+    EXPECT_NEAR(table_rows[i]["damage"].get<double>(), d, kPowRoundOff * d) << table_rows[i];
+  }
 }
 
 TEST_F(EmbStressCli, BadInputIsRefusedByName) {
@@ -127,6 +145,16 @@ TEST_F(EmbStressCli, BadInputIsRefusedByName) {
              "exponent: -0.1, ultimate_strength: 8.0e8}}\n",
              "{constant: 1}", "{type: static}");
   ExpectFailure("run sn.yaml -o out.h5", 1, {"fatigue_strength_coefficient", "expected a value > 0"});
+  WriteScene("both.yaml", bar,
+             "  - {name: s, body: bar, fatigue: {fatigue_strength_coefficient: 1.0e9, "
+             "exponent: -0.1, ultimate_strength: 8.0e8, sn_points: [[1.0e3, 5.0e8], [1.0e6, 2.0e8]]}}\n",
+             "{constant: 1}", "{type: static}");
+  ExpectFailure("run both.yaml -o out.h5", 1, {"either sn_points or", "not both"});
+  WriteScene("rising.yaml", bar,
+             "  - {name: s, body: bar, fatigue: {ultimate_strength: 8.0e8, "
+             "sn_points: [[1.0e3, 5.0e8], [1.0e6, 6.0e8]]}}\n",
+             "{constant: 1}", "{type: static}");
+  ExpectFailure("run rising.yaml -o out.h5", 1, {"sn_points[1]", "smaller amplitude"});
   WriteScene("node.yaml", bar, "  - {name: s, body: bar, groups: [z1], nodes: [0]}\n",
              "{constant: 1}", "{type: static}");
   ExpectFailure("run node.yaml -o out.h5", 1, {"node 0", "none of its groups"});

@@ -1,6 +1,8 @@
 // emb campbell SCENE --rpm 1000:6500:250: the Campbell diagram of a scene (issue 17). At each
 // speed the scene is set to that speed (libemb/scene/scene_at_speed.h), linearised about its
-// assembled start with multipliers from the acceleration level (tools/emb/operating_modes.h),
+// assembled start with multipliers from the acceleration level (tools/emb/operating_modes.h)
+// and, by default, averaged over --angles angles of a revolution (--linearise cycle-average,
+// libemb/mbs/analysis/cycle_average.h; the spread of the frozen frequencies is reported),
 // its installed natural frequencies computed (first-order form, gyroscopic terms in the
 // stationary frame: forward/backward whirl split), the modes followed across speeds by MAC,
 // classified torsion/bending/axial on the rotor body, and the engine-order crossings listed.
@@ -39,6 +41,8 @@ struct CampbellCommand {
   double pool_factor{1.5};
   double min_mac{0.5};
   std::string frame{"stationary"};
+  std::string linearise{"cycle-average"};
+  int num_angles{mbs::OperatingPointOptions{}.num_angles};
   bool trust_geo{false};
   OutputOptions out;
 
@@ -50,6 +54,14 @@ struct CampbellCommand {
     CheckNumber("--min-mac", min_mac, NumberRange::Closed(0.0, 1.0));
     EMB_THROW_IF(frame != "stationary" && frame != "body",
                  "--frame: expected 'stationary' or 'body', got '" << frame << "'");
+    EMB_THROW_IF(linearise != "frozen" && linearise != "cycle-average",
+                 "--linearise: expected 'cycle-average' or 'frozen', got '" << linearise << "'");
+    EMB_THROW_IF(num_angles < 1 || num_angles > 720,
+                 "--angles: expected 1 to 720 angles per revolution, got " << num_angles);
+    mbs::OperatingPointOptions lin;
+    lin.stationary_frame = frame == "stationary";
+    lin.linearisation = mbs::ParseLinearisation(linearise);
+    lin.num_angles = num_angles;
     const PreparedOutputs outputs({{output, "-o"}}, {scene_file});
     std::vector<mbs::CampbellPoint> points;
     std::string rotor, motion;
@@ -58,7 +70,7 @@ struct CampbellCommand {
       if (!out.quiet) std::cerr << "emb campbell: " << n << " rpm\r" << std::flush;
       scene::SceneAtSpeed change;
       mbs::OperatingPointModes m = CalcSceneModesAtSpeed(
-          scene_file, n, body, pool_factor * fmax_hz, trust_geo, frame == "stationary", &change);
+          scene_file, n, body, pool_factor * fmax_hz, trust_geo, lin, &change);
       rotor = m.system.body(m.rotor_body).name;
       for (const std::string& c : change.changes)
         if (c.rfind("motion", 0) == 0) motion = c.substr(0, c.find(':'));
@@ -69,16 +81,26 @@ struct CampbellCommand {
     const mbs::CampbellDiagram d = mbs::TrackCampbell(points, fmax_hz, min_mac);
     const std::vector<mbs::Crossing> crossings = mbs::FindCrossings(d, orders);
 
-    Table modes("Tracked modes (frequency at the first and last speed)",
-                {"mode_index", "class", "whirl", "hz_first", "hz_last", "min_mac"},
-                {"mode", "class", "whirl", "f first [Hz]", "f last [Hz]", "min MAC"});
+    Table modes("Tracked modes (frequency at the first and last speed; cycle average: the "
+                "largest spread of the frozen frequency over the angles, (max - min) / mean)",
+                {"mode_index", "class", "whirl", "hz_first", "hz_last", "min_mac",
+                 "angle_spread_pct"},
+                {"mode", "class", "whirl", "f first [Hz]", "f last [Hz]", "min MAC",
+                 "angle spread %"});
     modes.set_precision(6);
+    double worst_spread = std::numeric_limits<double>::quiet_NaN();
     for (const auto& t : d.modes) {
       double lo = 1.0, last = std::numeric_limits<double>::quiet_NaN();
-      for (std::size_t k = 0; k < t.hz.size(); ++k)
-        if (std::isfinite(t.hz[k])) lo = std::min(lo, t.mac[k]), last = t.hz[k];
+      double spread = std::numeric_limits<double>::quiet_NaN();
+      for (std::size_t k = 0; k < t.hz.size(); ++k) {
+        if (!std::isfinite(t.hz[k])) continue;
+        lo = std::min(lo, t.mac[k]), last = t.hz[k];
+        const double s = 100.0 * (t.hz_angle_max[k] - t.hz_angle_min[k]) / t.hz[k];
+        if (std::isfinite(s) && !(s <= spread)) spread = s;
+      }
+      if (std::isfinite(spread) && !(spread <= worst_spread)) worst_spread = spread;
       modes.AddRow({static_cast<long long>(t.index), std::string(mbs::Name(t.kind)),
-                    std::string(mbs::Name(t.whirl)), t.hz.front(), last, lo});
+                    std::string(mbs::Name(t.whirl)), t.hz.front(), last, lo, spread});
     }
     Table cross("Critical speeds: engine order k crosses mode f at rpm = 60 f / k",
                 {"order", "rpm", "mode_hz", "mode_index", "class", "whirl"},
@@ -93,6 +115,16 @@ struct CampbellCommand {
                                                           " rpm in the scene)");
     s.Add("speeds", "speeds", static_cast<long long>(speeds.size()));
     s.Add("frame", "gyroscopic frame", frame);
+    s.Add("linearisation", "linearised", linearise == "frozen"
+                                             ? std::string("frozen at the start angle")
+                                             : "cycle average over " + std::to_string(num_angles) +
+                                                   " angles of a revolution");
+    s.Add("num_angles", "angles averaged", static_cast<long long>(
+                                               lin.linearisation == mbs::Linearisation::kFrozen
+                                                   ? 1
+                                                   : num_angles));
+    s.Add("max_angle_spread_pct", "largest frozen-frequency spread over the angles [%]",
+          worst_spread);
     s.Add("fmax_hz", "modes tracked up to [Hz]", fmax_hz);
     s.Add("num_modes", "modes tracked", static_cast<long long>(d.modes.size()));
     s.Add("num_lost", "modes lost (no MAC partner)", static_cast<long long>(d.num_lost));
@@ -104,6 +136,8 @@ struct CampbellCommand {
       j["scene"] = scene_file;
       j["rotor"] = rotor;
       j["frame"] = frame;
+      j["linearisation"] = linearise;
+      j["num_angles"] = lin.linearisation == mbs::Linearisation::kFrozen ? 1 : num_angles;
       j["rpm"] = d.rpm;
       j["orders"] = orders;
       j["fmax_hz"] = fmax_hz;
@@ -124,6 +158,8 @@ struct CampbellCommand {
                               {"whirl", mbs::Name(t.whirl)},
                               {"hz", Numbers(t.hz)},
                               {"decay", Numbers(t.decay)},
+                              {"hz_angle_min", Numbers(t.hz_angle_min)},
+                              {"hz_angle_max", Numbers(t.hz_angle_max)},
                               {"mac", Numbers(t.mac)},
                               {"torsion", Numbers(tor)},
                               {"bending", Numbers(ben)},
@@ -177,6 +213,14 @@ void RegisterCampbellCommand(CLI::App& app) {
   cmd->add_option("--frame", st->frame,
                   "Gyroscopic terms: 'stationary' (rotor dynamics: rotations in world axes, "
                   "forward/backward whirl) or 'body' (frozen body-frame linearisation)")
+      ->capture_default_str();
+  cmd->add_option("--linearise", st->linearise,
+                  "'cycle-average': the linearised model averaged over --angles crank angles of "
+                  "one revolution (reciprocating masses at their mean inertia); 'frozen': at the "
+                  "scene's start angle only")
+      ->capture_default_str();
+  cmd->add_option("--angles", st->num_angles,
+                  "Cycle average: angles per revolution (1 = the start angle)")
       ->capture_default_str();
   cmd->add_option("-o,--output", st->output,
                   "Write the whole diagram (per mode: frequency, decay, MAC, energy split per "

@@ -74,7 +74,10 @@ struct SweepCommand {
     d.settings.channels = channels.empty() ? sc.steady_state.channels : channels;
     sweep::CheckSweepable(sc, d.settings);
     d.scene_digest = sweep::TextDigest(text);
-    d.digest = sweep::SweepDigest(text, d.sweep_rpm, d.settings);
+    std::vector<std::string> inputs;  // the files the scene reads besides itself
+    for (const auto& f : sc.inputs)
+      if (f != sc.source) inputs.push_back(f);
+    d.digest = sweep::SweepDigest(text, inputs, d.sweep_rpm, d.settings);
     return d;
   }
 

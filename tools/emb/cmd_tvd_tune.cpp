@@ -38,7 +38,7 @@ struct TvdTuneCommand {
     CheckNumber("--ring-inertia", ring_inertia, NumberRange::Positive("kg m^2"));
     CheckNumber("--fmax", fmax_hz, NumberRange::Positive("Hz"));
     const mbs::OperatingPointModes m =
-        CalcSceneModesAtSpeed(scene_file, rpm, body, fmax_hz, trust_geo, true, nullptr);
+        CalcSceneModesAtSpeed(scene_file, rpm, body, fmax_hz, trust_geo, {}, nullptr);
     const mbs::System& sys = m.system;
     const int hub_marker = sys.FindMarker(hub);
     const mbs::RotatingModes& modes = m.point.modes;

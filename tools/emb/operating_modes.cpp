@@ -9,14 +9,14 @@ namespace emb::cli {
 
 mbs::OperatingPointModes CalcSceneModesAtSpeed(const std::string& scene_file, double rpm,
                                                const std::string& rotor, double pool_hz,
-                                               bool trust_geo, bool stationary_frame,
+                                               bool trust_geo,
+                                               const mbs::OperatingPointOptions& linearise,
                                                scene::SceneAtSpeed* change) {
   scene::SceneOptions options;
   options.trust_geo_scripts = trust_geo;
   const scene::Scene sc = scene::LoadSceneAtSpeed(scene_file, rpm, options, change);
   try {
-    return mbs::CalcOperatingPointModes(sc.system, sc.analysis, rpm, rotor, pool_hz,
-                                        stationary_frame);
+    return mbs::CalcOperatingPointModes(sc.system, sc.analysis, rpm, rotor, pool_hz, linearise);
   } catch (const InputError& e) {
     EMB_THROW(InputError, scene_file << " at " << rpm << " rpm: " << e.what());
   }

@@ -11,11 +11,13 @@
 
 namespace emb::cli {
 
-/// LoadSceneAtSpeed + mbs::CalcOperatingPointModes (the scene's analysis settings);
+/// LoadSceneAtSpeed + mbs::CalcOperatingPointModes (the scene's analysis settings, the
+/// linearisation of `options`);
 /// `change` (may be null) gets what the speed change did.
 mbs::OperatingPointModes CalcSceneModesAtSpeed(const std::string& scene_file, double rpm,
                                                const std::string& rotor, double pool_hz,
-                                               bool trust_geo, bool stationary_frame,
+                                               bool trust_geo,
+                                               const mbs::OperatingPointOptions& options,
                                                scene::SceneAtSpeed* change);
 
 /// "1000:6500:250" (first:last:step, last included when on the grid) or "1000,2000,3000".

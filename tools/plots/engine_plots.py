@@ -185,7 +185,9 @@ def main():
             what = ("" if cycle is None else
                     f"steady cycle {cycle[0]:.4g}-{cycle[1]:.4g} s" +
                     (" shaded" if args.all_cycles else "") + ", ")
-            fig.suptitle(f"{stem}: {what}{f.attrs.get('scene', '')}", fontsize=9)
+            scene = f.attrs.get("scene", b"")  # emb stores strings as fixed-length bytes
+            scene = scene.decode() if isinstance(scene, bytes) else scene
+            fig.suptitle(f"{stem}: {what}{scene}", fontsize=9)
             fig.tight_layout()
             print(f"traces: {int(keep.sum())} samples, t = {t[keep][0]:.6g} .. {t[keep][-1]:.6g} s"
                   + (" (the steady cycle)" if cycle is not None and not args.all_cycles else ""))

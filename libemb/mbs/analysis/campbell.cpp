@@ -22,6 +22,13 @@ constexpr double kPlanarWhirl = 0.1;
 
 double Norm2(const Complex3& x) { return x.squaredNorm(); }
 
+// Mode j of point p is tracked mode t at speed k: its frequency range over the angles.
+void SetAngleRange(const CampbellPoint& p, Eigen::Index j, std::size_t k, TrackedMode* t) {
+  if (j >= p.hz_angle_min.size()) return;
+  t->hz_angle_min[k] = p.hz_angle_min[j];
+  t->hz_angle_max[k] = p.hz_angle_max[j];
+}
+
 }  // namespace
 
 const char* Name(ModeClass c) {
@@ -127,6 +134,15 @@ ModeSplit ClassifyMode(const System& system, const Eigen::VectorXd& q, int body,
 OperatingPointModes CalcOperatingPointModes(const System& system, AnalysisSettings settings,
                                             double rpm, const std::string& rotor, double pool_hz,
                                             bool stationary_frame) {
+  OperatingPointOptions options;
+  options.stationary_frame = stationary_frame;
+  return CalcOperatingPointModes(system, settings, rpm, rotor, pool_hz, options);
+}
+
+OperatingPointModes CalcOperatingPointModes(const System& system, AnalysisSettings settings,
+                                            double rpm, const std::string& rotor, double pool_hz,
+                                            const OperatingPointOptions& options) {
+  const bool stationary_frame = options.stationary_frame;
   settings.type = AnalysisType::kDynamic;
   settings.installed_bases.clear();
   settings.truncated_bases.clear();
@@ -155,7 +171,15 @@ OperatingPointModes CalcOperatingPointModes(const System& system, AnalysisSettin
   const AccelerationSolution acc = SolveAccelerations(sys, run.q0, run.v0, t, &ws);
   const LinearizedModel lin = CalcLinearizedModel(sys, run.q0, run.v0, t, acc.lambda, &ws, acc.vdot);
   out.point.rpm = rpm;
-  out.point.modes = CalcRotatingModes(sys, run.q0, run.v0, lin, pool_hz, stationary_frame);
+  if (options.linearisation == Linearisation::kCycleAverage) {
+    CycleAveragedModes avg = CalcCycleAveragedModes(system, settings, run, out.rotor_body,
+                                                    options.num_angles, pool_hz, stationary_frame);
+    out.point.modes = std::move(avg.modes);
+    out.point.hz_angle_min = std::move(avg.hz_min);
+    out.point.hz_angle_max = std::move(avg.hz_max);
+  } else {
+    out.point.modes = CalcRotatingModes(sys, run.q0, run.v0, lin, pool_hz, stationary_frame);
+  }
   for (Eigen::Index j = 0; j < out.point.modes.shapes.cols(); ++j)
     out.point.splits.push_back(ClassifyMode(sys, run.q0, out.rotor_body, out.axis_W,
                                             out.point.modes.shapes.col(j), out.point.modes.mass));
@@ -186,7 +210,9 @@ CampbellDiagram TrackCampbell(const std::vector<CampbellPoint>& points, double f
     t.index = static_cast<int>(j) + 1;
     t.hz.assign(ns, nan), t.decay.assign(ns, nan), t.mac.assign(ns, nan);
     t.splits.resize(ns);
+    t.hz_angle_min.assign(ns, nan), t.hz_angle_max.assign(ns, nan);
     t.hz[0] = first.frequencies_hz[j], t.decay[0] = first.decay[j], t.mac[0] = 1.0;
+    SetAngleRange(points[0], j, 0, &t);
     if (j < static_cast<Eigen::Index>(points[0].splits.size())) t.splits[0] = points[0].splits[j];
     d.modes.push_back(t);
     last.push_back(first.shapes.col(j));
@@ -213,6 +239,7 @@ CampbellDiagram TrackCampbell(const std::vector<CampbellPoint>& points, double f
       t.mac[k] = mac(static_cast<Eigen::Index>(i), j);
       d.min_mac_seen = std::min(d.min_mac_seen, t.mac[k]);
       if (j < static_cast<int>(points[k].splits.size())) t.splits[k] = points[k].splits[j];
+      SetAngleRange(points[k], j, k, &t);
       last[live[i]] = now.shapes.col(j);
     }
   }

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "libemb/mbs/analysis/analysis.h"
+#include "libemb/mbs/analysis/cycle_average.h"
 #include "libemb/mbs/analysis/rotating_modes.h"
 
 namespace emb::mbs {
@@ -57,6 +58,9 @@ struct CampbellPoint {
   double rpm{0.0};
   RotatingModes modes;
   std::vector<ModeSplit> splits;  ///< one per mode
+  /// Cycle average (cycle_average.h): per mode the range of its frozen frequency over the
+  /// angles [Hz] (NaN: no partner); empty for the frozen linearisation.
+  Eigen::VectorXd hz_angle_min, hz_angle_max;
 };
 
 /// The modes of a model at one steady operating point, and what they were computed about.
@@ -84,12 +88,31 @@ OperatingPointModes CalcOperatingPointModes(const System& system, AnalysisSettin
                                             double rpm, const std::string& rotor, double pool_hz,
                                             bool stationary_frame = true);
 
+/// How CalcOperatingPointModes linearises.
+struct OperatingPointOptions {
+  bool stationary_frame{true};
+  Linearisation linearisation{Linearisation::kFrozen};
+  /// Cycle average: angles per revolution. 16 is converged on the inline-4 (the first torsion
+  /// frequency moves < 0.1 % from 16 to 32 angles: benchmarks/README.md, campbell_angles).
+  int num_angles{16};
+};
+
+/// The same with the linearisation of `options`: kCycleAverage replaces the modes by those of
+/// the cycle-averaged model about the same start (CalcCycleAveragedModes; the shapes at the
+/// start angle) and fills point.hz_angle_min/max.
+OperatingPointModes CalcOperatingPointModes(const System& system, AnalysisSettings settings,
+                                            double rpm, const std::string& rotor, double pool_hz,
+                                            const OperatingPointOptions& options);
+
 /// One mode followed across the speeds: NaN where it was not found (lost).
 struct TrackedMode {
   int index{0};                      ///< 1-based, ascending frequency at the first speed
   std::vector<double> hz, decay;     ///< [Hz], [1/s] per speed
   std::vector<double> mac;           ///< MAC with the previous speed (1 at the first)
   std::vector<ModeSplit> splits;     ///< per speed
+  /// Per speed: the range of the frozen frequency over the cycle's angles [Hz] (cycle
+  /// average; NaN otherwise or when not found).
+  std::vector<double> hz_angle_min, hz_angle_max;
   ModeClass kind{ModeClass::kTorsion};  ///< the class with the largest mean fraction
   Whirl whirl{Whirl::kNone};             ///< at the last speed it was found
 };

@@ -35,20 +35,25 @@ RotatingModes CalcRotatingModes(const System& system, const Eigen::VectorXd& q,
   EMB_THROW_IF(HasQuasiStaticCoordinates(system),
                "rotating modes: the model has massless (quasi-static) elastic coordinates; "
                "expected every coordinate to carry mass (use the body's full basis)");
+  Eigen::MatrixXd G = model.G;
+  if (stationary_frame && v.size()) G -= model.M * CalcFrameRotationRate(system, q, v);
   const Eigen::MatrixXd& Z = model.Z;
+  return CalcReducedRotatingModes(Z.transpose() * model.M * Z, Z.transpose() * G * Z,
+                                  Z.transpose() * model.K * Z, Z, model.M, fmax_hz);
+}
+
+RotatingModes CalcReducedRotatingModes(const Eigen::MatrixXd& Mz, const Eigen::MatrixXd& Gz,
+                                       const Eigen::MatrixXd& Kz, const Eigen::MatrixXd& Z,
+                                       const Eigen::MatrixXd& M, double fmax_hz) {
   RotatingModes out;
-  out.mass = model.M;
+  out.mass = M;
   const int n = static_cast<int>(Z.cols());
   out.num_free = n;
-  const int nv = static_cast<int>(model.M.rows());
+  const int nv = static_cast<int>(M.rows());
   out.frequencies_hz.resize(0);
   out.decay.resize(0);
   out.shapes.resize(nv, 0);
   if (n == 0) return out;
-  Eigen::MatrixXd G = model.G;
-  if (stationary_frame) G -= model.M * CalcFrameRotationRate(system, q, v);
-  const Eigen::MatrixXd Mz = Z.transpose() * model.M * Z;
-  const Eigen::MatrixXd Kz = Z.transpose() * model.K * Z, Gz = Z.transpose() * G * Z;
   const Eigen::LLT<Eigen::MatrixXd> llt(0.5 * (Mz + Mz.transpose()));
   if (llt.info() != Eigen::Success) EMB_THROW(NumericalError, "rotating modes: the reduced mass matrix is not positive definite");
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
@@ -76,7 +81,7 @@ RotatingModes CalcRotatingModes(const System& system, const Eigen::VectorXd& q,
   }
   std::sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.hz < b.hz; });
   const Eigen::MatrixXcd X = es.eigenvectors();
-  const Eigen::MatrixXcd Mc = model.M.cast<std::complex<double>>();
+  const Eigen::MatrixXcd Mc = M.cast<std::complex<double>>();
   out.frequencies_hz.resize(static_cast<Eigen::Index>(found.size()));
   out.decay.resize(out.frequencies_hz.size());
   out.shapes.resize(nv, out.frequencies_hz.size());

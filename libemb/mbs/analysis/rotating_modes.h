@@ -54,4 +54,13 @@ RotatingModes CalcRotatingModes(const System& system, const Eigen::VectorXd& q,
                                 const Eigen::VectorXd& v, const LinearizedModel& model,
                                 double fmax_hz, bool stationary_frame = true);
 
+/// The modes with frequency <= fmax_hz of Mr y'' + Gr y' + Kr y = 0 in independent
+/// coordinates y (n x n each, Mr symmetric positive definite), mapped to velocity phasors
+/// phi = T s y (T: nv x n, v = T y') and normalised to phi^H M phi = 1 (M: nv x nv; `mass`
+/// of the result). CalcRotatingModes is this with T = Z = null(C), Mr = Z^T M Z, ...
+/// @throws NumericalError as CalcRotatingModes.
+RotatingModes CalcReducedRotatingModes(const Eigen::MatrixXd& Mr, const Eigen::MatrixXd& Gr,
+                                       const Eigen::MatrixXd& Kr, const Eigen::MatrixXd& T,
+                                       const Eigen::MatrixXd& M, double fmax_hz);
+
 }  // namespace emb::mbs

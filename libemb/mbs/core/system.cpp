@@ -353,6 +353,28 @@ Eigen::VectorXd System::InitialPositions() const {
   return q;
 }
 
+System System::WithInitialState(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const {
+  EMB_CHECK(finalized_);
+  EMB_THROW_IF(q.size() != layout_.nq() || v.size() != layout_.nv(),
+               "initial state: expected " << layout_.nq() << " positions and " << layout_.nv()
+                                          << " velocities, got " << q.size() << " and "
+                                          << v.size());
+  System s = *this;
+  for (int b = 1; b < num_bodies(); ++b) {
+    RigidBody& body = s.bodies_[b];
+    body.p_WB = q.segment<3>(layout_.position(b));
+    body.R_WB = RotationFromQuaternion(q.segment<4>(layout_.quaternion(b)).normalized());
+    body.v_WB = v.segment<3>(layout_.velocity(b));
+    body.omega_W = body.R_WB * v.segment<3>(layout_.angular_velocity(b));
+    const int ne = layout_.num_elastic(b);
+    if (ne) {
+      body.eta0 = q.segment(layout_.elastic_q(b), ne);
+      body.eta_dot0 = v.segment(layout_.elastic_v(b), ne);
+    }
+  }
+  return s;
+}
+
 Eigen::VectorXd System::InitialVelocities() const {
   Eigen::VectorXd v(layout_.nv());
   for (int b = 1; b < num_bodies(); ++b) {

@@ -128,6 +128,10 @@ class System {
   /// @throws InputError naming the body if it is not flexible, T has the wrong number of
   /// rows or is rank deficient, or a quasi-static coordinate has no damping.
   System WithElasticBases(const std::vector<ElasticBasisChange>& changes) const;
+  /// A copy whose bodies start at state (q, v) (InitialPositions/InitialVelocities layout:
+  /// p_WB, unit quaternion, modal coordinates; v_WB, omega_B, modal rates). Markers are
+  /// body-fixed, so they move with their bodies. @throws InputError for wrong sizes.
+  System WithInitialState(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
 
   /// A copy without the given scalar equations (indices into equations()), e.g. the
   /// redundant ones of a DOF report. The copy records what was removed.

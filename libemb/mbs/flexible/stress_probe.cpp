@@ -55,28 +55,46 @@ Eigen::MatrixXd StressProbe::GroupStresses(int g, const Eigen::VectorXd& eta) co
   return Eigen::Map<const Eigen::MatrixXd>(v.data(), 6, static_cast<Eigen::Index>(s.nodes.size()));
 }
 
+const StressSnapshot& StressProbe::Evaluate(const Eigen::VectorXd& eta) const {
+  if (last_eta_.size() == eta.size() && last_eta_ == eta) return snapshot_;
+  const std::size_t ng = groups_.size();
+  snapshot_.sigma.resize(ng);
+  snapshot_.von_mises.resize(ng);
+  snapshot_.max_principal.resize(ng);
+  snapshot_.min_principal.resize(ng);
+  for (std::size_t g = 0; g < ng; ++g) {
+    const Eigen::MatrixXd& sigma = snapshot_.sigma[g] = GroupStresses(static_cast<int>(g), eta);
+    const Eigen::Index m = sigma.cols();
+    snapshot_.von_mises[g].resize(m);
+    snapshot_.max_principal[g].resize(m);
+    snapshot_.min_principal[g].resize(m);
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const Voigt6 s = sigma.col(i);
+      const Eigen::Vector3d p = PrincipalStresses(s);
+      snapshot_.von_mises[g][i] = VonMises(s);
+      snapshot_.max_principal[g][i] = p[0];
+      snapshot_.min_principal[g][i] = p[2];
+    }
+  }
+  last_eta_ = eta;
+  return snapshot_;
+}
+
 void StressProbe::DoEval(const System&, const std::vector<BodyKinematics>& bodies,
                          const Eigen::VectorXd&, Eigen::Ref<Eigen::VectorXd> values) const {
-  const Eigen::VectorXd& eta = bodies[static_cast<std::size_t>(body_)].eta;
+  const StressSnapshot& snap = Evaluate(bodies[static_cast<std::size_t>(body_)].eta);
   Eigen::Index k = 0;
-  std::vector<Eigen::MatrixXd> sigma(groups_.size());
   for (std::size_t g = 0; g < groups_.size(); ++g) {
-    sigma[g] = GroupStresses(static_cast<int>(g), eta);
-    double vm_max = -1.0, p1_max = -std::numeric_limits<double>::infinity();
-    int vm_node = -1, p1_node = -1;
-    for (Eigen::Index i = 0; i < sigma[g].cols(); ++i) {
-      const Voigt6 s = sigma[g].col(i);
-      const double vm = VonMises(s), p1 = PrincipalStresses(s)[0];
-      if (vm > vm_max) vm_max = vm, vm_node = groups_[g].nodes[static_cast<std::size_t>(i)];
-      if (p1 > p1_max) p1_max = p1, p1_node = groups_[g].nodes[static_cast<std::size_t>(i)];
-    }
+    Eigen::Index vm_at = 0, p1_at = 0;
+    const double vm_max = snap.von_mises[g].maxCoeff(&vm_at);
+    const double p1_max = snap.max_principal[g].maxCoeff(&p1_at);
     values[k++] = vm_max;
-    values[k++] = vm_node;
+    values[k++] = groups_[g].nodes[static_cast<std::size_t>(vm_at)];
     values[k++] = p1_max;
-    values[k++] = p1_node;
+    values[k++] = groups_[g].nodes[static_cast<std::size_t>(p1_at)];
   }
   for (const auto& [g, i] : node_slots_)
-    for (int c = 0; c < 6; ++c) values[k++] = sigma[static_cast<std::size_t>(g)](c, i);
+    for (int c = 0; c < 6; ++c) values[k++] = snap.sigma[static_cast<std::size_t>(g)](c, i);
 }
 
 std::shared_ptr<StressProbe> MakeStressProbe(const FlexiblePart& part,

@@ -18,8 +18,9 @@
 ///   g.max_principal        max over the nodes of the largest principal stress sigma_1 [Pa]
 ///   g.max_principal_node   its node
 /// then per chosen node N: nN.xx, nN.yy, nN.zz, nN.xy, nN.yz, nN.zx [Pa].
-/// Cost per evaluation O(6 m n) for m nodes and n elastic coordinates, plus a 3 x 3
-/// eigenvalue problem per node.
+/// Cost per evaluation O(6 m n) for m nodes and n elastic coordinates, plus closed-form
+/// principal stresses per node (fe/stress_measures.h). The last evaluation is kept
+/// (Evaluate): the stress recorder's per-node histories at a sample reuse the channels' work.
 
 #include <Eigen/Dense>
 #include <memory>
@@ -46,6 +47,14 @@ struct StressRows {
   Eigen::MatrixXd rows;    ///< 6 m x n: sigma = rows * eta
 };
 
+/// Every group's node stresses and their measures at one state.
+struct StressSnapshot {
+  std::vector<Eigen::MatrixXd> sigma;          ///< per group, 6 x m [Pa]
+  std::vector<Eigen::VectorXd> von_mises;      ///< per group, m [Pa]
+  std::vector<Eigen::VectorXd> max_principal;  ///< sigma_1 per node [Pa]
+  std::vector<Eigen::VectorXd> min_principal;  ///< sigma_3 per node [Pa]
+};
+
 class StressProbe final : public Probe {
  public:
   /// @throws InputError naming the probe if a component node is in none of the groups.
@@ -57,6 +66,10 @@ class StressProbe final : public Probe {
   /// Stresses (6 x m, column i = node i of the group) of group `g` at elastic coordinates
   /// `eta` of the part. @pre eta.size() == number of the part's elastic coordinates.
   Eigen::MatrixXd GroupStresses(int g, const Eigen::VectorXd& eta) const;
+  /// All groups' stresses and measures at elastic coordinates `eta`; the same `eta` as the
+  /// last call returns the kept result (valid until the next call with another eta).
+  /// Not thread-safe (one run per process: emb's sweeps fork).
+  const StressSnapshot& Evaluate(const Eigen::VectorXd& eta) const;
 
  protected:
   void DoEval(const System& system, const std::vector<BodyKinematics>& bodies,
@@ -67,6 +80,8 @@ class StressProbe final : public Probe {
   std::vector<StressRows> groups_;
   std::vector<int> nodes_;                         // component nodes
   std::vector<std::pair<int, int>> node_slots_;    // (group, index in the group) per node
+  mutable Eigen::VectorXd last_eta_;               // the eta of snapshot_ (empty: none yet)
+  mutable StressSnapshot snapshot_;
 };
 
 /// The probe of `spec` on `part` from the body file's modal stress groups `file_groups`
