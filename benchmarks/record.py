@@ -27,6 +27,9 @@ The benchmark scripts call one subcommand each, which turns raw outputs into "da
   profile NAME DIR                   perf reports and run summary of inline4_profile.sh
   clonk NAME DIR RUN ...             driveline_clonk.sh: `emb run` and clonk_plots.py outputs
                                      DIR/RUN.{json,csv}, DIR/RUN_metrics.json against the first
+  slepc NAME LABEL=RUN.json,RUN.time ...  `emb modes --json` (default or --backend slepc
+                                     on N ranks) and its wall time (/usr/bin/time -f %e);
+                                     frequencies against the run labelled cholmod
   ccx NAME H=EMB.json,EMB.time,CCX.json ...  `emb modes --json` and CalculiX per mesh size H
                                      (benchmarks/ccx_vs_emb.sh), with a fitted t ∝ DOF^p
 All take --command "...". Run with /usr/bin/python3 (inline4 needs numpy, reduce-modes
@@ -487,6 +490,34 @@ def collect_ccx(items):
     return {"runs": runs, "growth_exponent": growth}
 
 
+def collect_slepc(items):
+    """slepc_modes.sh: per run the phases, MUMPS's factor counters and the frequencies'
+    largest relative difference to the default (cholmod) run's."""
+    runs = []
+    for label, paths in labelled(items):
+        json_path, time_path = paths.split(",")
+        r = load(json_path)
+        s = r["summary"]
+        with open(time_path) as f:
+            wall = float(f.read().split()[-1])
+        runs.append({"name": label, "ranks": s.get("mpi_ranks", 1), "dofs": s["dofs"],
+                     "method": s["method"], "seconds": phases(s), "wall_s": wall,
+                     "nnz_factor": s["nnz_factor"], "factor_flops": s.get("factor_flops"),
+                     "factor_peak_mb": s.get("factor_peak_mb"),
+                     "factor_total_mb": s.get("factor_total_mb"),
+                     "rank0_peak_memory_mb": s["peak_memory_mb"], "solves": s["solves"],
+                     "status": s["status"], "rigid_modes": s["rigid_modes"],
+                     "max_backward_error": s["max_backward_error"],
+                     "elastic_hz": [m["frequency_hz"] for m in r["modes"] if m["kind"] == "elastic"]})
+    ref = [r for r in runs if r["name"] == "cholmod"]
+    if not ref:
+        sys.exit("record.py slepc: expected a run labelled cholmod")
+    for r in runs:
+        pairs = list(zip(r["elastic_hz"], ref[0]["elastic_hz"]))
+        r["max_rel_diff_vs_cholmod"] = max(abs(a - b) / b for a, b in pairs) if pairs else None
+    return {"runs": runs}
+
+
 def collect_merge(items):
     return {"runs": [dict(name=label, **load(path)) for label, path in labelled(items)]}
 
@@ -504,7 +535,7 @@ def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("kind", choices=["run", "merge", "modes", "reduce-sizes", "reduce-modes", "stiffening",
                                     "compare", "web-width", "inline4", "inline4-beam", "profile", "clonk",
-                                    "ccx", "engine"])
+                                    "ccx", "engine", "slepc"])
     p.add_argument("name", help="results file name: benchmarks/results/NAME.json")
     p.add_argument("inputs", nargs="*")
     p.add_argument("--command", help="the command line that ran the benchmark (default: PROGRAM)")
@@ -539,6 +570,7 @@ def main():
             "clonk": lambda: collect_clonk(a.inputs[0], a.inputs[1:]),
             "ccx": lambda: collect_ccx(a.inputs),
             "engine": lambda: collect_engine(a.inputs),
+            "slepc": lambda: collect_slepc(a.inputs),
         }
         data = collectors[a.kind]()
     write_result(a.name, command, data)

@@ -138,6 +138,24 @@ def crank_modes(res):
                  rows), [doc]
 
 
+def slepc_modes(res):
+    doc = res("slepc_modes")
+    rows = []
+    for r in doc["data"]["runs"]:
+        s = r["seconds"]
+        flops = r["factor_flops"]
+        rows.append([r["name"], r["ranks"], r["dofs"], f"{r['nnz_factor'] / 1e6:.1f}M",
+                     sig3(flops / 1e9 if flops else None), num(s.get("factorisation"), ".2f"),
+                     num(s.get("eigen-solve"), ".2f"), num(s["total"], ".1f"),
+                     num(r["wall_s"], ".1f"), num(r["factor_peak_mb"], ".0f"),
+                     num(r["rank0_peak_memory_mb"], ".0f"), r["solves"],
+                     num(r["max_rel_diff_vs_cholmod"], ".1e"), r["status"]])
+    return table(["run", "ranks", "DOF", "factor entries", "factor GFlop", "factorisation s",
+                  "eigen-solve s", "emb total s", "wall s", "MUMPS MB (largest rank)",
+                  "rank-0 peak MB", "solves", "max \\|Δf\\|/f vs cholmod", "status"],
+                 rows), [doc]
+
+
 def ccx_vs_emb(res):
     doc = res("ccx_vs_emb")
     rows = []
@@ -696,7 +714,7 @@ def order_cuts_inline4(res):
 TABLES = {f.__name__: f for f in [
     campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
-    crank_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
+    crank_modes, slepc_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
     crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening, stress_recovery_1cyl,
     stress_recovery_1cyl_fatigue, stress_recovery_i4, stress_recovery_i4_fatigue,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,

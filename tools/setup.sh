@@ -21,6 +21,7 @@ packages=(
   python3-h5py python3-matplotlib python3-numpy python3-scipy
   clang libclang-rt-14-dev
   calculix-ccx
+  libslepc-real-dev petsc-dev libopenmpi-dev openmpi-bin   # optional: emb modes --backend slepc
 )
 missing=()
 for p in "${packages[@]}"; do

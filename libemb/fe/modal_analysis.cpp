@@ -41,6 +41,10 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
   so.shift = LambdaFromHz(options.shift_hz);
   if (so.shift > 0.0 && so.backend == CholeskyBackend::kCholmodSupernodal)
     so.backend = CholeskyBackend::kCholmodLDLT;  // interior shift: K − σM is indefinite
+  const auto solve = [&](const SparseMatrix& K, const SparseMatrix& M) {
+    return options.eigen_solver ? options.eigen_solver(K, M, so, progress)
+                                : SolveGeneralizedEigen(K, M, so, progress);
+  };
   ModalResult r;
   r.num_fixed_dofs = sys.num_dofs() - free_dofs;
   r.expected_rigid_modes = options.expected_rigid_modes;
@@ -49,12 +53,12 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
     const SparseMatrix& T = options.basis;
     const SparseMatrix Tt = T.transpose();
     const SparseMatrix Kr = Tt * sys.K * T, Mr = Tt * sys.M * T;
-    r.eig = SolveGeneralizedEigen(Kr, Mr, so, progress);
+    r.eig = solve(Kr, Mr);
     scale = NormOne(Kr) / NormOne(Mr);
     r.basis_coordinates = std::move(r.eig.vectors);
     r.eig.vectors = T * r.basis_coordinates;
   } else if (fixed.empty()) {
-    r.eig = SolveGeneralizedEigen(sys.K, sys.M, so, progress);
+    r.eig = solve(sys.K, sys.M);
     scale = NormOne(sys.K) / NormOne(sys.M);
   } else {
     EMB_THROW_IF(fixed.front() < 0 || fixed.back() >= sys.num_dofs(),
@@ -62,10 +66,11 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
     const std::vector<int> free = Complement(fixed, sys.num_dofs());
     const SparseMatrix Kff = ExtractSubmatrix(sys.K, free, free);
     const SparseMatrix Mff = ExtractSubmatrix(sys.M, free, free);
-    r.eig = SolveGeneralizedEigen(Kff, Mff, so, progress);
+    r.eig = solve(Kff, Mff);
     scale = NormOne(Kff) / NormOne(Mff);
     Eigen::MatrixXd full = Eigen::MatrixXd::Zero(sys.num_dofs(), r.eig.vectors.cols());
-    for (size_t k = 0; k < free.size(); ++k) full.row(free[k]) = r.eig.vectors.row(k);
+    if (r.eig.vectors.cols() > 0)
+      for (size_t k = 0; k < free.size(); ++k) full.row(free[k]) = r.eig.vectors.row(k);
     r.eig.vectors = std::move(full);
   }
   if (probe_next && !r.eig.ok())
@@ -83,8 +88,10 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
         n > r.num_rigid_modes && std::abs(next - last) <= 1e-6 * std::abs(last);
     r.num_rigid_modes = std::min(r.num_rigid_modes, n);
     r.eig.eigenvalues.conservativeResize(n);
-    r.eig.vectors.conservativeResize(Eigen::NoChange, n);
-    if (use_basis) r.basis_coordinates.conservativeResize(Eigen::NoChange, n);
+    if (r.eig.vectors.cols() > n) {  // none where an external solver kept them elsewhere
+      r.eig.vectors.conservativeResize(Eigen::NoChange, n);
+      if (use_basis) r.basis_coordinates.conservativeResize(Eigen::NoChange, n);
+    }
     r.eig.backward_errors.conservativeResize(n);
     r.eig.num_converged = std::min(r.eig.num_converged, n);
     r.eig.num_requested = n;

@@ -4,6 +4,7 @@
 /// frequencies and M-orthonormal mode shapes of K φ = ω² M φ, with the rigid-body modes of a
 /// free-free part counted.
 
+#include <functional>
 #include <vector>
 
 #include "libemb/common/progress.h"
@@ -28,6 +29,14 @@ struct ModalOptions {
   /// The rigid-body modes the supports leave (e.g. from the rank of the held rigid motions), or
   /// −1 if unknown: reported beside the count found in the spectrum.
   int expected_rigid_modes{-1};
+  /// Solves the pencil left after the supports (K, M of the free unknowns or Tᵀ K T, Tᵀ M T)
+  /// instead of SolveGeneralizedEigen, e.g. the distributed SLEPc backend
+  /// (libemb/distributed/slepc_eigen_solver.h). Empty = SolveGeneralizedEigen. It may return
+  /// the vectors on one process only: elsewhere with zero columns (the rows are then not
+  /// filled in either), eigenvalues, checks and status on every process.
+  std::function<EigenResult(const SparseMatrix& K, const SparseMatrix& M,
+                            const EigenSolverOptions& options, const ProgressFn& progress)>
+      eigen_solver;
 };
 
 struct ModalResult {

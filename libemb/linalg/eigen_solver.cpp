@@ -414,6 +414,17 @@ const char* Name(EigenStatus status) {
   return "?";
 }
 
+void RefineAndCheckEigenpairs(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
+                              double residual_tolerance, EigenResult& r) {
+  if (r.vectors.cols() == 0) return;
+  RayleighRitzAndCheck(K, M, C, r);
+  const EigenpairCheck check{r.backward_errors, r.max_backward_error, r.orthonormality_error};
+  if (r.status == EigenStatus::kSuccess && !check.Passed(residual_tolerance)) {
+    r.status = EigenStatus::kInaccurate;
+    r.message = "eigenpair check failed: " + check.Describe(residual_tolerance);
+  }
+}
+
 EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
                                   const EigenSolverOptions& o, const ProgressFn& progress) {
   return SolveGeneralizedEigen(K, M, SparseMatrix(0, K.cols()), o, progress);
@@ -496,12 +507,7 @@ EigenResult SolveGeneralizedEigen(ShiftInvertSolver& solver, const EigenSolverOp
   if (r.vectors.cols() == 0) return r;
 
   Stopwatch sw;
-  RayleighRitzAndCheck(K, M, C, r);
-  const EigenpairCheck check{r.backward_errors, r.max_backward_error, r.orthonormality_error};
-  if (r.status == EigenStatus::kSuccess && !check.Passed(o.residual_tolerance)) {
-    r.status = EigenStatus::kInaccurate;
-    r.message = "eigenpair check failed: " + check.Describe(o.residual_tolerance);
-  }
+  RefineAndCheckEigenpairs(K, M, C, o.residual_tolerance, r);
   if (o.sturm_check && r.status == EigenStatus::kSuccess) {
     // Count eigenvalues below σ_c, a little below the highest found, by Sylvester's inertia:
     // every one of them must be among those returned. (Just below, not above: a requested

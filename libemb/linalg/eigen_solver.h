@@ -107,6 +107,16 @@ EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
 EigenResult SolveGeneralizedEigen(ShiftInvertSolver& solver, const EigenSolverOptions& options,
                                   const ProgressFn& progress = {});
 
+/// The clean-up and checks every solver's pairs go through (also an external solver's, e.g.
+/// the distributed SLEPc backend): Rayleigh–Ritz of (K, M) on span(r.vectors) (refines nearly
+/// converged vectors, M-orthonormalises them, sorts ascending), canonical signs and rotations
+/// in degenerate groups, then each pair's backward error η_i and ‖ΦᵀMΦ − I‖_max (see the file
+/// comment; with constraints C φ = 0, the residual outside range(Cᵀ)). A kSuccess status
+/// becomes kInaccurate if max η_i > residual_tolerance or the orthonormality check fails.
+/// Does nothing without vectors. Cost: m sparse products with K and M, O(n m²).
+void RefineAndCheckEigenpairs(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
+                              double residual_tolerance, EigenResult& r);
+
 /// Number of eigenvalues of K φ = λ M φ (on C φ = 0 if C has rows) below σ, by the inertia of
 /// an LDLᵀ factorisation of K − σM (and, with constraints, of C (K − σM)⁻¹ Cᵀ); -1 if the
 /// factorisation failed. Cost: one simplicial LDLᵀ (slow on big models).

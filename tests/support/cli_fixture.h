@@ -33,9 +33,13 @@ class CliTest : public ::testing::Test {
 
   // Runs `emb ARGS` (EMB_EXE) with the test's directory as working directory.
   CliResult Run(const std::string& args) const {
+    return RunCommand("'" + std::string(EMB_EXE) + "' " + args);
+  }
+  // Runs a shell command line (e.g. emb under mpirun) the same way.
+  CliResult RunCommand(const std::string& command) const {
     const std::string out = (dir_ / "stdout.txt").string(), err = (dir_ / "stderr.txt").string();
-    const std::string cmd = "cd '" + dir_.string() + "' && '" + EMB_EXE + "' " + args + " > '" +
-                            out + "' 2> '" + err + "'";
+    const std::string cmd =
+        "cd '" + dir_.string() + "' && " + command + " > '" + out + "' 2> '" + err + "'";
     const int status = std::system(cmd.c_str());
     return {WEXITSTATUS(status), Slurp(out), Slurp(err)};
   }

@@ -32,6 +32,7 @@ DEPENDS = {
     "results": ["mbs/analysis", "io"],
     "scene": ["mbs/analysis", "mbs/flexible", "engine", "driveline", "results"],
     "sweep": ["scene", "results", "io"],
+    "distributed": ["common", "linalg"],
 }
 
 

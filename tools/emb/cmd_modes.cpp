@@ -2,6 +2,9 @@
 // or with supports (held components of groups, symmetry planes, RBE2/RBE3 reference nodes with
 // held components, equations between nodes); results to an HDF5 file (+ XDMF for ParaView).
 //   emb modes beam.msh --rbe3 end_a:x,y,z,rx --rbe3 end_b:y,z --modes 8 --json
+// With --backend slepc the eigen-solve runs on MPI ranks (PETSc/SLEPc + MUMPS); every rank
+// meshes and assembles, rank 0 alone prints and writes:
+//   mpirun -n 4 emb modes crank.msh --backend slepc --modes 20
 
 #include <filesystem>
 #include <iostream>
@@ -18,6 +21,7 @@
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
 #include "tools/emb/progress_display.h"
+#include "tools/emb/slepc_backend.h"
 #include "tools/emb/support_options.h"
 
 namespace emb::cli {
@@ -49,21 +53,36 @@ struct ModesCommand {
     part.material.Validate();
     EMB_THROW_IF(num_modes < 1, "--modes: expected at least 1, got " << num_modes);
     CheckSolverOptions(tolerance, subspace, max_restarts, shift_hz);
+    std::unique_ptr<SlepcBackend> distributed;
+    if (backend == "slepc") {
+      EMB_THROW_IF(sturm_check, "--sturm-check: not available with --backend slepc (its "
+                                "negative_pivots entry counts the eigenvalues below the shift)");
+      EMB_THROW_IF(method != "auto", "--method " << method << ": expected auto with --backend "
+                                                    "slepc (SLEPc's Krylov-Schur is used)");
+      EMB_THROW_IF(block_size != 0, "--block-size: not used by --backend slepc, expected 0");
+      distributed = SlepcBackend::Start();
+      // Rank 0 alone prints and writes; the other ranks' stdout goes nowhere.
+      if (!distributed->is_root() && !std::freopen("/dev/null", "w", stdout))
+        EMB_THROW(InputError, "--backend slepc: cannot send the output of rank > 0 to /dev/null");
+    }
+    const bool root = !distributed || distributed->is_root();
     // Supports parsed (and the equation file read) before any work.
     const SupportSpecs specs = supports.Specs();
     // Every output checked and locked before any work.
-    const std::string h5_path = no_output ? "" : OutputPath();
+    const std::string h5_path = no_output || !root ? "" : OutputPath();
+    MeshingOptions meshing = part.Meshing();
+    if (!root) meshing.save_as.clear();  // --save-mesh: rank 0 writes it
     const std::string xdmf_path =
         h5_path.empty() || no_xdmf
             ? ""
             : std::filesystem::path(h5_path).replace_extension(".xdmf").string();
     const PreparedOutputs outputs(
-        {{h5_path, "-o"}, {xdmf_path, "the .xdmf beside -o"}, {part.save_mesh, "--save-mesh"}},
+        {{h5_path, "-o"}, {xdmf_path, "the .xdmf beside -o"}, {meshing.save_as, "--save-mesh"}},
         {part.file});
-    const ProgressFn progress = MakeProgressDisplay(out.quiet);
+    const ProgressFn progress = MakeProgressDisplay(out.quiet || !root);
     PhaseTimes times;
     Stopwatch sw;
-    const Mesh mesh = ReadMesh(part.file, part.Meshing(), progress);
+    const Mesh mesh = ReadMesh(part.file, meshing, progress);
     times.Add("mesh", sw.seconds());
 
     ModalOptions mo;
@@ -75,6 +94,7 @@ struct ModesCommand {
     mo.solver.sturm_check = sturm_check;
     if (backend == "eigen") mo.solver.backend = CholeskyBackend::kEigenLDLT;
     mo.solver.block_size = block_size;
+    if (distributed) mo.eigen_solver = distributed->Solver();
     if (method == "block") mo.solver.method = EigenMethod::kBlock;
     if (method == "lanczos") mo.solver.method = EigenMethod::kLanczos;
     if (method == "dense") mo.solver.method = EigenMethod::kDense;
@@ -89,6 +109,15 @@ struct ModesCommand {
     ModalResult modes = ComputeModes(sys, mo, progress);
     for (const auto& p : modes.eig.times.phases) times.Add(p.first, p.second);
     FinishProgressLine();
+    if (distributed) {
+      distributed->Finish();  // every rank agrees on the outcome; rank 0 goes on alone
+      if (!root) {
+        if (!modes.eig.ok())  // the exit code of rank 0, which says why
+          EMB_THROW(NumericalError, "modal analysis " << Name(modes.eig.status) << " (rank "
+                                                      << "0 reports the details)");
+        return;
+      }
+    }
     const double constraint_residual =
         specs.empty() || !modes.eig.ok() ? 0.0 : ConstraintResidual(held, modes);
     if (modes.eig.ok() && !(constraint_residual <= kConstraintResidualLimit)) {
@@ -146,6 +175,7 @@ struct ModesCommand {
     s.Add("block_size", "right-hand sides per solve", static_cast<long long>(modes.eig.block_size));
     s.Add("block_steps", "block solves", static_cast<long long>(modes.eig.block_steps));
     s.Add("nnz_factor", "nonzeros in factor", static_cast<long long>(modes.eig.factor.nnz_factor));
+    if (distributed) distributed->AddSummary(s);
     s.Add("max_backward_error", "max backward error", modes.eig.max_backward_error);
     s.Add("orthonormality_error", "M-orthonormality error", modes.eig.orthonormality_error);
     if (modes.eig.sturm_count >= 0)
@@ -209,10 +239,11 @@ void RegisterModesCommand(CLI::App& app) {
                 "Prove no mode was missed below the highest one found (extra LDL^T "
                 "factorisation, slow on big models)");
   cmd->add_option("--backend", st->backend,
-                  "Sparse factorisation: cholmod (supernodal, fast) or eigen (simplicial "
-                  "LDL^T, slow fallback)")
+                  "Sparse factorisation: cholmod (supernodal, fast), eigen (simplicial "
+                  "LDL^T, slow fallback) or slepc (distributed: SLEPc Krylov-Schur with MUMPS "
+                  "shift-invert on MPI ranks; run as mpirun -n N emb modes ... --backend slepc)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"cholmod", "eigen"}));
+      ->check(CLI::IsMember({"cholmod", "eigen", "slepc"}));
   cmd->add_option("-o,--output", st->output,
                   "HDF5 output file (default: <part name>_modes.h5 in the current directory)")
       ->check(NonEmptyPath());
