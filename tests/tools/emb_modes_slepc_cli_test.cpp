@@ -13,6 +13,7 @@
 #include <string>
 
 #include "tests/support/cli_fixture.h"
+#include "tests/support/mpirun.h"
 
 namespace {
 
@@ -35,15 +36,9 @@ class ModesSlepcCli : public emb::test::CliTest {
     return r.exit_code == 0 ? nlohmann::json::parse(r.out) : nlohmann::json{};
   }
 #if EMB_WITH_SLEPC
-  // mpirun for a CI container with 2 cores: root allowed, more ranks than cores allowed, no
-  // remote launcher needed, shared-memory transport without the ptrace-based single copy
-  // (often forbidden in containers).
   static std::string Command(const std::string& args, int ranks) {
-    const std::string emb = EMB_EXE;
-    if (ranks == 0) return "'" + emb + "' " + args;
-    return std::string("env OMPI_MCA_plm=isolated OMPI_MCA_btl_vader_single_copy_mechanism=none "
-                       "OMPI_MCA_rmaps_base_oversubscribe=1 ") +
-           MPIEXEC + " --allow-run-as-root -n " + std::to_string(ranks) + " '" + emb + "' " + args;
+    const std::string emb = "'" + std::string(EMB_EXE) + "' " + args;
+    return ranks == 0 ? emb : emb::test::MpirunPrefix(MPIEXEC, ranks) + emb;
   }
 #else
   static std::string Command(const std::string& args, int) {

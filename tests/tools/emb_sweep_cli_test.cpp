@@ -8,6 +8,7 @@
 
 #include "libemb/io/hdf5_file.h"
 #include "tests/support/cli_fixture.h"
+#include "tests/support/mpirun.h"
 
 namespace emb::test {
 namespace {
@@ -55,6 +56,23 @@ TEST_F(SweepCli, ParallelShardedAndMergedSweepsAgreeWithTheSerialOne) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ExpectSameSweep("serial.h5", "merged.h5");
   EXPECT_NE(r.out.find("\"points\""), std::string::npos);
+}
+
+// The same command on 2 MPI ranks (mpirun, no MPI code in emb): each rank runs its share
+// into its own default shard file, and their merge is the serial sweep.
+TEST_F(SweepCli, MpirunRanksRunTheirShardsAndMergeIntoTheSerialSweep) {
+  const std::string mpiexec = EMB_MPIEXEC;
+  if (mpiexec.empty()) GTEST_SKIP() << "no mpirun/mpiexec found at configure time";
+  ASSERT_EQ(Run(kSweep + " -o serial.h5").exit_code, 0);
+  const CliResult r = RunCommand(MpirunPrefix(mpiexec, 2) + "'" + EMB_EXE + "' " + kSweep +
+                                 " --shard auto");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string a = "one_cylinder_direct_sweep.shard0of2.h5",
+                    b = "one_cylinder_direct_sweep.shard1of2.h5";
+  EXPECT_EQ(Doubles(a, "/rpm"), (std::vector<double>{2000, 4000}));
+  EXPECT_EQ(Doubles(b, "/rpm"), (std::vector<double>{3000}));
+  ASSERT_EQ(Run("sweep --merge " + a + " " + b + " -o merged.h5 -q").exit_code, 0);
+  ExpectSameSweep("serial.h5", "merged.h5");
 }
 
 TEST_F(SweepCli, AnInterruptedSweepResumesFromItsPointFiles) {
