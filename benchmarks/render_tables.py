@@ -243,7 +243,8 @@ def free_vibration_supports_fv52(res):
 # emb reduce's phases in pipeline order ("total" is their sum without "write").
 REDUCE_PHASES = ["mesh", "assembly", "interfaces", "partition", "factorisation", "eigen-solve",
                  "checks", "constraint modes", "basis", "reduced matrices", "orthonormalisation",
-                 "invariants", "static load cases", "geometric stiffness", "certificate", "write"]
+                 "invariants", "static load cases", "geometric stiffness", "modal stresses",
+                 "certificate", "write"]
 
 
 def crank_reduce_sizes(res):
