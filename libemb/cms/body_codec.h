@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "libemb/common/error.h"
+#include "libemb/common/fnv1a.h"
 #include "libemb/io/hdf5_file.h"
 
 namespace emb::body_codec {
@@ -21,25 +22,8 @@ namespace emb::body_codec {
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 
-// FNV-1a (64 bit) over the bytes of the datasets, in the order they are written/read.
-class Digest {
- public:
-  void Add(const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i) {
-      h_ ^= p[i];
-      h_ *= 1099511628211ull;
-    }
-  }
-  std::string Hex() const {
-    char buf[17];
-    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
-    return buf;
-  }
-
- private:
-  std::uint64_t h_{14695981039346656037ull};
-};
+// FNV-1a over the bytes of the datasets, in the order they are written/read.
+using Digest = Fnv1a;
 
 // Writes/reads the numeric datasets of a body through one code path, so the digest of the
 // writer and the reader cover the same bytes in the same order.

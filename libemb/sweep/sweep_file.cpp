@@ -5,9 +5,9 @@
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/common/fnv1a.h"
 #include "libemb/io/atomic_file.h"
 #include "libemb/io/hdf5_file.h"
 
@@ -25,23 +25,20 @@ std::string Text(double x) {
 }  // namespace
 
 std::string TextDigest(const std::string& text) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+  Fnv1a h;
+  h.Add(text);
+  return h.Hex();
 }
 
 std::string FileDigest(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   EMB_THROW_IF(!in, "file '" << path << "' cannot be read (for the sweep's digest)");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
+  Fnv1a h;
+  std::vector<char> chunk(std::size_t{1} << 20);  // body files are 10-200 MB: stream them
+  while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
+    h.Add(chunk.data(), static_cast<std::size_t>(in.gcount()));
   EMB_THROW_IF(in.bad(), "file '" << path << "': read error (for the sweep's digest)");
-  return TextDigest(bytes.str());
+  return h.Hex();
 }
 
 std::string SweepDigest(const std::string& scene_text, const std::vector<std::string>& inputs,
