@@ -120,8 +120,8 @@ def find(data, path):
 
 
 # --------------------------------------------------------------------------- tables
-def crank_modes(res):
-    doc = res("crank_modes")
+def crank_modes(res, name="crank_modes"):
+    doc = res(name)
     rows = []
     for r in doc["data"]["runs"]:
         s = r["seconds"]
@@ -136,6 +136,10 @@ def crank_modes(res):
                   "checks s", "total s", "eigen/factor", "solves", "peak MB", "f7 Hz",
                   "max \\|Δf\\|/f vs finest", "status", "rigid modes", "max backward error"],
                  rows), [doc]
+
+
+def crank_modes_1m(res):
+    return crank_modes(res, "crank_modes_1m")
 
 
 def slepc_modes(res):
@@ -715,7 +719,7 @@ def order_cuts_inline4(res):
 TABLES = {f.__name__: f for f in [
     campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
-    crank_modes, slepc_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
+    crank_modes, crank_modes_1m, slepc_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
     crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening, stress_recovery_1cyl,
     stress_recovery_1cyl_fatigue, stress_recovery_i4, stress_recovery_i4_fatigue,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,

@@ -225,8 +225,25 @@ EigenResult SolveLowestModes(ShiftInvertSolver& solver, EigenSolverOptions optio
     if (!r.ok() || !std::isfinite(fmax_hz) ||
         FrequencyHz(r.eigenvalues[r.eigenvalues.size() - 1]) > fmax_hz || options.num_modes == limit)
       return r;
-    nev = std::max(2 * nev, nev + 20);
+    nev = NextModeCount(r.eigenvalues, fmax_hz);
   }
+}
+
+int NextModeCount(const Eigen::VectorXd& eigenvalues, double fmax_hz) {
+  constexpr double kMinExponent = 0.5, kMaxExponent = 3.0, kMargin = 1.2;
+  const int n = static_cast<int>(eigenvalues.size());
+  const int lowest = n + 10, highest = std::max(4 * n, n + 20);
+  if (n < 4) return lowest;
+  const double f_top = FrequencyHz(eigenvalues[n - 1]);
+  const double f_half = FrequencyHz(eigenvalues[n / 2 - 1]);
+  double p = kMaxExponent;  // no usable spread (e.g. only rigid modes): assume the steepest
+  if (f_half > 0.0 && f_top > f_half)
+    p = std::clamp(std::log(n / static_cast<double>(n / 2)) / std::log(f_top / f_half),
+                   kMinExponent, kMaxExponent);
+  if (!(f_top > 0.0) || !(fmax_hz > f_top)) return lowest;
+  const double predicted = kMargin * n * std::pow(fmax_hz / f_top, p);
+  if (!(predicted < highest)) return highest;
+  return std::max(lowest, static_cast<int>(std::ceil(predicted)));
 }
 
 double ModeSelection::CutoffHz() const {
