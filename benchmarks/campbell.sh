@@ -165,7 +165,7 @@ PY
       > "$dir/$tag.spectrum.json"
   done
   /usr/bin/python3 - "$dir" "$tvd_rpm" $names <<'PY'
-import json, sys
+import json, re, sys
 d, rpm, names = sys.argv[1], sys.argv[2], sys.argv[3:]
 rows = {}
 for n in names:
@@ -175,6 +175,9 @@ for n in names:
                "status": run["status"], "steady_state": run.get("steady_state", ""),
                "steps": run["steps"], "residual_evals": run.get("residual_evals"),
                "cpu_s": sum(float(x) for x in open(f"{d}/tvd_rubber_{n}_{rpm}.time").read().split()[:2])}
+    m = re.search(r"after (\d+) cycles", rows[n]["steady_state"])
+    rows[n]["cycles"] = int(m.group(1)) if m else None
+    rows[n]["steps_per_cycle"] = rows[n]["steps"] / rows[n]["cycles"] if m else None
 tune = {k: json.load(open(f"{d}/tvd_tune_{rpm}{s}.json")) for k, s in (("zener", ""), ("zener_eta02", "_eta02"))}
 base = rows["none"]["orders"]
 orders = []
@@ -188,7 +191,9 @@ for k in base:
     orders.append(o)
 json.dump({"rpm": float(rpm), "runs": rows, "orders": orders,
            "tuning": {k: {"summary": t["summary"], "zener": t["zener"]} for k, t in tune.items()},
-           "zener_steps_vs_kelvin_voigt": rows["zener"]["steps"] / rows["kelvin_voigt"]["steps"]},
+           "zener_steps_vs_kelvin_voigt": rows["zener"]["steps"] / rows["kelvin_voigt"]["steps"],
+           "zener_steps_per_cycle_vs_kelvin_voigt":
+               rows["zener"]["steps_per_cycle"] / rows["kelvin_voigt"]["steps_per_cycle"]},
           open(f"{d}/tvd_rubber_record.json", "w"), indent=1)
 PY
   /usr/bin/python3 "$root/benchmarks/record.py" merge tvd_rubber_inline4 "rpm$tvd_rpm=$dir/tvd_rubber_record.json" \
