@@ -1,6 +1,7 @@
 #include "libemb/scene/engine_parts.h"
 
 #include <memory>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/engine/cylinder_pressure.h"
@@ -73,7 +74,7 @@ void ReadRubber(const YAML::Node& n, const std::string& file, const std::string&
 
 }  // namespace
 
-void ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys) {
+std::string ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys) {
   engine::TorsionalDamperSpec s;
   s.name = name;
   s.hub_marker = r.GetString("hub");
@@ -91,7 +92,18 @@ void ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys
     s.stiffness = r.GetDouble("stiffness", 0.0, NumberRange::NonNegative("N m/rad"));
     s.damping = r.GetDouble("damping", 0.0, NumberRange::NonNegative("N m s/rad"));
   }
-  engine::AddTorsionalDamper(sys, s);  // names the damper in its errors
+  // AddTorsionalDamper names the damper in its errors.
+  const engine::TorsionalDamperParts parts = engine::AddTorsionalDamper(sys, s);
+  if (s.arms.empty()) return "";
+  std::ostringstream note;
+  note.precision(4);
+  note << "torsional damper '" << name << "': rubber k_inf " << s.stiffness << " N m/rad";
+  for (std::size_t j = 0; j < s.arms.size(); ++j)
+    note << "; arm " << j + 1 << " k " << s.arms[j].stiffness << " N m/rad, tau "
+         << s.arms[j].relaxation_time << " s, junction ring " << parts.junction_inertia[j]
+         << " kg m^2";
+  note << "; k*(w) within " << s.junction_error << " of the rubber up to " << s.band_hz << " Hz";
+  return note.str();
 }
 
 mbs::TimeFunction ReadCylinderPressure(const YAML::Node& n, const std::string& file,

@@ -25,7 +25,8 @@ void ReadJournalBearing(MapReader& r, const std::string& name, mbs::System* sys)
 /// optional band_hz and junction_error (the junction rings' band and error bound).
 /// @throws InputError naming the key for both forms at once, keys of both rubber forms,
 /// unknown keys, non-positive values, a loss factor outside (0, kMaxZenerLossFactor].
-void ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys);
+/// Returns a note for a rubber damper (its junction rings and the bound up to band_hz), else "".
+std::string ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys);
 
 /// {bore, stroke, rod, compression_ratio, intake_pressure, exhaust_pressure,
 ///  crankcase_pressure, polytropic_exponent, fired, combustion_start_deg,

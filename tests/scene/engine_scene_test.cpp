@@ -258,6 +258,13 @@ TEST(EngineSceneKeys, TorsionalDamperRubber) {
   const Scene a = ParseScene(std::string(kBase) + tvd(arms), "good.yaml");
   EXPECT_GE(a.system.FindBody("tvd_junction1"), 0);
   EXPECT_GE(a.system.FindBody("tvd_junction2"), 0);
+  // The loader says what it built: both junction rings and the bound.
+  const auto note = std::find_if(a.notes.begin(), a.notes.end(), [](const std::string& n) {
+    return n.find("torsional damper 'tvd'") != std::string::npos;
+  });
+  ASSERT_NE(note, a.notes.end());
+  EXPECT_NE(note->find("arm 2"), std::string::npos) << *note;
+  EXPECT_NE(note->find("within 0.001 of the rubber up to 2500 Hz"), std::string::npos) << *note;
   const auto& forces = a.system.force_elements();
   EXPECT_TRUE(std::any_of(forces.begin(), forces.end(),
                           [](const auto& e) { return e->name() == "tvd_arm2_dashpot"; }));
