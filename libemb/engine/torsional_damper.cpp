@@ -16,10 +16,10 @@ struct CoaxialRing {
 };
 
 // A rigid ring (polar inertia J, diametral J / 2) at the hub marker's initial pose, spinning
-// with the hub's body, on a revolute joint "<name>_bearing" about the hub marker's z axis; its
-// marker "<name>_axis" at its centre.
-CoaxialRing AddCoaxialRing(mbs::System* sys, const std::string& name, double mass, double J,
-                           int hub) {
+// with the hub's body, on a revolute joint `joint` about the hub marker's z axis; its marker
+// "<name>_axis" at its centre.
+CoaxialRing AddCoaxialRing(mbs::System* sys, const std::string& name, const std::string& joint,
+                           double mass, double J, int hub) {
   const mbs::Marker& m = sys->marker(hub);
   // The hub marker's initial pose and velocity from its body's initial data (undeformed).
   Eigen::Vector3d p_W = m.p_BM, v_W = Eigen::Vector3d::Zero(), omega_W = Eigen::Vector3d::Zero();
@@ -44,7 +44,7 @@ CoaxialRing AddCoaxialRing(mbs::System* sys, const std::string& name, double mas
   r.body = sys->AddBody(ring);
   r.marker = sys->AddMarker(name + "_axis", name, Eigen::Vector3d::Zero(),
                             Eigen::Matrix3d::Identity());
-  sys->AddJoint(name + "_bearing", mbs::JointType::kRevolute, name + "_axis", hub_name);
+  sys->AddJoint(joint, mbs::JointType::kRevolute, name + "_axis", hub_name);
   return r;
 }
 
@@ -80,7 +80,8 @@ TorsionalDamperParts AddTorsionalDamper(mbs::System* sys, const TorsionalDamperS
     EMB_THROW(InputError, what << " hub: " << e.what());
   }
   TorsionalDamperParts parts;
-  const CoaxialRing ring = AddCoaxialRing(sys, s.name + "_ring", s.ring_mass, s.ring_inertia, hub);
+  const CoaxialRing ring =
+      AddCoaxialRing(sys, s.name + "_ring", s.name + "_bearing", s.ring_mass, s.ring_inertia, hub);
   parts.ring_body = ring.body;
   parts.ring_marker = ring.marker;
   if (s.stiffness > 0.0 || s.damping > 0.0)
@@ -88,8 +89,9 @@ TorsionalDamperParts AddTorsionalDamper(mbs::System* sys, const TorsionalDamperS
         s.name, parts.ring_marker, hub, s.stiffness, s.damping, 0.0));
   for (std::size_t j = 0; j < s.arms.size(); ++j) {
     const std::string arm = s.name + "_arm" + std::to_string(j + 1);
+    const std::string junction_name = s.name + "_junction" + std::to_string(j + 1);
     const CoaxialRing junction =
-        AddCoaxialRing(sys, s.name + "_junction" + std::to_string(j + 1),
+        AddCoaxialRing(sys, junction_name, junction_name + "_bearing",
                        s.ring_mass * eps[j] / s.ring_inertia, eps[j], hub);
     const double k = s.arms[j].stiffness, c = k * s.arms[j].relaxation_time;
     sys->AddForceElement(std::make_shared<mbs::RotationalSpringDamper>(

@@ -57,8 +57,9 @@ struct TorsionalDamperParts {
 };
 
 /// Adds the ring body "<name>_ring" (at the hub marker's initial pose, spinning with the hub's
-/// body), its marker "<name>_ring_axis", the revolute joint "<name>_bearing" and the
-/// spring-damper "<name>" to an unfinalized system.
+/// body), its marker "<name>_ring_axis", the revolute joint "<name>_bearing", the
+/// spring-damper "<name>" (when k or c > 0) and per Maxwell arm its junction ring, joint and
+/// two elements (file comment) to an unfinalized system.
 /// @throws InputError naming the damper for a negative or zero ring mass or inertia, negative
 /// stiffness or damping, k, c zero and no arm, an arm's stiffness or relaxation time not > 0
 /// (naming the arm), band_hz not > 0, junction_error outside (0, 1), or an unknown hub marker

@@ -258,6 +258,8 @@ TEST(EngineSceneKeys, TorsionalDamperRubber) {
   const Scene a = ParseScene(std::string(kBase) + tvd(arms), "good.yaml");
   EXPECT_GE(a.system.FindBody("tvd_junction1"), 0);
   EXPECT_GE(a.system.FindBody("tvd_junction2"), 0);
+  EXPECT_GE(a.system.FindElement("tvd_bearing"), 0);
+  EXPECT_GE(a.system.FindElement("tvd_junction2_bearing"), 0);
   // The loader says what it built: both junction rings and the bound.
   const auto note = std::find_if(a.notes.begin(), a.notes.end(), [](const std::string& n) {
     return n.find("torsional damper 'tvd'") != std::string::npos;
