@@ -646,6 +646,24 @@ def campbell_angles(res):
                   "largest change vs half the angles [%]", "smallest decay [1/s]"], rows), [doc]
 
 
+def tvd_rubber_inline4(res):
+    doc = res("tvd_rubber_inline4")
+    r = doc["data"]["runs"][0]
+    rows = [[num(o["order"]), num(o["none_rad"] * 1e3, ".3g"),
+             num(o["kelvin_voigt_rad"] * 1e3, ".3g"), num(o["kelvin_voigt_ratio"], ".2f"),
+             num(o["zener_rad"] * 1e3, ".3g"), num(o["zener_ratio"], ".2f"),
+             num(o["zener_eta02_rad"] * 1e3, ".3g"), num(o["zener_eta02_ratio"], ".2f")]
+            for o in r["orders"]]
+    lines = table(["order", "no TVD [mrad]", "Kelvin-Voigt [mrad]", "KV / none",
+                   "Zener, Den Hartog's η [mrad]", "Zener / none", "Zener, η = 0.2 [mrad]",
+                   "Zener 0.2 / none"], rows)
+    lines += ["", "Runs at %g rpm: " % r["rpm"] + "; ".join(
+        "`%s` %s, steady state %s, %s IDA steps, %s CPU s" % (k, v["status"], v["steady_state"],
+                                                            v["steps"], num(v["cpu_s"], ".1f"))
+        for k, v in r["runs"].items()) + "."]
+    return lines, [doc]
+
+
 def tvd_inline4_3250(res):
     return tvd_inline4(res, "tvd_inline4_3250")
 
@@ -717,7 +735,7 @@ def order_cuts_inline4(res):
 
 
 TABLES = {f.__name__: f for f in [
-    campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250,
+    campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250, tvd_rubber_inline4,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
     crank_modes, crank_modes_1m, slepc_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
     crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening, stress_recovery_1cyl,
