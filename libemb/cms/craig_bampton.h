@@ -21,6 +21,7 @@
 ///
 /// Without interfaces the basis is the six rigid-body motions plus free-free elastic modes.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,7 @@
 #include "libemb/common/timer.h"
 #include "libemb/fe/assembly.h"
 #include "libemb/linalg/eigen_solver.h"
+#include "libemb/linalg/pencil_solver.h"
 
 namespace emb {
 
@@ -59,6 +61,10 @@ struct ReductionOptions {
   ModeSelection selection;
   double shift_hz{-1.0};       ///< Lanczos shift [Hz] (negative: lowest modes)
   EigenSolverOptions solver;   ///< tolerance, subspace, backend; num_modes/shift are set here
+  /// Solver of the interior pencil (K_II, M_II, C) for the fixed-interface modes and the
+  /// constraint modes; empty: LocalPencilSolver (one process, solver.backend). A distributed
+  /// one (distributed/slepc_pencil_solver.h) makes BuildReductionBasis collective.
+  PencilSolverFactory pencil_solver;
 };
 
 /// A reduction basis in full FE unknowns, with what it took to make it.
@@ -93,15 +99,24 @@ struct ReductionBasis {
   Eigen::MatrixXd static_responses;
   std::string static_support;          ///< "interfaces held" or "inertia relief"
   PhaseTimes times;                    ///< "constraint modes", "factorisation", "eigen-solve", ...
+  /// False on an MPI rank other than 0 of a distributed reduction: it took part in the solves,
+  /// rank 0 holds the basis (only interfaces, frequencies and times are filled in here).
+  bool on_this_process{true};
 };
 
 /// The six rigid-body motions about the origin as full FE fields (N × 6): columns t_x, t_y,
 /// t_z, θ_x, θ_y, θ_z.
 Eigen::MatrixXd RigidBodyModes(const Mesh& mesh);
 
-/// The lowest eigenpairs of the solver's (constrained) pencil: `initial` of them, then more
-/// (at least doubling, reusing the factorisation) until the highest one found is above
-/// fmax_hz (infinite: no growth) or all `available` − 1 are asked for.
+/// An eigen-solve of one pencil for the given options (num_modes set by the caller).
+using EigenSolveFn = std::function<EigenResult(const EigenSolverOptions&, const ProgressFn&)>;
+
+/// The lowest eigenpairs of a (constrained) pencil: `initial` of them, then more (at least
+/// doubling, reusing the factorisation) until the highest one found is above fmax_hz
+/// (infinite: no growth) or all `available` − 1 are asked for.
+EigenResult SolveLowestModes(const EigenSolveFn& solve, EigenSolverOptions options, int initial,
+                             double fmax_hz, int available, const ProgressFn& progress = {});
+/// The same with a ShiftInvertSolver of the pencil.
 EigenResult SolveLowestModes(ShiftInvertSolver& solver, EigenSolverOptions options, int initial,
                              double fmax_hz, int available, const ProgressFn& progress = {});
 
