@@ -106,7 +106,8 @@ EigenResult SolveSelected(const EigenSolveFn& solve, double sigma, int available
     if (keep == found && found == limit) note += "; every available mode is below the cut-off";
   }
   r.eigenvalues.conservativeResize(keep);
-  r.vectors.conservativeResize(Eigen::NoChange, keep);
+  // (Vectors may be absent: on the ranks of a distributed solve other than 0.)
+  if (r.vectors.cols() > 0) r.vectors.conservativeResize(Eigen::NoChange, keep);
   r.backward_errors.conservativeResize(keep);
   r.num_converged = std::min(r.num_converged, keep);
   return r;
