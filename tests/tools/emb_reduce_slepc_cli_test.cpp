@@ -92,9 +92,11 @@ TEST_F(ReduceSlepcCli, BodyFileEqualsTheCholmodOneOnOneAndTwoRanks) {
 TEST_F(ReduceSlepcCli, BadInputIsOneMessageAndExitOneOnEveryRank) {
   for (const auto& [args, word] :
        std::vector<std::pair<std::string, std::string>>{
-           {"reduce bar.geo -i journal --modes 4", "journal"},
-           {"reduce bar.geo --free-free --modes 4", "--free-free"}}) {
-    const emb::test::CliResult r = RunCommand(Command(args + " --backend slepc -q -o out.h5", 2));
+           {"reduce bar.geo -i journal --modes 4 -o out.h5", "journal"},
+           {"reduce bar.geo --free-free --modes 4 -o out.h5", "--free-free"},
+           // Rank 0 alone checks the output: the other rank must not go on into the solves.
+           {"reduce bar.geo -i x0 --modes 4 -o nodir/out.h5", "nodir"}}) {
+    const emb::test::CliResult r = RunCommand(Command(args + " --backend slepc -q", 2));
     EXPECT_EQ(r.exit_code, 1) << args << "\n" << r.err;
     const size_t first = r.err.find("emb: error:");
     EXPECT_NE(first, std::string::npos) << r.err;

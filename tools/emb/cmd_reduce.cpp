@@ -155,6 +155,7 @@ struct ReduceCommand {
     sw.Restart();
     const SystemMatrices sys = AssembleSystem(mesh, part.material, progress);
     times.Add("assembly", sw.seconds());
+    if (distributed) distributed->Checkpoint();  // every rank ready for the collective solves
     const ReducedBody body = ReduceBody(mesh, sys, part.material, job, progress);
     if (!body.on_this_process) return;  // an MPI rank done with its part of the solves
     for (const auto& p : body.times.phases) times.Add(p.first, p.second);

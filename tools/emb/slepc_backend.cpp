@@ -71,24 +71,39 @@ class SlepcBackendImpl final : public SlepcBackend {
       mine = kExitNumerical, error = std::current_exception();
     } catch (const Interrupted&) {
       throw;  // ends the process by its signal; mpirun ends the others
+    } catch (const ExitQuietly&) {
+      throw;  // the ranks agreed at a checkpoint
     } catch (...) {
       mine = kExitInternal, error = std::current_exception();
     }
-    const int root = session_->FromRoot(mine);
-    const int first = session_->MaxOverRanks(mine ? session_->rank() : -1);  // a failed rank
-    if (first < 0) return;
-    // Every rank knows the outcome: SLEPc, PETSc and MPI end together (collective).
-    session_.reset();
-    if (error && (is_root() || root == 0)) std::rethrow_exception(error);
-    if (root != 0) throw ExitQuietly{root};  // rank 0 reported it
-    EMB_THROW(NumericalError, "MPI rank " << first << " failed (its message is above)");
+    if (exchanged_failure_) std::rethrow_exception(error);  // agreed at Checkpoint
+    Exchange(mine, error);
+  }
+  void Checkpoint() override {
+    Exchange(0, nullptr);
   }
   void Finish() override { session_.reset(); }
 
  private:
+  // Rank 0's exit code and the highest failed rank to every rank; on a failure anywhere every
+  // rank ends SLEPc/PETSc/MPI and throws: its own error (rank 0, or a rank that failed alone),
+  // ExitQuietly (rank 0 reported), or an error naming the failed rank.
+  void Exchange(int mine, const std::exception_ptr& error) {
+    const int root = session_->FromRoot(mine);
+    const int first = session_->MaxOverRanks(mine ? session_->rank() : -1);  // a failed rank
+    if (first < 0) return;
+    exchanged_failure_ = true;
+    const bool rank0 = is_root();
+    // Every rank knows the outcome: SLEPc, PETSc and MPI end together (collective).
+    session_.reset();
+    if (error && (rank0 || root == 0)) std::rethrow_exception(error);
+    if (root != 0) throw ExitQuietly{root};  // rank 0 reported it
+    EMB_THROW(NumericalError, "MPI rank " << first << " failed (its message is above)");
+  }
   std::optional<distributed::SlepcSession> session_{std::in_place};
   distributed::SlepcSolveStats stats_;
   distributed::SlepcReductionStats reduction_;
+  bool exchanged_failure_{false};
 };
 #endif
 

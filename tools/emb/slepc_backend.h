@@ -41,6 +41,11 @@ class SlepcBackend {
   /// rank 0 throws an error naming it. `stage` may end early on ranks other than 0 (e.g. once
   /// the distributed solves are over): they wait here for rank 0.
   virtual void Agree(const std::function<void()>& stage) = 0;
+  /// Inside an Agree stage, before its collective part: the ranks check that the stage went
+  /// well so far on every one of them (the same exchange as Agree's), so that a failure on one
+  /// rank alone (e.g. rank 0's output checks) ends every rank instead of leaving the others
+  /// in a collective solve. Throws as Agree does if one failed.
+  virtual void Checkpoint() = 0;
   /// Ends SLEPc/PETSc/MPI (collective: every rank, once the solve is over).
   virtual void Finish() = 0;
 };
