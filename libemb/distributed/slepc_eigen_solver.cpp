@@ -82,7 +82,10 @@ EigenResult SolveGeneralizedEigenSlepc(const SlepcSession& session, const Sparse
   const PetscInt size = n + nc;
   const auto rows = OwnedRows(size);
   OwnedMat Kp, Mp;
-  {
+  if (nc == 0) {  // no copies
+    Distribute(K, rows, Kp);
+    Distribute(M, rows, Mp);
+  } else {
     SparseMatrix padded_M = M;
     padded_M.conservativeResize(size, size);
     Distribute(SaddlePoint(K, C), rows, Kp);

@@ -8,6 +8,8 @@
 #include <optional>
 
 #include <exception>
+#include <new>
+#include <stdexcept>
 
 #include "libemb/distributed/slepc_eigen_solver.h"
 #include "libemb/distributed/slepc_pencil_solver.h"
@@ -73,6 +75,10 @@ class SlepcBackendImpl final : public SlepcBackend {
       throw;  // ends the process by its signal; mpirun ends the others
     } catch (const ExitQuietly&) {
       throw;  // the ranks agreed at a checkpoint
+    } catch (const std::bad_alloc&) {  // main's codes: too large a problem is bad input
+      mine = kExitInput, error = std::current_exception();
+    } catch (const std::length_error&) {
+      mine = kExitInput, error = std::current_exception();
     } catch (...) {
       mine = kExitInternal, error = std::current_exception();
     }
