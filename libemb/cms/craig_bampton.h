@@ -17,6 +17,10 @@
 ///    (PinnedConstrainedSolver). The rigid response, known exactly, is restored afterwards;
 ///  - fixed-interface normal modes Φ: K_II φ = λ M_II φ on C φ = 0 with the RBE2 surfaces
 ///    clamped, by shift-invert Lanczos on the same factorisation.
+/// Both solves go through a ConstrainedPencilSolver (linalg/pencil_solver.h): the above is
+/// LocalPencilSolver's (one process); the distributed one (ReductionOptions::pencil_solver,
+/// distributed/slepc_pencil_solver.h) factorises [K_II Cᵀ; C 0] with MUMPS instead and runs
+/// SLEPc on the constrained pencil, to the same solutions.
 /// CB is statically exact: for loads at the interfaces, T reproduces the full solution.
 ///
 /// Without interfaces the basis is the six rigid-body motions plus free-free elastic modes.
