@@ -97,6 +97,10 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   ReductionBasis basis =
       BuildReductionBasis(mesh, sys, interfaces, job.reduction, progress, inertial_loads);
   for (const auto& [name, s] : basis.times.phases) body.times.Add(name, s);
+  if (!basis.on_this_process) {  // an MPI rank that took part in the solves: rank 0 goes on
+    body.on_this_process = false;
+    return body;
+  }
   body.interfaces = basis.interfaces;
   body.free_free = basis.free_free;
   body.num_boundary = basis.num_boundary;
