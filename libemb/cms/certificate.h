@@ -23,6 +23,7 @@
 #include "libemb/cms/craig_bampton.h"
 #include "libemb/cms/inertia_invariants.h"
 #include "libemb/cms/orthonormal_modes.h"
+#include "libemb/common/timer.h"
 #include "libemb/fe/mass_properties.h"
 
 namespace emb {
@@ -88,7 +89,9 @@ struct ReductionCertificate {
   double min_mac{1.0};              ///< over paired modes
   int num_unrepresented{0};         ///< full modes below fmax with MAC < 0.5 to every reduced one
   std::string reference_log;  ///< the full model's eigen-solve: shift, iterations, residual
-  double reference_seconds{0.0};
+  /// Cost of the certificate's own solves: "coupled model" (items 4 and 5's reference model),
+  /// "reference modes" (4: factorisation and eigen-solve), "static check" (5).
+  PhaseTimes times;
   // 5.
   bool static_run{false};
   std::string static_note;    ///< support and loads, or why it was not run

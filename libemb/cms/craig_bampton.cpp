@@ -213,7 +213,7 @@ EigenResult SolveLowestModes(const EigenSolveFn& solve, EigenSolverOptions optio
 int NextModeCount(const Eigen::VectorXd& eigenvalues, double fmax_hz) {
   constexpr double kMinExponent = 0.5, kMaxExponent = 3.0, kMargin = 1.2;
   const int n = static_cast<int>(eigenvalues.size());
-  const int lowest = n + 10, highest = std::max(4 * n, n + 20);
+  const int lowest = n + 10, highest = std::max(3 * n, n + 20);
   if (n < 4) return lowest;
   const double f_top = FrequencyHz(eigenvalues[n - 1]);
   const double f_half = FrequencyHz(eigenvalues[n / 2 - 1]);

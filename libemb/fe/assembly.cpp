@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "libemb/common/error.h"
+#include "libemb/common/parallel.h"
 #include "libemb/fe/cell_dispatch.h"
 #include "libemb/fe/solid_element.h"
 
@@ -79,41 +81,65 @@ SparseMatrix BuildPattern(const NodeGraph& g, int num_nodes) {
   return A;
 }
 
+// Cells whose element matrices are computed concurrently before they are added in cell order
+// (the numbers do not depend on the thread count), and the fixed number of tasks per batch.
+constexpr int kCellBatch = 1024;
+constexpr int kTasksPerBatch = 16;
+
 template <CellType T>
 void AssembleBlock(const Mesh& mesh, const CellBlock& block, const NodeGraph& g,
                    const IsotropicMaterial& mat, SparseMatrix& K, SparseMatrix& M,
                    double& volume, const ProgressFn& progress, int& done, int total) {
   using Element = SolidElement<T>;
   constexpr int kN = Element::kNodes;
-  typename Element::NodeCoords X;
-  typename Element::Stiffness Ke;
-  typename Element::ScalarMass me;
+  struct Computed {
+    typename Element::Stiffness Ke;
+    typename Element::ScalarMass me;
+    double det{0.0}, size{0.0};
+  };
   const double lambda = mat.lambda(), mu = mat.mu(), rho = mat.density;
   const int* outer = K.outerIndexPtr();
   double* kval = K.valuePtr();
   double* mval = M.valuePtr();
   int pos[kN][kN];
   const int report_every = std::max(1, total / 50);
-  for (int c = 0; c < block.num_cells(); ++c) {
-    const int* nodes = block.cell(c);
-    for (int a = 0; a < kN; ++a) X.col(a) = mesh.nodes.col(nodes[a]);
-    const double det_k = Element::CalcStiffness(X, lambda, mu, Ke);
-    const double det_m = Element::CalcScalarMass(X, rho, me);
-    const double size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
-    CheckCellJacobian(mesh.source, T, block.tags[c], std::min(det_k, det_m), size);
-    volume += me.sum() / rho;  // Σ_ab m_ab = ρ ∫ dV (partition of unity)
-    for (int b = 0; b < kN; ++b)
-      for (int a = 0; a < kN; ++a) pos[a][b] = 3 * g.Find(nodes[b], nodes[a]);
-    for (int b = 0; b < kN; ++b)
-      for (int j = 0; j < 3; ++j) {
-        const int col_start = outer[3 * nodes[b] + j];
-        for (int a = 0; a < kN; ++a) {
-          const int base = col_start + pos[a][b];
-          for (int i = 0; i < 3; ++i) kval[base + i] += Ke(3 * a + i, 3 * b + j);
-          mval[base + j] += me(a, b);
-        }
+  const int num_cells = block.num_cells();
+  std::vector<Computed> batch(static_cast<size_t>(std::min(kCellBatch, num_cells)));
+  for (int first = 0; first < num_cells; first += kCellBatch) {
+    const int count = std::min(kCellBatch, num_cells - first);
+    // The element matrices (most of the cost), concurrently.
+    ParallelFor(kTasksPerBatch, [&](int task) {
+      typename Element::NodeCoords X;
+      for (int k = count * task / kTasksPerBatch; k < count * (task + 1) / kTasksPerBatch; ++k) {
+        const int* nodes = block.cell(first + k);
+        for (int a = 0; a < kN; ++a) X.col(a) = mesh.nodes.col(nodes[a]);
+        Computed& e = batch[k];
+        const double det_k = Element::CalcStiffness(X, lambda, mu, e.Ke);
+        const double det_m = Element::CalcScalarMass(X, rho, e.me);
+        e.det = std::min(det_k, det_m);
+        e.size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
       }
-    if (++done % report_every == 0) ReportProgress(progress, "assembly", double(done) / total);
+    });
+    // Checked and added in cell order.
+    for (int k = 0; k < count; ++k) {
+      const int c = first + k;
+      const Computed& e = batch[k];
+      const int* nodes = block.cell(c);
+      CheckCellJacobian(mesh.source, T, block.tags[c], e.det, e.size);
+      volume += e.me.sum() / rho;  // Σ_ab m_ab = ρ ∫ dV (partition of unity)
+      for (int b = 0; b < kN; ++b)
+        for (int a = 0; a < kN; ++a) pos[a][b] = 3 * g.Find(nodes[b], nodes[a]);
+      for (int b = 0; b < kN; ++b)
+        for (int j = 0; j < 3; ++j) {
+          const int col_start = outer[3 * nodes[b] + j];
+          for (int a = 0; a < kN; ++a) {
+            const int base = col_start + pos[a][b];
+            for (int i = 0; i < 3; ++i) kval[base + i] += e.Ke(3 * a + i, 3 * b + j);
+            mval[base + j] += e.me(a, b);
+          }
+        }
+      if (++done % report_every == 0) ReportProgress(progress, "assembly", double(done) / total);
+    }
   }
 }
 

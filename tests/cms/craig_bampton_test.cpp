@@ -277,8 +277,8 @@ TEST(CraigBampton, CutoffSelectionKeepsModesBelowIt) {
 
 // The growth of a cut-off solve: spectra whose counts follow N(f) = (f / f1)^p exactly (p = 1/2
 // beam bending, 1 torsion, 3 a solid) get a request covering the cut-off with the stated
-// margin, in one step; a spectrum without spread falls back to the steepest law, and the
-// request stays within [N + 10, max(4N, N + 20)].
+// margin, in one step (up to the cap); a spectrum without spread falls back to the steepest
+// law, and the request stays within [N + 10, max(3N, N + 20)].
 TEST(CraigBampton, NextModeCountCoversTheCutoffInOneStep) {
   auto spectrum = [](int n, double p) {  // λ_k with f_k = f1 k^{1/p}
     Eigen::VectorXd lambda(n);
@@ -296,11 +296,11 @@ TEST(CraigBampton, NextModeCountCoversTheCutoffInOneStep) {
     const double needed = std::pow(fmax / 100.0, p);  // N(fmax) of the model
     const int next = NextModeCount(lambda, fmax);
     SCOPED_TRACE(p);
-    EXPECT_GE(next, std::min<double>(needed, 4 * n));
+    EXPECT_GE(next, std::min<double>(needed, 3 * n));
     EXPECT_LE(next, std::max(1.25 * needed, n + 10.0));  // the 20 % margin, and rounding
   }
-  // Far beyond what 20 modes tell: capped at 4N.
-  EXPECT_EQ(NextModeCount(spectrum(20, 3.0), 1e6), 80);
+  // Far beyond what 20 modes tell: capped at 3N.
+  EXPECT_EQ(NextModeCount(spectrum(20, 3.0), 1e6), 60);
   // Only rigid modes (λ ≈ 0): no spread, the smallest step.
   EXPECT_EQ(NextModeCount(Eigen::VectorXd::Zero(6), 1000.0), 16);
   // Already past the cut-off: the smallest step.

@@ -233,6 +233,8 @@ struct ReduceCommand {
     cert.Add("static_note", "static check", ct.static_note);
     if (ct.static_run) cert.Add("static_error", "static rel. error (limit 1e-8)", ct.static_error);
     cert.Add("reduction_log", "fixed-interface eigen-solve", ct.reduction_log);
+    for (const auto& [name, secs] : ct.times.phases)
+      cert.Add("seconds_" + name, "time " + name + " [s]", secs);
     if (!body.free_free) {
       cert.Add("constraint_mode_residual", "constraint-mode residual", ct.constraint_mode_residual);
       cert.Add("constraint_mode_limit", "constraint-mode limit (scaled by cond K_II)",
