@@ -26,8 +26,7 @@ EigenResult LocalPencilSolver::Eigenpairs(const EigenSolverOptions& options,
 Eigen::MatrixXd LocalPencilSolver::StaticSolve(const Eigen::MatrixXd& B, const Eigen::MatrixXd& Q,
                                                int& iterations, const ProgressFn& progress) {
   if (const PinnedConstrainedSolver* pinned = solver_.pinned()) {
-    iterations = PinnedConstrainedSolver::kRefinementSteps;
-    return pinned->Solve(B, Q);
+    return pinned->Solve(B, Q, nullptr, &iterations);
   }
   return RefineConstrainedSolve(
       solver_.K(), solver_.C(), B, Q,

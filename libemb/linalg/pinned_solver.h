@@ -37,16 +37,20 @@ class PinnedConstrainedSolver {
   /// constraints do not hold the rigid motions).
   PinnedConstrainedSolver(const SparseMatrix& K, const Eigen::MatrixXd& R, std::vector<int> pins,
                           const SparseMatrix& C);
-  /// Steps of iterative refinement every Solve makes.
+  /// Most steps of iterative refinement a Solve makes; it stops earlier once a correction
+  /// changes X by at most kRefinementTolerance of its largest entry (X was already that
+  /// accurate: the same floor as the constraint modes' refinement, pencil_solver.h).
   static constexpr int kRefinementSteps = 3;
+  static constexpr double kRefinementTolerance = 1e-13;
   bool ok() const { return ok_; }
   const std::string& message() const { return message_; }
   /// The factorisation of K_ff.
   const FactorInfo& factor() const { return chol_.info(); }
 
-  /// X (n × k) and, if wanted, μ (m × k) for right-hand sides B (n × k) and Q (m × k).
+  /// X (n × k) and, if wanted, μ (m × k) for right-hand sides B (n × k) and Q (m × k);
+  /// `steps`, if given, receives the refinement steps made.
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& B, const Eigen::MatrixXd& Q,
-                        Eigen::MatrixXd* multipliers = nullptr) const;
+                        Eigen::MatrixXd* multipliers = nullptr, int* steps = nullptr) const;
   /// X for Q = 0 by one pass, without refinement: the constrained inverse of K on C x = 0 as
   /// an operator (a shift-invert operator at σ = 0), accurate to cond(K_ff)·ε like any solve.
   Eigen::MatrixXd Apply(const Eigen::MatrixXd& B) const;
