@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/common/parallel.h"
 #include "libemb/fe/geometric_stiffness.h"
 
 namespace emb {
@@ -68,7 +69,8 @@ GeometricStiffness ReduceGeometricStiffness(const Mesh& mesh, const IsotropicMat
   const Eigen::Map<const RowMajor> P(phi.data(), n, 3 * ne);
   const SparseMatrix node_pattern = NodePattern(pattern);
   GeometricStiffness g;
-  for (int p = 0; p < 9; ++p) {
+  // The nine load cases are independent, each writing its own matrix: run concurrently.
+  ParallelFor(9, [&](int p) {
     const SparseMatrix S = AssembleNodalGeometricStiffness(
         mesh, CalcStressField(mesh, material, responses.col(p)), node_pattern);
     const RowMajor SP = S * P;
@@ -77,7 +79,7 @@ GeometricStiffness ReduceGeometricStiffness(const Mesh& mesh, const IsotropicMat
       A.noalias() += P.middleCols(c * ne, ne).transpose() * SP.middleCols(c * ne, ne);
     Eigen::MatrixXd& out = p < 6 ? g.centrifugal[p] : g.translational[p - 6];
     out = 0.5 * (A + A.transpose());
-  }
+  });
   g.present = true;
   return g;
 }
