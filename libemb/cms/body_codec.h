@@ -63,6 +63,20 @@ class Codec {
       v = h5_.ReadInts(path);
     digest_.Add(v.data(), sizeof(int) * v.size());
   }
+  // An integer table of `cols` columns as a (rows, cols) dataset (e.g. face connectivity).
+  void IntTable(const std::string& path, std::vector<int>& v, std::uint64_t cols) {
+    if (writing_) {
+      EMB_CHECK(cols > 0 && v.size() % cols == 0);
+      h5_.Write(path, v.data(), {std::uint64_t(v.size()) / cols, cols});
+    } else {
+      const auto shape = h5_.Shape(path);
+      EMB_THROW_IF(shape.size() != 2 || shape[1] != cols,
+                   "'" << h5_.path() << "': " << path << ": expected a (rows, " << cols
+                       << ") dataset");
+      v = h5_.ReadInts(path);
+    }
+    digest_.Add(v.data(), sizeof(int) * v.size());
+  }
   // k matrices of one size as a (k, rows, cols) dataset.
   template <std::size_t k>
   void Stack(const std::string& path, std::array<Eigen::MatrixXd, k>& A) {
