@@ -1,0 +1,165 @@
+// The whole-surface stress field as a user meets it (issue 17): `emb reduce --stress-surface`
+// stores the surface's modal stresses; `emb run` with `surface_field_times` writes the field on
+// the whole surface (faces, von Mises, sigma_1, signed von Mises, components) beside the
+// results, whose values at a group's nodes reproduce that group's hot-spot channels; a body
+// file without surface stresses is refused naming the file and the option.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "libemb/io/hdf5_file.h"
+#include "tests/support/cli_fixture.h"
+#include "tests/support/flexible_bar.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using emb::test::CliResult;
+
+// The hot-spot channel and the surface field evaluate the same rows of the same modal
+// stresses at the same eta, as matrix-vector products of different sizes.
+constexpr double kRoundOff = 1e-10;  // relative to the channel's value
+
+class EmbStressSurfaceCli : public emb::test::CliTest {
+ protected:
+  // A bar clamped at x0 with a tip force on x1 (as emb_stress_cli_test), 12 x 2 x 2 Hex20.
+  static emb::testing::BarSpec Bar(std::vector<std::string> groups, bool surface) {
+    emb::testing::BarSpec bar;
+    bar.interfaces = {"x0:rbe2", "x1:rbe2"};
+    bar.modes = 6;
+    bar.ny = 2;
+    bar.nz = 2;
+    bar.damping_ratio = 0.02;
+    bar.keep_mesh_shapes = true;
+    bar.stress_groups = std::move(groups);
+    bar.stress_surface = surface;
+    return bar;
+  }
+  void WriteScene(const std::string& name, const emb::testing::BarSpec& bar,
+                  const std::string& stress_outputs) const {
+    std::ofstream(dir_ / name)
+        << "bodies:\n  - {name: bar, model: cms, body_file: " << emb::testing::FlexibleBarFile(bar)
+        << "}\n"
+        << "markers:\n  - {name: root, body: bar, interface: x0}\n"
+        << "  - {name: tip, body: bar, interface: x1}\n"
+        << "  - {name: base, body: ground, frame: world, position: [0, 0.02, 0.015]}\n"
+        << "joints:\n  - {name: clamp, type: fixed, i: root, j: base}\n"
+        << "forces:\n  - {name: load, type: force, marker: tip, direction: [0, 0.6, 0.8], "
+           "function: {harmonic: {amplitude: 500, frequency_hz: 200, offset: 500}}}\n"
+        << "stress_outputs:\n" << stress_outputs
+        << "analysis: {type: dynamic, t_end: 0.02, output_step: 2.5e-4}\n";
+  }
+};
+
+TEST_F(EmbStressSurfaceCli, SurfaceFieldMatchesTheHotSpotChannels) {
+  const auto bar = Bar({"z1", "y0"}, true);
+  WriteScene("surf.yaml", bar,
+             "  - name: s\n    body: bar\n    field_times: [0.01]\n"
+             "    surface_field_times: [0.0101, 0.02]\n");
+  const CliResult r = Run("run -q --json surf.yaml -o surf.h5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  emb::H5File res((dir_ / "surf.h5").string(), emb::H5File::Mode::kRead);
+  const auto channels = res.ReadStrings("/model/output_point_channels");
+  const std::vector<double> values = res.ReadDoubles("/output_points");
+  const std::vector<double> time = res.ReadDoubles("/time");
+  const std::size_t width = channels.size();
+  ASSERT_EQ(values.size(), width * time.size());
+
+  emb::H5File f((dir_ / "surf.stress.h5").string(), emb::H5File::Mode::kRead);
+  const std::vector<int> nodes = f.ReadInts("/s/surface/nodes");
+  const std::uint64_t s = nodes.size();
+  const std::vector<double> times = f.ReadDoubles("/s/surface/times");
+  ASSERT_EQ(times.size(), 2u);
+  EXPECT_EQ(f.Shape("/s/surface/coordinates"), (std::vector<std::uint64_t>{s, 3}));
+  EXPECT_EQ(f.Shape("/s/surface/stress"), (std::vector<std::uint64_t>{2, s, 6}));
+  for (const char* m : {"von_mises", "max_principal", "signed_von_mises"})
+    EXPECT_EQ(f.Shape(std::string("/s/surface/") + m), (std::vector<std::uint64_t>{2, s}));
+  // The bar's boundary: one Quad8 per grid square, 2 (12·2 + 2·2 + 2·12) = 104; the groups'
+  // fields carry their faces too (z1: 12·2, y0: 12·2).
+  EXPECT_EQ(f.Shape("/s/surface/faces/Quad8"), (std::vector<std::uint64_t>{104, 8}));
+  EXPECT_EQ(f.Shape("/s/z1/faces/Quad8"), (std::vector<std::uint64_t>{24, 8}));
+  EXPECT_EQ(f.Shape("/s/y0/faces/Quad8"), (std::vector<std::uint64_t>{24, 8}));
+  const std::vector<double> vm = f.ReadDoubles("/s/surface/von_mises");
+  const std::vector<double> p1 = f.ReadDoubles("/s/surface/max_principal");
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    // The field is the first sample at or after its time: that sample of the results.
+    const auto row = std::find(time.begin(), time.end(), times[k]);
+    ASSERT_TRUE(row != time.end()) << "field time " << times[k] << " is no sample time";
+    EXPECT_GE(times[k], k == 0 ? 0.0101 : 0.02);
+    const std::size_t i = static_cast<std::size_t>(row - time.begin());
+    for (const std::string g : {"z1", "y0"}) {
+      const auto at = [&](const std::string& c) {
+        const auto it = std::find(channels.begin(), channels.end(), "s." + g + "." + c);
+        EXPECT_TRUE(it != channels.end()) << c;
+        return values[i * width + static_cast<std::size_t>(it - channels.begin())];
+      };
+      const std::vector<int> group = f.ReadInts("/s/" + g + "/nodes");
+      double vm_max = 0.0, p1_max = -1e300;
+      for (int node : group) {
+        const auto it = std::lower_bound(nodes.begin(), nodes.end(), node);
+        ASSERT_TRUE(it != nodes.end() && *it == node) << g << " node " << node;
+        const std::size_t j = k * s + static_cast<std::size_t>(it - nodes.begin());
+        vm_max = std::max(vm_max, vm[j]);
+        p1_max = std::max(p1_max, p1[j]);
+      }
+      const double channel_vm = at("von_mises"), channel_p1 = at("max_principal");
+      ASSERT_GT(channel_vm, 0.0);
+      EXPECT_NEAR(vm_max, channel_vm, kRoundOff * channel_vm) << g << " at t = " << times[k];
+      EXPECT_NEAR(p1_max, channel_p1, kRoundOff * std::abs(channel_vm)) << g;
+    }
+  }
+  std::ifstream xdmf(dir_ / "surf.stress.xdmf");
+  const std::string text((std::istreambuf_iterator<char>(xdmf)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("TopologyType=\"Quad_8\""), std::string::npos);
+  EXPECT_NE(text.find("surf.stress.h5:/s/surface/faces/Quad8"), std::string::npos);
+  EXPECT_NE(text.find("Name=\"signed_von_mises\""), std::string::npos);
+}
+
+// A body file with the surface only (no group): the field is written, the probe has no
+// channels; asking it for a group names what the file lacks.
+TEST_F(EmbStressSurfaceCli, SurfaceOnlyBodyFile) {
+  const auto bar = Bar({}, true);
+  WriteScene("only.yaml", bar, "  - {name: s, body: bar, surface_field_times: [0.005]}\n");
+  const CliResult r = Run("run -q only.yaml -o only.h5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  emb::H5File f((dir_ / "only.stress.h5").string(), emb::H5File::Mode::kRead);
+  EXPECT_EQ(f.Shape("/s/surface/times")[0], 1u);
+  WriteScene("group.yaml", bar,
+             "  - {name: s, body: bar, groups: [z1], surface_field_times: [0.005]}\n");
+  ExpectFailure("run group.yaml -o group.h5", 1, {"no modal stresses at groups", "--stress-groups"});
+}
+
+TEST_F(EmbStressSurfaceCli, SurfaceFieldFromAFileWithoutSurfaceIsRefused) {
+  const auto bar = Bar({"z1"}, false);
+  WriteScene("nosurf.yaml", bar, "  - {name: s, body: bar, surface_field_times: [0.01]}\n");
+  ExpectFailure("run nosurf.yaml -o nosurf.h5", 1,
+                {emb::testing::FlexibleBarFile(bar), "no modal stresses on the whole surface",
+                 "--stress-surface"});
+  EXPECT_FALSE(fs::exists(dir_ / "nosurf.h5"));
+  WriteScene("nan.yaml", bar, "  - {name: s, body: bar, surface_field_times: [.nan]}\n");
+  ExpectFailure("run nan.yaml -o nan.h5", 1, {"surface_field_times", "expected a number"});
+}
+
+TEST_F(EmbStressSurfaceCli, ReduceStoresTheSurface) {
+  WriteBarGeo();
+  const CliResult r = Run("reduce bar.geo -q --json -n 4 --no-reference -i x0:rbe2 -i x1:rbe2 "
+                          "--stress-groups y0 --stress-surface -o bar_body.h5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const long long surface_nodes = j["summary"]["stress_surface_nodes"].get<long long>();
+  emb::H5File f((dir_ / "bar_body.h5").string(), emb::H5File::Mode::kRead);
+  EXPECT_EQ(static_cast<long long>(f.Shape("/stress/surface/nodes")[0]), surface_nodes);
+  EXPECT_EQ(f.ReadStrings("/stress/surface/face_types"), std::vector<std::string>{"Tri6"});
+  EXPECT_EQ(f.Shape("/stress/surface/modal")[0], 6u * static_cast<std::uint64_t>(surface_nodes));
+  ExpectFailure("reduce bar.geo -n 4 -i x0:rbe2 --no-stress --stress-surface -o out.h5", 1,
+                {"--no-stress and --stress-surface"});
+  const CliResult help = Run("reduce --help");
+  EXPECT_NE(help.out.find("--stress-surface"), std::string::npos);
+}
+
+}  // namespace
