@@ -44,7 +44,7 @@ void WriteGrid(std::ostream& x, const std::string& name, const std::string& topo
   x << "    </Grid>\n";
 }
 
-void WriteField(H5File& out, std::ostream& x, const std::string& h5, const StressField& f) {
+void WriteField(H5File& out, std::ostream& x, const std::string& h5, const NodalStressField& f) {
   const std::uint64_t m = f.nodes.size(), k = f.times.size();
   EMB_CHECK(static_cast<std::uint64_t>(f.coordinates.rows()) == m && f.coordinates.cols() == 3 &&
             f.stress.size() == k);
@@ -111,7 +111,7 @@ void WriteField(H5File& out, std::ostream& x, const std::string& h5, const Stres
 }  // namespace
 
 void WriteStressFields(const std::string& h5_path, const std::string& xdmf_path,
-                       const std::vector<StressField>& fields) {
+                       const std::vector<NodalStressField>& fields) {
   AtomicFile h5_out(h5_path);
   std::ostringstream x;
   x.precision(12);
@@ -122,7 +122,7 @@ void WriteStressFields(const std::string& h5_path, const std::string& xdmf_path,
     h5.SetAttribute("/", "format", std::string("emb.stress_fields"));
     h5.SetAttribute("/", "units", std::string("SI: m, s, Pa; stress in Voigt order xx, yy, zz, "
                                               "xy, yz, zx, mesh axes"));
-    for (const StressField& f : fields)
+    for (const NodalStressField& f : fields)
       if (!f.times.empty()) WriteField(h5, x, h5_name, f);
     h5.Close();
   }

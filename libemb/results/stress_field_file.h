@@ -27,7 +27,7 @@
 namespace emb {
 
 /// One field: where its nodes are and the stress at each of its times.
-struct StressField {
+struct NodalStressField {
   std::string path;                   ///< HDF5 group, e.g. "/fillets/surface"
   std::string title;                  ///< XDMF grid name, e.g. "fillets.surface"
   std::vector<int> nodes;             ///< m mesh nodes
@@ -42,6 +42,6 @@ struct StressField {
 /// @throws InputError naming the file if it cannot be written; a face index or a stress
 ///   matrix that does not fit the field's nodes is a precondition violation (EMB_CHECK).
 void WriteStressFields(const std::string& h5_path, const std::string& xdmf_path,
-                       const std::vector<StressField>& fields);
+                       const std::vector<NodalStressField>& fields);
 
 }  // namespace emb

@@ -39,9 +39,9 @@ bool Due(const std::vector<double>& times, std::size_t& next, double t) {
 }
 
 // The group's field (coordinates and faces from the body file's mesh).
-StressField GroupField(const StressOutput& out, const mbs::StressRows& group, const Mesh& mesh,
+NodalStressField GroupField(const StressOutput& out, const mbs::StressRows& group, const Mesh& mesh,
                        const BoundarySurface& boundary) {
-  StressField f;
+  NodalStressField f;
   f.path = "/" + out.name + "/" + group.name;
   f.title = out.name + "." + group.name;
   f.nodes = group.nodes;
@@ -173,7 +173,7 @@ std::vector<double> StressRecorder::MissedFieldTimes() const {
 }
 
 void StressRecorder::WriteFields(const std::string& h5_path, const std::string& xdmf_path) const {
-  std::vector<StressField> fields;
+  std::vector<NodalStressField> fields;
   // Per output, the body file's mesh and its boundary faces (for the groups' faces).
   std::vector<Mesh> meshes(outputs_.size());
   std::vector<BoundarySurface> boundaries(outputs_.size());
@@ -190,7 +190,7 @@ void StressRecorder::WriteFields(const std::string& h5_path, const std::string& 
       meshes[o] = ReadMeshSection(body);
       boundaries[o] = ExtractBoundarySurface(meshes[o]);
     }
-    StressField f = GroupField(out, probes_[o]->groups()[static_cast<std::size_t>(g.index)],
+    NodalStressField f = GroupField(out, probes_[o]->groups()[static_cast<std::size_t>(g.index)],
                                meshes[o], boundaries[o]);
     f.times = g.field_t;
     f.stress = g.field;
@@ -199,7 +199,7 @@ void StressRecorder::WriteFields(const std::string& h5_path, const std::string& 
   for (std::size_t o = 0; o < outputs_.size(); ++o) {
     if (surfaces_[o].t.empty()) continue;
     const StressOutput& out = outputs_[o];
-    StressField f;
+    NodalStressField f;
     f.path = "/" + out.name + "/surface";
     f.title = out.name + ".surface";
     f.nodes = probes_[o]->surface().nodes;

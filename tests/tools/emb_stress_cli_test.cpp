@@ -160,11 +160,12 @@ TEST_F(EmbStressCli, BadInputIsRefusedByName) {
   ExpectFailure("run node.yaml -o out.h5", 1, {"node 0", "none of its groups"});
 }
 
-// emb reduce: the stress table and its check, the option in --help, a wrong group named.
+// emb reduce: the stress table and its check, the whole surface (--stress-surface: Tet10 from
+// gmsh, so Tri6 faces), the options in --help, a wrong group and exclusive options named.
 TEST_F(EmbStressCli, ReduceStoresAndChecksModalStresses) {
   WriteBarGeo();
   const CliResult r = Run("reduce bar.geo -q --json -n 4 --no-reference -i x0:rbe2 -i x1:rbe2 "
-                          "--stress-groups y0 -o bar_body.h5");
+                          "--stress-groups y0 --stress-surface -o bar_body.h5");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   const auto& rows = j["stress"];
@@ -173,11 +174,18 @@ TEST_F(EmbStressCli, ReduceStoresAndChecksModalStresses) {
   EXPECT_LE(rows[0]["check_error"].get<double>(), 1e-6) << rows[0];  // round-off (modal_stress_test)
   emb::H5File f((dir_ / "bar_body.h5").string(), emb::H5File::Mode::kRead);
   EXPECT_EQ(f.ReadStrings("/stress/names"), std::vector<std::string>{"y0"});
+  const long long surface_nodes = j["summary"]["stress_surface_nodes"].get<long long>();
+  EXPECT_EQ(static_cast<long long>(f.Shape("/stress/surface/nodes")[0]), surface_nodes);
+  EXPECT_EQ(f.ReadStrings("/stress/surface/face_types"), std::vector<std::string>{"Tri6"});
+  EXPECT_EQ(f.Shape("/stress/surface/modal")[0], 6u * static_cast<std::uint64_t>(surface_nodes));
+  ExpectFailure("reduce bar.geo -n 4 -i x0:rbe2 --no-stress --stress-surface -o out.h5", 1,
+                {"--no-stress and --stress-surface"});
   ExpectFailure("reduce bar.geo -n 4 -i x0:rbe2 -i x1:rbe2 --stress-groups fillet -o out.h5", 1,
                 {"fillet"});
   const CliResult help = Run("reduce --help");
   EXPECT_NE(help.out.find("--stress-groups"), std::string::npos);
   EXPECT_NE(help.out.find("--no-stress"), std::string::npos);
+  EXPECT_NE(help.out.find("--stress-surface"), std::string::npos);
 }
 
 }  // namespace

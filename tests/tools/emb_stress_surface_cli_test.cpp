@@ -10,7 +10,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 
 #include "libemb/io/hdf5_file.h"
 #include "tests/support/cli_fixture.h"
@@ -143,23 +142,6 @@ TEST_F(EmbStressSurfaceCli, SurfaceFieldFromAFileWithoutSurfaceIsRefused) {
   EXPECT_FALSE(fs::exists(dir_ / "nosurf.h5"));
   WriteScene("nan.yaml", bar, "  - {name: s, body: bar, surface_field_times: [.nan]}\n");
   ExpectFailure("run nan.yaml -o nan.h5", 1, {"surface_field_times", "expected a number"});
-}
-
-TEST_F(EmbStressSurfaceCli, ReduceStoresTheSurface) {
-  WriteBarGeo();
-  const CliResult r = Run("reduce bar.geo -q --json -n 4 --no-reference -i x0:rbe2 -i x1:rbe2 "
-                          "--stress-groups y0 --stress-surface -o bar_body.h5");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(r.out);
-  const long long surface_nodes = j["summary"]["stress_surface_nodes"].get<long long>();
-  emb::H5File f((dir_ / "bar_body.h5").string(), emb::H5File::Mode::kRead);
-  EXPECT_EQ(static_cast<long long>(f.Shape("/stress/surface/nodes")[0]), surface_nodes);
-  EXPECT_EQ(f.ReadStrings("/stress/surface/face_types"), std::vector<std::string>{"Tri6"});
-  EXPECT_EQ(f.Shape("/stress/surface/modal")[0], 6u * static_cast<std::uint64_t>(surface_nodes));
-  ExpectFailure("reduce bar.geo -n 4 -i x0:rbe2 --no-stress --stress-surface -o out.h5", 1,
-                {"--no-stress and --stress-surface"});
-  const CliResult help = Run("reduce --help");
-  EXPECT_NE(help.out.find("--stress-surface"), std::string::npos);
 }
 
 }  // namespace
