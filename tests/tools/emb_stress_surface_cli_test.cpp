@@ -40,7 +40,10 @@ class EmbStressSurfaceCli : public emb::test::CliTest {
     return bar;
   }
   void WriteScene(const std::string& name, const emb::testing::BarSpec& bar,
-                  const std::string& stress_outputs) const {
+                  const std::string& stress_outputs,
+                  const std::string& direction = "[0, 0.6, 0.8]",
+                  const std::string& load = "{harmonic: {amplitude: 500, frequency_hz: 200, offset: 500}}",
+                  const std::string& analysis = "{type: dynamic, t_end: 0.02, output_step: 2.5e-4}") const {
     std::ofstream(dir_ / name)
         << "bodies:\n  - {name: bar, model: cms, body_file: " << emb::testing::FlexibleBarFile(bar)
         << "}\n"
@@ -48,10 +51,9 @@ class EmbStressSurfaceCli : public emb::test::CliTest {
         << "  - {name: tip, body: bar, interface: x1}\n"
         << "  - {name: base, body: ground, frame: world, position: [0, 0.02, 0.015]}\n"
         << "joints:\n  - {name: clamp, type: fixed, i: root, j: base}\n"
-        << "forces:\n  - {name: load, type: force, marker: tip, direction: [0, 0.6, 0.8], "
-           "function: {harmonic: {amplitude: 500, frequency_hz: 200, offset: 500}}}\n"
-        << "stress_outputs:\n" << stress_outputs
-        << "analysis: {type: dynamic, t_end: 0.02, output_step: 2.5e-4}\n";
+        << "forces:\n  - {name: load, type: force, marker: tip, direction: " << direction
+        << ", function: " << load << "}\n"
+        << "stress_outputs:\n" << stress_outputs << "analysis: " << analysis << "\n";
   }
 };
 
@@ -117,6 +119,34 @@ TEST_F(EmbStressSurfaceCli, SurfaceFieldMatchesTheHotSpotChannels) {
   EXPECT_NE(text.find("TopologyType=\"Quad_8\""), std::string::npos);
   EXPECT_NE(text.find("surf.stress.h5:/s/surface/faces/Quad8"), std::string::npos);
   EXPECT_NE(text.find("Name=\"signed_von_mises\""), std::string::npos);
+}
+
+// Static tip load F along z: sigma_xx on the top and bottom faces at mid-length is beam
+// theory's -+F (L - x) h / (2 I) (emb_stress_cli_test asserts 1 % through the group channels;
+// here through the surface field, an independent route to the same nodes).
+TEST_F(EmbStressSurfaceCli, StaticSurfaceFieldMatchesBeamTheory) {
+  constexpr double kBeamTolerance = 0.01;
+  const auto bar = Bar({}, true);
+  WriteScene("static.yaml", bar, "  - {name: s, body: bar, surface_field_times: [0]}\n",
+             "[0, 0, 1]", "{constant: 100}", "{type: static}");
+  const CliResult r = Run("run -q static.yaml -o static.h5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  emb::H5File f((dir_ / "static.stress.h5").string(), emb::H5File::Mode::kRead);
+  const std::vector<double> xyz = f.ReadDoubles("/s/surface/coordinates");
+  const std::vector<double> sigma = f.ReadDoubles("/s/surface/stress");  // (1, s, 6)
+  const double I = bar.width * std::pow(bar.height, 3) / 12.0;
+  const double beam = 100.0 * (bar.length / 2) * bar.height / (2.0 * I);
+  int checked = 0;
+  for (std::size_t i = 0; i < xyz.size() / 3; ++i) {
+    if (std::abs(xyz[3 * i] - bar.length / 2) > 1e-9 || std::abs(xyz[3 * i + 1] - bar.width / 2) > 1e-9)
+      continue;
+    const double z = xyz[3 * i + 2];
+    if (std::abs(z) > 1e-9 && std::abs(z - bar.height) > 1e-9) continue;
+    const double expected = z > 0 ? -beam : beam;  // top in compression
+    EXPECT_NEAR(sigma[6 * i], expected, kBeamTolerance * beam) << "z = " << z;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);  // the top and bottom nodes at mid-length, mid-width
 }
 
 // A body file with the surface only (no group): the field is written, the probe has no
