@@ -12,7 +12,7 @@
 
 #include "libemb/io/hdf5_file.h"
 #include "tests/support/cli_fixture.h"
-#include "tests/support/flexible_bar.h"
+#include "tests/support/clamped_bar_scene.h"
 
 namespace {
 
@@ -21,31 +21,16 @@ using emb::test::CliResult;
 
 class EmbStressCli : public emb::test::CliTest {
  protected:
-  // A clamped bar (x0 held) with a tip force on x1, its top face z1 a stress group.
+  // The clamped bar, its top face z1 and side y0 stress groups (tests/support).
   static emb::testing::BarSpec Bar(bool stresses) {
-    emb::testing::BarSpec bar;
-    bar.interfaces = {"x0:rbe2", "x1:rbe2"};
-    bar.modes = 6;
-    bar.ny = 2;
-    bar.nz = 2;
-    bar.damping_ratio = 0.02;
-    bar.keep_mesh_shapes = true;
-    if (stresses) bar.stress_groups = {"z1", "y0"};
-    return bar;
+    return emb::testing::ClampedBar(stresses ? std::vector<std::string>{"z1", "y0"}
+                                             : std::vector<std::string>{});
   }
   void WriteScene(const std::string& name, const emb::testing::BarSpec& bar,
                   const std::string& stress_outputs, const std::string& load,
                   const std::string& analysis) const {
-    std::ofstream(dir_ / name)
-        << "bodies:\n  - {name: bar, model: cms, body_file: " << emb::testing::FlexibleBarFile(bar)
-        << "}\n"
-        << "markers:\n  - {name: root, body: bar, interface: x0}\n"
-        << "  - {name: tip, body: bar, interface: x1}\n"
-        << "  - {name: base, body: ground, frame: world, position: [0, 0.02, 0.015]}\n"
-        << "joints:\n  - {name: clamp, type: fixed, i: root, j: base}\n"
-        << "forces:\n  - {name: load, type: force, marker: tip, direction: [0, 0, 1], "
-           "function: " << load << "}\n"
-        << "stress_outputs:\n" << stress_outputs << "analysis: " << analysis << "\n";
+    std::ofstream(dir_ / name) << emb::testing::ClampedBarScene(bar, stress_outputs, "[0, 0, 1]",
+                                                                load, analysis);
   }
   // The top-face node at (x, width/2, height) of the bar's mesh.
   static int TopNode(const emb::testing::BarSpec& bar, double x) {

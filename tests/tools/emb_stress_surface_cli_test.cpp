@@ -13,7 +13,7 @@
 
 #include "libemb/io/hdf5_file.h"
 #include "tests/support/cli_fixture.h"
-#include "tests/support/flexible_bar.h"
+#include "tests/support/clamped_bar_scene.h"
 
 namespace {
 
@@ -26,18 +26,8 @@ constexpr double kRoundOff = 1e-10;  // relative to the channel's value
 
 class EmbStressSurfaceCli : public emb::test::CliTest {
  protected:
-  // A bar clamped at x0 with a tip force on x1 (as emb_stress_cli_test), 12 x 2 x 2 Hex20.
   static emb::testing::BarSpec Bar(std::vector<std::string> groups, bool surface) {
-    emb::testing::BarSpec bar;
-    bar.interfaces = {"x0:rbe2", "x1:rbe2"};
-    bar.modes = 6;
-    bar.ny = 2;
-    bar.nz = 2;
-    bar.damping_ratio = 0.02;
-    bar.keep_mesh_shapes = true;
-    bar.stress_groups = std::move(groups);
-    bar.stress_surface = surface;
-    return bar;
+    return emb::testing::ClampedBar(std::move(groups), surface);
   }
   void WriteScene(const std::string& name, const emb::testing::BarSpec& bar,
                   const std::string& stress_outputs,
@@ -45,15 +35,7 @@ class EmbStressSurfaceCli : public emb::test::CliTest {
                   const std::string& load = "{harmonic: {amplitude: 500, frequency_hz: 200, offset: 500}}",
                   const std::string& analysis = "{type: dynamic, t_end: 0.02, output_step: 2.5e-4}") const {
     std::ofstream(dir_ / name)
-        << "bodies:\n  - {name: bar, model: cms, body_file: " << emb::testing::FlexibleBarFile(bar)
-        << "}\n"
-        << "markers:\n  - {name: root, body: bar, interface: x0}\n"
-        << "  - {name: tip, body: bar, interface: x1}\n"
-        << "  - {name: base, body: ground, frame: world, position: [0, 0.02, 0.015]}\n"
-        << "joints:\n  - {name: clamp, type: fixed, i: root, j: base}\n"
-        << "forces:\n  - {name: load, type: force, marker: tip, direction: " << direction
-        << ", function: " << load << "}\n"
-        << "stress_outputs:\n" << stress_outputs << "analysis: " << analysis << "\n";
+        << emb::testing::ClampedBarScene(bar, stress_outputs, direction, load, analysis);
   }
 };
 
