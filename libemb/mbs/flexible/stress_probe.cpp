@@ -159,6 +159,11 @@ std::shared_ptr<StressProbe> MakeStressProbe(const FlexiblePart& part,
                                               << "; the body file has: " << listed);
     rows.push_back({name, it->nodes, KeptColumns(part, it->stresses, who, name)});
   }
+  // The fields file names the surface's field after the output like a group's: /<o>/surface.
+  EMB_THROW_IF(spec.surface && std::find(names.begin(), names.end(), "surface") != names.end(),
+               who << ": a stress group named 'surface' and surface_field_times would both be "
+                      "written as field '" << spec.name << "/surface'; expected the group "
+                      "renamed, or the output split in two");
   StressRows surface;
   if (spec.surface)
     surface = {"surface", file_surface->nodes,

@@ -103,7 +103,8 @@ class StressProbe final : public Probe {
 /// @throws InputError naming the probe, the part and its file: a rigid part, a body file
 ///   without modal stresses ("reduce it with --stress-groups"), an unknown group (with the
 ///   groups the file has and a did-you-mean), a node in none of the groups, a surface asked
-///   from a file without one ("reduce it with --stress-surface").
+///   from a file without one ("reduce it with --stress-surface") or together with a group
+///   named "surface" (both fields would be called so).
 std::shared_ptr<StressProbe> MakeStressProbe(const FlexiblePart& part,
                                              const std::vector<ModalStressGroup>& file_groups,
                                              const StressProbeSpec& spec,
