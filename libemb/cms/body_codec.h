@@ -46,6 +46,24 @@ class Codec {
     A = Eigen::Map<const RowMajor>(v.data(), shape[0], shape[1]);
     digest_.Add(v.data(), sizeof(double) * v.size());
   }
+  // A matrix stored in single precision (the digest covers the stored floats); reading gives
+  // the floats back as doubles.
+  void FloatMatrix(const std::string& path, Eigen::MatrixXd& A) {
+    using RowMajorF = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    if (writing_) {
+      const RowMajorF r = A.cast<float>();
+      h5_.Write(path, r.data(), {std::uint64_t(A.rows()), std::uint64_t(A.cols())});
+      digest_.Add(r.data(), sizeof(float) * r.size());
+      return;
+    }
+    const auto shape = h5_.Shape(path);
+    EMB_THROW_IF(shape.size() != 2, "'" << h5_.path() << "': " << path
+                                        << ": expected a 2-D dataset, got " << shape.size()
+                                        << " dimensions");
+    const std::vector<float> v = h5_.ReadFloats(path);
+    A = Eigen::Map<const RowMajorF>(v.data(), shape[0], shape[1]).cast<double>();
+    digest_.Add(v.data(), sizeof(float) * v.size());
+  }
   void Vector(const std::string& path, Eigen::VectorXd& x) {
     if (writing_) {
       h5_.Write(path, x.data(), {std::uint64_t(x.size())});

@@ -49,6 +49,7 @@ void TransferSurfaceStresses(body_codec::Codec& c, ModalStressSurface& s, Eigen:
     for (const CellBlock& b : s.faces) types.emplace_back(Name(b.type));
     h5.Write(root + "/face_types", types);
     h5.SetAttribute(root, "units", std::string("Pa per unit elastic coordinate"));
+    h5.SetAttribute(root, "precision", std::string("modal: float32"));
   } else {
     s = ModalStressSurface{};
     if (!c.Exists(root)) return;
@@ -78,7 +79,7 @@ void TransferSurfaceStresses(body_codec::Codec& c, ModalStressSurface& s, Eigen:
                  "'" << h5.path() << "': " << path << ": expected indices 0.." << num - 1
                      << " into " << root << "/nodes");
   }
-  c.Matrix(root + "/modal", s.stresses);
+  c.FloatMatrix(root + "/modal", s.stresses);
   c.ExpectShape(root + "/modal", s.stresses, 6 * num, ne);
   EMB_THROW_IF(!c.writing() && !(s.stresses.allFinite() && s.coordinates.allFinite()),
                "'" << h5.path() << "': " << root << ": holds a non-finite value (NaN or inf)");

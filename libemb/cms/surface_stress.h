@@ -15,7 +15,10 @@
 ///     coordinates          (s, 3) their positions [m, mesh axes]
 ///     faces/<Type>         (f, k) 0-based indices into `nodes`, gmsh face order (= XDMF's)
 ///     modal                (6 s, ne) Σ_s, row 6 i + c = component c (xx yy zz xy yz zx)
-///                          at nodes[i] per unit elastic coordinate [Pa]
+///                          at nodes[i] per unit elastic coordinate [Pa]; stored as float32
+///                          (@precision): half the size of doubles for a relative rounding
+///                          of 2⁻²⁴ per entry, far below the nodal recovery's mesh error
+///                          (benchmarks/stress_surface.sh measures it on the crank's fields)
 
 #include <vector>
 
@@ -35,7 +38,7 @@ struct ModalStressSurface {
   std::vector<int> nodes;         ///< mesh nodes, ascending (s)
   Eigen::MatrixXd coordinates;    ///< s × 3 [m]
   std::vector<CellBlock> faces;   ///< connectivity into `nodes`; tags = face numbers
-  Eigen::MatrixXd stresses;       ///< 6 s × ne [Pa per unit ξ]
+  Eigen::MatrixXd stresses;       ///< 6 s × ne [Pa per unit ξ]; from a file: float32 values
   bool empty() const { return nodes.empty(); }
   int num_nodes() const { return static_cast<int>(nodes.size()); }
   int num_faces() const;

@@ -35,6 +35,9 @@ class H5File {
   /// `dims` is the C-order shape; data holds prod(dims) values. Large datasets are chunked
   /// and compressed (deflate level 4).
   void Write(const std::string& path, const double* data, const std::vector<std::uint64_t>& dims);
+  /// Single precision (IEEE binary32): for large data whose precision needs are far below a
+  /// double's (e.g. the whole-surface modal stresses, cms/surface_stress.h).
+  void Write(const std::string& path, const float* data, const std::vector<std::uint64_t>& dims);
   void Write(const std::string& path, const int* data, const std::vector<std::uint64_t>& dims);
   void Write(const std::string& path, const std::uint64_t* data,
              const std::vector<std::uint64_t>& dims);
@@ -52,6 +55,8 @@ class H5File {
   std::vector<std::uint64_t> Shape(const std::string& path) const;
   std::vector<double> ReadDoubles(const std::string& path) const;
   std::vector<int> ReadInts(const std::string& path) const;
+  /// The values as floats (a double dataset is rounded by HDF5's conversion).
+  std::vector<float> ReadFloats(const std::string& path) const;
   std::vector<std::string> ReadStrings(const std::string& path) const;
   std::string ReadStringAttribute(const std::string& object, const std::string& name) const;
   double ReadDoubleAttribute(const std::string& object, const std::string& name) const;

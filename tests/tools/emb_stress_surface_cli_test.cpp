@@ -20,9 +20,10 @@ namespace {
 namespace fs = std::filesystem;
 using emb::test::CliResult;
 
-// The hot-spot channel and the surface field evaluate the same rows of the same modal
-// stresses at the same eta, as matrix-vector products of different sizes.
-constexpr double kRoundOff = 1e-10;  // relative to the channel's value
+// The hot-spot channel and the surface field evaluate the same rows of the modal stresses at
+// the same eta, the surface's stored as float32 (2^-24 relative per entry); at the hot spot
+// the modes' contributions do not cancel much, so allow 16 times that.
+constexpr double kFloat32Rows = 1e-6;  // relative to the channel's value
 
 class EmbStressSurfaceCli : public emb::test::CliTest {
  protected:
@@ -92,8 +93,8 @@ TEST_F(EmbStressSurfaceCli, SurfaceFieldMatchesTheHotSpotChannels) {
       }
       const double channel_vm = at("von_mises"), channel_p1 = at("max_principal");
       ASSERT_GT(channel_vm, 0.0);
-      EXPECT_NEAR(vm_max, channel_vm, kRoundOff * channel_vm) << g << " at t = " << times[k];
-      EXPECT_NEAR(p1_max, channel_p1, kRoundOff * std::abs(channel_vm)) << g;
+      EXPECT_NEAR(vm_max, channel_vm, kFloat32Rows * channel_vm) << g << " at t = " << times[k];
+      EXPECT_NEAR(p1_max, channel_p1, kFloat32Rows * std::abs(channel_vm)) << g;
     }
   }
   std::ifstream xdmf(dir_ / "surf.stress.xdmf");

@@ -120,6 +120,7 @@ Mesh.MeshSizeMax = 0.025;
         check(on.all(), "every surface node on the bar's boundary")
         ne = f["/modes/frequencies_hz"].shape[0]
         check(g["modal"].shape == (6 * nodes.size, ne), "modal (6 s, ne)")
+        check(g["modal"].dtype == np.float32, "modal stored as float32")
         check(f.attrs["content_digest_version"] == 4, "digest version 4")
 
     scene("surf.yaml", "body.h5",
