@@ -362,7 +362,7 @@ void RegisterReduceCommand(CLI::App& app) {
                 "Also store the modal stresses on the whole boundary surface (the faces of one "
                 "cell; quadratic faces kept) with its nodes and faces, for the whole-surface "
                 "stress field of emb run (stress_outputs: surface_field_times) in ParaView; "
-                "grows the body file by 48 bytes per surface node and elastic mode");
+                "grows the body file by 24 bytes per surface node and elastic mode (float32)");
   cmd->add_flag("--no-xdmf", st->no_xdmf, "Do not write the .xdmf file next to the .h5");
   cmd->add_flag("--allow-failed-certificate", st->allow_failed_certificate,
                 "Write the body file even if the certificate fails (the exit code is still 3)");
