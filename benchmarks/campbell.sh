@@ -14,6 +14,12 @@
 #   way `emb campbell` sets it: the rpm motion, the initial velocities and the steady-state
 #   period scaled), the nose torsion's order amplitudes from `emb spectrum --json` of the steady
 #   cycle -> benchmarks/results/tvd_inline4.json (tvd_inline4_<rpm>.json at another speed).
+# tvd-rubber: the inline-4 at TVD_RPM without damper and with the damper of `emb tvd-tune
+#   --json` (cycle-averaged linearisation, 4e-3 kg m^2 ring) as a Kelvin-Voigt rubber (Den
+#   Hartog's k, c) and as the one-arm Zener rubber tvd-tune prints (Den Hartog's loss factor,
+#   and 0.2, a typical TVD rubber), all four scenes made from inline4_tvd.yaml with the damper
+#   replaced (no number copied by hand): the nose torsion's order amplitudes and the IDA step
+#   counts -> benchmarks/results/tvd_rubber_inline4.json.
 # Needs out/crankshaft_i4.h5 (tools/setup.sh run). Quote the times only from a run under
 # `flock -x /tmp/emb-cpu.lock`. EMB_BENCH_RESUME=1 keeps the emb outputs already in
 # out/bench_campbell/ and only records them again.
@@ -117,6 +123,82 @@ PY
   /usr/bin/python3 "$root/benchmarks/record.py" merge campbell_angles inline4="$dir/angles_record.json" \
     --command "bash benchmarks/campbell.sh angles"
   /usr/bin/python3 "$root/benchmarks/render_tables.py" --print campbell_angles
+fi
+
+if [ "$what" = tvd-rubber ] || [ "$what" = all ]; then
+  "$emb" tvd-tune -q "$root/tools/scenes/inline4.yaml" --rpm "$tvd_rpm" --hub crank_nose \
+    --ring-inertia 0.004 --json > "$dir/tvd_tune_$tvd_rpm.json"
+  "$emb" tvd-tune -q "$root/tools/scenes/inline4.yaml" --rpm "$tvd_rpm" --hub crank_nose \
+    --ring-inertia 0.004 --loss-factor 0.2 --json > "$dir/tvd_tune_${tvd_rpm}_eta02.json"
+  base=$(scene inline4_tvd "$tvd_rpm")
+  names="none kelvin_voigt zener zener_eta02"
+  /usr/bin/python3 - "$base" "$dir" "$tvd_rpm" $names <<'PY'
+import json, sys, yaml
+base, d, rpm, names = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+tune = json.load(open(f"{d}/tvd_tune_{rpm}.json"))
+tune02 = json.load(open(f"{d}/tvd_tune_{rpm}_eta02.json"))
+def zener(t):
+    z = t["zener"]
+    return {"rubber": {"static_stiffness": z["static_stiffness"],
+                       "arms": [{"stiffness": z["arm_stiffness"],
+                                 "relaxation_time": z["relaxation_time"]}]}}
+damper = {"kelvin_voigt": {"stiffness": tune["summary"]["stiffness"],
+                           "damping": tune["summary"]["damping"]},
+          "zener": zener(tune), "zener_eta02": zener(tune02)}
+for n in names:
+    s = yaml.safe_load(open(base))
+    (i,) = [k for k, f in enumerate(s["forces"]) if f.get("type") == "torsional-damper"]
+    if n == "none":
+        del s["forces"][i]
+    else:
+        f = {k: v for k, v in s["forces"][i].items() if k not in ("stiffness", "damping")}
+        f.update(damper[n])
+        s["forces"][i] = f
+    s["output"]["file"] = f"{d}/tvd_rubber_{n}_{rpm}.h5"
+    yaml.safe_dump(s, open(f"{d}/tvd_rubber_{n}_{rpm}.yaml", "w"), sort_keys=False)
+PY
+  for n in $names; do
+    tag=tvd_rubber_${n}_$tvd_rpm
+    if [ "${EMB_BENCH_RESUME:-0}" = 1 ] && [ -s "$dir/$tag.spectrum.json" ]; then continue; fi
+    /usr/bin/time -f "%U %S %e" -o "$dir/$tag.time" "$emb" run "$dir/$tag.yaml" -q --json > "$dir/$tag.run.json" || true
+    "$emb" spectrum "$dir/$tag.h5" --channel nose_torsion.rz --angle crank --orders 12 --json \
+      > "$dir/$tag.spectrum.json"
+  done
+  /usr/bin/python3 - "$dir" "$tvd_rpm" $names <<'PY'
+import json, re, sys
+d, rpm, names = sys.argv[1], sys.argv[2], sys.argv[3:]
+rows = {}
+for n in names:
+    sp = json.load(open(f"{d}/tvd_rubber_{n}_{rpm}.spectrum.json"))
+    run = json.load(open(f"{d}/tvd_rubber_{n}_{rpm}.run.json"))["summary"]
+    rows[n] = {"orders": {("%g" % o["order"]): o["amplitude"] for o in sp["orders"]},
+               "status": run["status"], "steady_state": run.get("steady_state", ""),
+               "steps": run["steps"], "residual_evals": run.get("residual_evals"),
+               "cpu_s": sum(float(x) for x in open(f"{d}/tvd_rubber_{n}_{rpm}.time").read().split()[:2])}
+    m = re.search(r"after (\d+) cycles", rows[n]["steady_state"])
+    rows[n]["cycles"] = int(m.group(1)) if m else None
+    rows[n]["steps_per_cycle"] = rows[n]["steps"] / rows[n]["cycles"] if m else None
+tune = {k: json.load(open(f"{d}/tvd_tune_{rpm}{s}.json")) for k, s in (("zener", ""), ("zener_eta02", "_eta02"))}
+base = rows["none"]["orders"]
+orders = []
+for k in base:
+    if not (float(k) > 0 and float(k) == int(float(k))):
+        continue
+    o = {"name": "order" + k, "order": float(k), "none_rad": base[k]}
+    for n in names[1:]:
+        o[n + "_rad"] = rows[n]["orders"][k]
+        o[n + "_ratio"] = rows[n]["orders"][k] / base[k] if base[k] > 0 else None
+    orders.append(o)
+json.dump({"rpm": float(rpm), "runs": rows, "orders": orders,
+           "tuning": {k: {"summary": t["summary"], "zener": t["zener"]} for k, t in tune.items()},
+           "zener_steps_vs_kelvin_voigt": rows["zener"]["steps"] / rows["kelvin_voigt"]["steps"],
+           "zener_steps_per_cycle_vs_kelvin_voigt":
+               rows["zener"]["steps_per_cycle"] / rows["kelvin_voigt"]["steps_per_cycle"]},
+          open(f"{d}/tvd_rubber_record.json", "w"), indent=1)
+PY
+  /usr/bin/python3 "$root/benchmarks/record.py" merge tvd_rubber_inline4 "rpm$tvd_rpm=$dir/tvd_rubber_record.json" \
+    --command "bash benchmarks/campbell.sh tvd-rubber $tvd_rpm"
+  /usr/bin/python3 "$root/benchmarks/render_tables.py" --print tvd_rubber_inline4
 fi
 
 if [ "$what" = tvd ] || [ "$what" = all ]; then

@@ -27,6 +27,10 @@ The benchmark scripts call one subcommand each, which turns raw outputs into "da
   profile NAME DIR                   perf reports and run summary of inline4_profile.sh
   clonk NAME DIR RUN ...             driveline_clonk.sh: `emb run` and clonk_plots.py outputs
                                      DIR/RUN.{json,csv}, DIR/RUN_metrics.json against the first
+  slepc-reduce NAME LABEL=RUN.json,RUN.time,BODY.h5 ...  `emb reduce --json` (default or
+                                     --backend slepc on N ranks), its wall time and peak
+                                     memory (/usr/bin/time -f "%e %M"), its body file;
+                                     compared with the run labelled cholmod
   slepc NAME LABEL=RUN.json,RUN.time ...  `emb modes --json` (default or --backend slepc
                                      on N ranks) and its wall time (/usr/bin/time -f %e);
                                      frequencies against the run labelled cholmod
@@ -518,6 +522,68 @@ def collect_slepc(items):
     return {"runs": runs}
 
 
+def time_and_peak(path):
+    """Wall time [s] and peak resident set [MB] from `/usr/bin/time -f "%e %M"` (under mpirun
+    the largest process of the job: getrusage of the waited-for children)."""
+    with open(path) as f:
+        wall, kb = f.read().split()[-2:]
+    return float(wall), int(kb) / 1000
+
+
+def collect_slepc_reduce(items):
+    """slepc_reduce.sh: per run (`emb reduce --json`, its /usr/bin/time wall time and peak
+    memory, its body file) the phases, MUMPS's counters, and the body's largest relative
+    differences to the default (cholmod) run's: fixed-interface frequencies, K^ and M^ (max
+    entry difference over the largest entry), elastic frequencies, certificate verdict."""
+    import h5py
+    import numpy as np
+    runs, bodies = [], {}
+    for label, paths in labelled(items):
+        json_path, time_path, h5_path = paths.split(",")
+        r = load(json_path)
+        s = r["summary"]
+        wall, peak = time_and_peak(time_path)
+        with h5py.File(h5_path, "r") as f:
+            bodies[label] = {k: np.array(f[k]) for k in
+                             ("/reduced/K", "/reduced/M", "/fixed_interface/frequencies_hz")}
+        runs.append({"name": label, "ranks": s.get("mpi_ranks", 1), "dofs": s["dofs"],
+                     "seconds": phases(s), "wall_s": wall, "peak_mb": peak,
+                     "rank0_peak_memory_mb": s["peak_memory_mb"],
+                     "static_factor_flops": s.get("static_factor_flops"),
+                     "static_factor_peak_mb": s.get("static_factor_peak_mb"),
+                     "eigen_factor_flops": s.get("eigen_factor_flops"),
+                     "eigen_factor_peak_mb": s.get("eigen_factor_peak_mb"),
+                     "static_blocked_solves": s.get("static_blocked_solves"),
+                     "fixed_interface_modes": s["fixed_interface_modes"],
+                     "certificate_passed": r["certificate"]["passed"],
+                     "elastic_hz": [m["frequency_hz"] for m in r["modes"]]})
+    if "cholmod" not in bodies:
+        sys.exit("record.py slepc-reduce: expected a run labelled cholmod")
+    ref = bodies["cholmod"]
+    ref_hz = [r for r in runs if r["name"] == "cholmod"][0]["elastic_hz"]
+
+    def rel(a, b):
+        if a.shape != b.shape:
+            return None
+        return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
+
+    def rel_each(a, b):
+        if len(a) != len(b):
+            return None
+        return max((abs(x - y) / y for x, y in zip(a, b)), default=0.0)
+
+    for r in runs:
+        b = bodies[r["name"]]
+        r["max_rel_diff_vs_cholmod"] = {
+            "fixed_interface_hz": rel_each(b["/fixed_interface/frequencies_hz"],
+                                           ref["/fixed_interface/frequencies_hz"]),
+            "K": rel(b["/reduced/K"], ref["/reduced/K"]),
+            "M": rel(b["/reduced/M"], ref["/reduced/M"]),
+            "elastic_hz": rel_each(r["elastic_hz"], ref_hz)}
+        del r["elastic_hz"]
+    return {"runs": runs}
+
+
 def collect_merge(items):
     return {"runs": [dict(name=label, **load(path)) for label, path in labelled(items)]}
 
@@ -535,7 +601,7 @@ def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("kind", choices=["run", "merge", "modes", "reduce-sizes", "reduce-modes", "stiffening",
                                     "compare", "web-width", "inline4", "inline4-beam", "profile", "clonk",
-                                    "ccx", "engine", "slepc"])
+                                    "ccx", "engine", "slepc", "slepc-reduce"])
     p.add_argument("name", help="results file name: benchmarks/results/NAME.json")
     p.add_argument("inputs", nargs="*")
     p.add_argument("--command", help="the command line that ran the benchmark (default: PROGRAM)")
@@ -571,6 +637,7 @@ def main():
             "ccx": lambda: collect_ccx(a.inputs),
             "engine": lambda: collect_engine(a.inputs),
             "slepc": lambda: collect_slepc(a.inputs),
+            "slepc-reduce": lambda: collect_slepc_reduce(a.inputs),
         }
         data = collectors[a.kind]()
     write_result(a.name, command, data)

@@ -120,8 +120,8 @@ def find(data, path):
 
 
 # --------------------------------------------------------------------------- tables
-def crank_modes(res):
-    doc = res("crank_modes")
+def crank_modes(res, name="crank_modes"):
+    doc = res(name)
     rows = []
     for r in doc["data"]["runs"]:
         s = r["seconds"]
@@ -136,6 +136,10 @@ def crank_modes(res):
                   "checks s", "total s", "eigen/factor", "solves", "peak MB", "f7 Hz",
                   "max \\|Δf\\|/f vs finest", "status", "rigid modes", "max backward error"],
                  rows), [doc]
+
+
+def crank_modes_1m(res):
+    return crank_modes(res, "crank_modes_1m")
 
 
 def slepc_modes(res):
@@ -154,6 +158,29 @@ def slepc_modes(res):
                   "eigen-solve s", "emb total s", "wall s", "MUMPS MB (largest rank)",
                   "rank-0 peak MB", "solves", "max \\|Δf\\|/f vs cholmod", "status"],
                  rows), [doc]
+
+
+def slepc_reduce(res):
+    doc = res("slepc_reduce")
+    rows = []
+    for r in doc["data"]["runs"]:
+        s = r["seconds"]
+        d = r["max_rel_diff_vs_cholmod"]
+        mumps = (f"{num(r['static_factor_peak_mb'], '.0f')} / {num(r['eigen_factor_peak_mb'], '.0f')}"
+                 if r.get("static_factor_peak_mb") is not None else "-")
+        rows.append([r["name"], r["ranks"], r["dofs"], r["fixed_interface_modes"],
+                     num(s.get("factorisation"), ".2f"), num(s.get("shifted factorisation"), ".2f"),
+                     num(s.get("eigen-solve"), ".2f"), num(s.get("constraint modes"), ".2f"),
+                     num(s.get("static load cases"), ".2f"), num(s.get("certificate"), ".1f"),
+                     num(s["total"], ".1f"), num(r["wall_s"], ".1f"), num(r["peak_mb"], ".0f"),
+                     mumps, num(d["fixed_interface_hz"], ".1e"), num(d["K"], ".1e"),
+                     num(d["M"], ".1e"), "passed" if r["certificate_passed"] else "FAILED"])
+    return table(["run", "ranks", "DOF", "fixed-interface modes", "factorisation s",
+                  "shifted factorisation s", "eigen-solve s", "constraint modes s",
+                  "static load cases s", "certificate s", "emb total s", "wall s",
+                  "peak MB (largest process)", "MUMPS MB static / shifted (largest rank)",
+                  "max \\|Δf\\|/f fixed-interface", "K̂ rel. diff", "M̂ rel. diff",
+                  "certificate"], rows), [doc]
 
 
 def ccx_vs_emb(res):
@@ -642,6 +669,24 @@ def campbell_angles(res):
                   "largest change vs half the angles [%]", "smallest decay [1/s]"], rows), [doc]
 
 
+def tvd_rubber_inline4(res):
+    doc = res("tvd_rubber_inline4")
+    r = doc["data"]["runs"][0]
+    rows = [[num(o["order"]), num(o["none_rad"] * 1e3, ".3g"),
+             num(o["kelvin_voigt_rad"] * 1e3, ".3g"), num(o["kelvin_voigt_ratio"], ".2f"),
+             num(o["zener_rad"] * 1e3, ".3g"), num(o["zener_ratio"], ".2f"),
+             num(o["zener_eta02_rad"] * 1e3, ".3g"), num(o["zener_eta02_ratio"], ".2f")]
+            for o in r["orders"]]
+    lines = table(["order", "no TVD [mrad]", "Kelvin-Voigt [mrad]", "KV / none",
+                   "Zener, Den Hartog's η [mrad]", "Zener / none", "Zener, η = 0.2 [mrad]",
+                   "Zener 0.2 / none"], rows)
+    lines += ["", "Runs at %g rpm: " % r["rpm"] + "; ".join(
+        "`%s` %s, steady state %s, %s IDA steps, %s CPU s" % (k, v["status"], v["steady_state"],
+                                                            v["steps"], num(v["cpu_s"], ".1f"))
+        for k, v in r["runs"].items()) + "."]
+    return lines, [doc]
+
+
 def tvd_inline4_3250(res):
     return tvd_inline4(res, "tvd_inline4_3250")
 
@@ -713,9 +758,9 @@ def order_cuts_inline4(res):
 
 
 TABLES = {f.__name__: f for f in [
-    campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250,
+    campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250, tvd_rubber_inline4,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
-    crank_modes, slepc_modes, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
+    crank_modes, crank_modes_1m, slepc_modes, slepc_reduce, ccx_vs_emb, block_solve, free_vibration_supports_fv5, free_vibration_supports_fv52,
     crank_reduce_sizes, crank_reduce_modes, crank_reduce_stiffening, stress_recovery_1cyl,
     stress_recovery_1cyl_fatigue, stress_recovery_i4, stress_recovery_i4_fatigue,
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,

@@ -10,21 +10,11 @@
 # numbers to benchmarks/results/slepc_modes.json (benchmarks/record.py); table printed
 # (benchmarks/render_tables.py updates the docs).
 set -euo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-emb=${EMB_EXE:-$root/build/tools/emb/emb}
 command="bash benchmarks/slepc_modes.sh $*"
-h=${1:-}
-[ "$h" = default ] && h=""
 modes=${2:-20}
-out="$root/out/bench"
-mkdir -p "$out"
-msh="$out/slepc_crank.msh"
-size=()
-[ -n "$h" ] && size=(--size "$h")
-"$emb" mesh "$root/meshes/crankshaft_i4.geo" "${size[@]}" --save-mesh "$msh" -q > /dev/null
-mpi=(env OMPI_MCA_plm=isolated OMPI_MCA_btl_vader_single_copy_mechanism=none
-     OMPI_MCA_rmaps_base_oversubscribe=1 OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
-     mpirun --allow-run-as-root)
+PREFIX=slepc
+# shellcheck source=benchmarks/slepc_common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/slepc_common.sh"
 runs=()
 run() {  # LABEL COMMAND...
   local label=$1

@@ -11,6 +11,7 @@
 #include "libemb/cms/static_exactness.h"
 #include "libemb/common/error.h"
 #include "libemb/fe/modal_analysis.h"
+#include "libemb/linalg/sparse_dense_product.h"
 
 namespace emb {
 
@@ -135,7 +136,7 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
       // Expanded modes, both M-orthonormal in the full model: the MAC of a pair is
       // (φ_rᵀ M P φ_y)².
       const Eigen::MatrixXd& Phi_r = elastic_shapes;
-      const Eigen::MatrixXd MPphi = sys.M * (model.P * ref.vectors);
+      const Eigen::MatrixXd MPphi = MultiplySymmetric(sys.M, model.P * ref.vectors);
       const Eigen::MatrixXd cross = (Phi_r.transpose() * MPphi).cwiseAbs2();
       const int num_rigid = CountRigidModes(ref.eigenvalues, NormOne(model.K) / NormOne(model.M));
       for (int i = num_rigid; i < ref.eigenvalues.size(); ++i) {

@@ -13,6 +13,7 @@
 #include "libemb/cms/interface_partition.h"
 #include "libemb/fe/modal_analysis.h"
 #include "libemb/linalg/extended_product.h"
+#include "libemb/linalg/pencil_solver.h"
 #include "libemb/linalg/pinned_solver.h"
 #include "libemb/linalg/shift_invert_solver.h"
 #include "libemb/linalg/submatrix.h"
@@ -75,15 +76,16 @@ std::string DescribeFloatingPieces(const Mesh& mesh, const std::vector<Interface
 
 // Solves the eigenproblem for the selection, growing the request until the cut-off is passed.
 // A requested count that ends inside a degenerate group is extended to keep the group whole.
-EigenResult SolveSelected(ShiftInvertSolver& solver, int available, const ReductionOptions& o,
-                          std::string& note, const ProgressFn& progress) {
+EigenResult SolveSelected(const EigenSolveFn& solve, double sigma, int available,
+                          const ReductionOptions& o, std::string& note,
+                          const ProgressFn& progress) {
   const ModeSelection& sel = o.selection;
   EigenSolverOptions so = o.solver;
-  so.shift = solver.pinned() ? 0.0 : LambdaFromHz(o.shift_hz);
+  so.shift = sigma;
   const double cutoff = sel.CutoffHz();
   const int limit = available - 1;  // Lanczos needs fewer than the problem size
   EigenResult r = SolveLowestModes(
-      solver, so, sel.kind == ModeSelection::Kind::kCount ? sel.count + 1 : 20, cutoff, available,
+      solve, so, sel.kind == ModeSelection::Kind::kCount ? sel.count + 1 : 20, cutoff, available,
       progress);
   if (!r.ok()) return r;
   const int found = static_cast<int>(r.eigenvalues.size());
@@ -104,45 +106,11 @@ EigenResult SolveSelected(ShiftInvertSolver& solver, int available, const Reduct
     if (keep == found && found == limit) note += "; every available mode is below the cut-off";
   }
   r.eigenvalues.conservativeResize(keep);
-  r.vectors.conservativeResize(Eigen::NoChange, keep);
+  // (Vectors may be absent: on the ranks of a distributed solve other than 0.)
+  if (r.vectors.cols() > 0) r.vectors.conservativeResize(Eigen::NoChange, keep);
   r.backward_errors.conservativeResize(keep);
   r.num_converged = std::min(r.num_converged, keep);
   return r;
-}
-
-// Constraint modes by refinement with the shifted factorisation: ψ ← ψ + A_C⁻¹(b − K_II ψ; Q − C ψ)
-// contracts the error by |σ|/(λ₁ − σ) per step; with the residuals accumulated in extended
-// precision it converges to the correctly rounded solution (see extended_product.h).
-// `iterations` is set to the steps taken, or −1 if it did not converge.
-Eigen::MatrixXd SolveByShiftedRefinement(const ShiftInvertSolver& solver, const SparseMatrix& KII,
-                                         const SparseMatrix& C, const Eigen::MatrixXd& rhs,
-                                         const Eigen::MatrixXd& Q, int& iterations,
-                                         const ProgressFn& progress) {
-  const int nq = static_cast<int>(rhs.cols());
-  Eigen::MatrixXd Psi = solver.Solve(rhs, Q);
-  // The corrections fall by |σ|/(λ₁ − σ) per step until they reach the noise floor of the
-  // rounded solution, ~cond(A)·ε (~1e-12 with an RBE2 holding the part). Stop at 1e-13, or at
-  // the floor: once below 1e-7 a correction that no longer halves is noise. The accuracy
-  // reached is measured by the caller (static_residual) and by the certificate.
-  constexpr double kStaticTolerance = 1e-13;
-  constexpr double kNoiseCeiling = 1e-7;
-  constexpr int kMaxStaticIterations = 100;
-  double change = std::numeric_limits<double>::infinity();
-  int it = 0;
-  bool converged = false;
-  while (!converged && it < kMaxStaticIterations) {
-    const Eigen::MatrixXd r = ResidualExtended(KII, Psi, rhs);
-    const Eigen::MatrixXd rc = C.rows() > 0 ? ResidualExtended(C, Psi, Q) : Eigen::MatrixXd(0, nq);
-    const Eigen::MatrixXd delta = solver.Solve(r, rc);
-    Psi += delta;
-    const double previous = change;
-    change = delta.cwiseAbs().maxCoeff() / std::max(Psi.cwiseAbs().maxCoeff(), 1e-300);
-    converged = change <= kStaticTolerance || (change < kNoiseCeiling && change > 0.5 * previous);
-    ++it;
-    if (progress) progress("constraint modes", std::min(0.99, it / 5.0));
-  }
-  iterations = converged ? it : -1;
-  return Psi;
 }
 
 void CheckEigen(const EigenResult& r, const char* what) {
@@ -188,7 +156,11 @@ ReductionBasis BuildFreeFree(const Mesh& mesh, const SystemMatrices& sys,
   b.selection_note = "free-free (no interfaces): rigid-body motions + elastic modes, " +
                      o.selection.Describe();
   Stopwatch sw;
-  b.eig = SolveSelected(solver, sys.num_dofs(), shifted, b.selection_note, progress);
+  b.eig = SolveSelected(
+      [&](const EigenSolverOptions& so, const ProgressFn& p) {
+        return SolveGeneralizedEigen(solver, so, p);
+      },
+      LambdaFromHz(o.shift_hz), sys.num_dofs(), shifted, b.selection_note, progress);
   CheckEigen(b.eig, "free-free");
   const double threshold = 1e-10 * NormOne(sys.K) / NormOne(sys.M);
   const int rigid = static_cast<int>((b.eig.eigenvalues.array().abs() < threshold).count());
@@ -217,16 +189,42 @@ ReductionBasis BuildFreeFree(const Mesh& mesh, const SystemMatrices& sys,
 
 EigenResult SolveLowestModes(ShiftInvertSolver& solver, EigenSolverOptions options, int initial,
                              double fmax_hz, int available, const ProgressFn& progress) {
+  return SolveLowestModes(
+      [&solver](const EigenSolverOptions& so, const ProgressFn& p) {
+        return SolveGeneralizedEigen(solver, so, p);
+      },
+      options, initial, fmax_hz, available, progress);
+}
+
+EigenResult SolveLowestModes(const EigenSolveFn& solve, EigenSolverOptions options, int initial,
+                             double fmax_hz, int available, const ProgressFn& progress) {
   const int limit = available - 1;  // Lanczos needs fewer than the problem size
   int nev = initial;
   for (;;) {
     options.num_modes = std::min(nev, limit);
-    EigenResult r = SolveGeneralizedEigen(solver, options, progress);
+    EigenResult r = solve(options, progress);
     if (!r.ok() || !std::isfinite(fmax_hz) ||
         FrequencyHz(r.eigenvalues[r.eigenvalues.size() - 1]) > fmax_hz || options.num_modes == limit)
       return r;
-    nev = std::max(2 * nev, nev + 20);
+    nev = NextModeCount(r.eigenvalues, fmax_hz);
   }
+}
+
+int NextModeCount(const Eigen::VectorXd& eigenvalues, double fmax_hz) {
+  constexpr double kMinExponent = 0.5, kMaxExponent = 3.0, kMargin = 1.2;
+  const int n = static_cast<int>(eigenvalues.size());
+  const int lowest = n + 10, highest = std::max(4 * n, n + 20);
+  if (n < 4) return lowest;
+  const double f_top = FrequencyHz(eigenvalues[n - 1]);
+  const double f_half = FrequencyHz(eigenvalues[n / 2 - 1]);
+  double p = kMaxExponent;  // no usable spread (e.g. only rigid modes): assume the steepest
+  if (f_half > 0.0 && f_top > f_half)
+    p = std::clamp(std::log(n / static_cast<double>(n / 2)) / std::log(f_top / f_half),
+                   kMinExponent, kMaxExponent);
+  if (!(f_top > 0.0) || !(fmax_hz > f_top)) return lowest;
+  const double predicted = kMargin * n * std::pow(fmax_hz / f_top, p);
+  if (!(predicted < highest)) return highest;
+  return std::max(lowest, static_cast<int>(std::ceil(predicted)));
 }
 
 double ModeSelection::CutoffHz() const {
@@ -276,7 +274,11 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   EMB_THROW_IF(static_loads.cols() > 0 && static_loads.rows() != sys.num_dofs(),
                "reduction: static loads of " << static_loads.rows() << " rows; expected "
                                              << sys.num_dofs());
-  if (interfaces.empty()) return BuildFreeFree(mesh, sys, o, progress, static_loads);
+  if (interfaces.empty()) {
+    EMB_THROW_IF(o.pencil_solver, "a free-free reduction (no interfaces) runs on one process "
+                                  "only; give interfaces, or leave out the distributed backend");
+    return BuildFreeFree(mesh, sys, o, progress, static_loads);
+  }
 
   ReductionBasis b;
   b.interfaces = interfaces;
@@ -303,30 +305,36 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   EMB_THROW_IF(sel.kind == ModeSelection::Kind::kCount && sel.count >= available,
                "number of modes: " << sel.count << " requested but the interior has only "
                                    << available << " degrees of freedom");
-  ShiftInvertSolver solver(KII, MII, C, o.solver.backend);
+  std::unique_ptr<ConstrainedPencilSolver> solver =
+      o.pencil_solver ? o.pencil_solver(KII, MII, C)
+                      : std::make_unique<LocalPencilSolver>(KII, MII, C, o.solver.backend);
   const Eigen::MatrixXd R = RigidBodyModes(mesh);
   // Only RBE3 averages hold the part: K_II is singular and K_II − σM nearly so in the rigid
   // directions (its constrained solves would cancel rigid parts 1/|σ| large, and the Schur
   // complement of the averages is ill-conditioned: a slender bar's three RBE3 sections were
   // refused as "dependent", issue 19). The constrained inverse of K_II itself is applied
-  // instead, through a factorisation pinned 3-2-1 (shift 0): for the fixed-interface modes and
-  // the constraint modes alike. With no slaved unknowns the interior rigid motions are the
-  // full ones.
-  if (slaved.empty()) solver.PinRigidMotions(R, PinUnknowns(mesh, part));
+  // instead (shift 0), e.g. through a factorisation pinned 3-2-1: for the fixed-interface
+  // modes and the constraint modes alike. With no slaved unknowns the interior rigid motions
+  // are the full ones.
+  if (slaved.empty()) solver->HoldRigidMotions(R, PinUnknowns(mesh, part));
   const double sigma = slaved.empty() ? 0.0 : LambdaFromHz(o.shift_hz);
-  if (!solver.Prepare(sigma)) {
-    if (slaved.empty()) ThrowUnrestrained(mesh, interfaces, solver.message());
+  if (!solver->Prepare(sigma)) {
+    if (slaved.empty()) ThrowUnrestrained(mesh, interfaces, solver->message());
     EMB_THROW(NumericalError, "fixed-interface matrix K_II - sigma M_II (sigma = "
-                                  << sigma << ") could not be factorised: " << solver.message());
+                                  << sigma << ") could not be factorised: " << solver->message());
   }
-  b.times.Add("factorisation", solver.factor_seconds());
+  b.times.Add("factorisation", solver->factor_seconds());
   const double threshold = 1e-10 * NormOne(KII) / NormOne(MII);
 
   // Fixed-interface modes.
   b.selection_note = "fixed-interface modes: " + sel.Describe();
   const bool want_modes = !(sel.kind == ModeSelection::Kind::kCount && sel.count == 0);
   if (want_modes) {
-    b.eig = SolveSelected(solver, available, o, b.selection_note, progress);
+    b.eig = SolveSelected(
+        [&solver](const EigenSolverOptions& so, const ProgressFn& p) {
+          return solver->Eigenpairs(so, p);
+        },
+        sigma, available, o, b.selection_note, progress);
     CheckEigen(b.eig, "fixed-interface");
     for (const auto& [name, s] : b.eig.times.phases)
       if (name != "factorisation") b.times.Add(name, s);
@@ -345,20 +353,37 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   sw.Restart();
   if (progress) progress("constraint modes", 0.0);
   const Eigen::MatrixXd rhs = -MultiplyExtended(KIS, TS);
+  Eigen::MatrixXd Psi = solver->StaticSolve(rhs, Q, b.static_iterations, progress);
+  if (b.static_iterations < 0)
+    ThrowUnrestrained(mesh, interfaces,
+                      "the constraint modes did not converge: the interior stiffness is "
+                      "(nearly) singular");
+  const double constraint_solve_seconds = sw.seconds();
+
+  // Static load cases with the interfaces held: the constraint-mode equations with q = 0.
+  Eigen::MatrixXd UI;
+  if (static_loads.cols() > 0) {
+    sw.Restart();
+    const int nl = static_cast<int>(static_loads.cols());
+    Eigen::MatrixXd FI(ni, nl);
+    for (int k = 0; k < ni; ++k) FI.row(k) = static_loads.row(interior[k]);
+    int iterations = 0;
+    UI = solver->StaticSolve(FI, Eigen::MatrixXd::Zero(C.rows(), nl), iterations, {});
+    if (iterations < 0)
+      EMB_THROW(NumericalError, "the static load cases with the interfaces held did not "
+                                "converge: the interior stiffness is (nearly) singular");
+    b.times.Add("static load cases", sw.seconds());
+  }
+  // A process that only took part in distributed solves stops here (rank 0 holds the results).
+  if (!solver->holds_results()) {
+    b.times.Add("constraint modes", constraint_solve_seconds);
+    b.on_this_process = false;
+    return b;
+  }
+
+  sw.Restart();
   Eigen::MatrixXd RI(ni, 6);
   for (int k = 0; k < ni; ++k) RI.row(k) = R.row(interior[k]);
-  Eigen::MatrixXd Psi;
-  const PinnedConstrainedSolver* pinned = solver.pinned();
-  if (pinned) {
-    Psi = pinned->Solve(rhs, Q);
-    b.static_iterations = PinnedConstrainedSolver::kRefinementSteps;
-  } else {
-    Psi = SolveByShiftedRefinement(solver, KII, C, rhs, Q, b.static_iterations, progress);
-    if (b.static_iterations < 0)
-      ThrowUnrestrained(mesh, interfaces,
-                        "the constraint modes did not converge: the interior stiffness is "
-                        "(nearly) singular");
-  }
   // A rigid motion of the interfaces moves the part rigidly (K R = 0): that response is known
   // exactly, so the solves' forward error (~cond(K)·ε, 1e-9 on a slender tube) is removed from
   // it by a rank-6 correction Ψ ← Ψ + (R_I − Ψ P)(PᵀP)⁻¹Pᵀ, P = the rigid q-coordinates. The
@@ -385,29 +410,11 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
     }
     b.static_residual = worst;
   }
-  b.times.Add("constraint modes", sw.seconds());
-
-  // Static load cases with the interfaces held: the constraint-mode equations with q = 0.
+  b.times.Add("constraint modes", constraint_solve_seconds + sw.seconds());
   if (static_loads.cols() > 0) {
-    sw.Restart();
-    const int nl = static_cast<int>(static_loads.cols());
-    Eigen::MatrixXd FI(ni, nl);
-    for (int k = 0; k < ni; ++k) FI.row(k) = static_loads.row(interior[k]);
-    const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(C.rows(), nl);
-    Eigen::MatrixXd UI;
-    if (pinned) {
-      UI = pinned->Solve(FI, zero);
-    } else {
-      int iterations = 0;
-      UI = SolveByShiftedRefinement(solver, KII, C, FI, zero, iterations, {});
-      if (iterations < 0)
-        EMB_THROW(NumericalError, "the static load cases with the interfaces held did not "
-                                  "converge: the interior stiffness is (nearly) singular");
-    }
-    b.static_responses = Eigen::MatrixXd::Zero(N, nl);  // slaved unknowns: u_S = T_S·0 = 0
+    b.static_responses = Eigen::MatrixXd::Zero(N, static_loads.cols());  // u_S = T_S·0 = 0
     for (int k = 0; k < ni; ++k) b.static_responses.row(interior[k]) = UI.row(k);
     b.static_support = kSupportInterfacesHeld;
-    b.times.Add("static load cases", sw.seconds());
   }
 
   // T in full unknowns.

@@ -17,10 +17,15 @@
 ///    (PinnedConstrainedSolver). The rigid response, known exactly, is restored afterwards;
 ///  - fixed-interface normal modes Φ: K_II φ = λ M_II φ on C φ = 0 with the RBE2 surfaces
 ///    clamped, by shift-invert Lanczos on the same factorisation.
+/// Both solves go through a ConstrainedPencilSolver (linalg/pencil_solver.h): the above is
+/// LocalPencilSolver's (one process); the distributed one (ReductionOptions::pencil_solver,
+/// distributed/slepc_pencil_solver.h) factorises [K_II Cᵀ; C 0] with MUMPS instead and runs
+/// SLEPc on the constrained pencil, to the same solutions.
 /// CB is statically exact: for loads at the interfaces, T reproduces the full solution.
 ///
 /// Without interfaces the basis is the six rigid-body motions plus free-free elastic modes.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,6 +36,7 @@
 #include "libemb/common/timer.h"
 #include "libemb/fe/assembly.h"
 #include "libemb/linalg/eigen_solver.h"
+#include "libemb/linalg/pencil_solver.h"
 
 namespace emb {
 
@@ -59,6 +65,10 @@ struct ReductionOptions {
   ModeSelection selection;
   double shift_hz{-1.0};       ///< Lanczos shift [Hz] (negative: lowest modes)
   EigenSolverOptions solver;   ///< tolerance, subspace, backend; num_modes/shift are set here
+  /// Solver of the interior pencil (K_II, M_II, C) for the fixed-interface modes and the
+  /// constraint modes; empty: LocalPencilSolver (one process, solver.backend). A distributed
+  /// one (distributed/slepc_pencil_solver.h) makes BuildReductionBasis collective.
+  PencilSolverFactory pencil_solver;
 };
 
 /// A reduction basis in full FE unknowns, with what it took to make it.
@@ -93,17 +103,35 @@ struct ReductionBasis {
   Eigen::MatrixXd static_responses;
   std::string static_support;          ///< "interfaces held" or "inertia relief"
   PhaseTimes times;                    ///< "constraint modes", "factorisation", "eigen-solve", ...
+  /// False on an MPI rank other than 0 of a distributed reduction: it took part in the solves,
+  /// rank 0 holds the basis (only interfaces, frequencies and times are filled in here).
+  bool on_this_process{true};
 };
 
 /// The six rigid-body motions about the origin as full FE fields (N × 6): columns t_x, t_y,
 /// t_z, θ_x, θ_y, θ_z.
 Eigen::MatrixXd RigidBodyModes(const Mesh& mesh);
 
-/// The lowest eigenpairs of the solver's (constrained) pencil: `initial` of them, then more
-/// (at least doubling, reusing the factorisation) until the highest one found is above
+/// An eigen-solve of one pencil for the given options (num_modes set by the caller).
+using EigenSolveFn = std::function<EigenResult(const EigenSolverOptions&, const ProgressFn&)>;
+
+/// The lowest eigenpairs of a (constrained) pencil: `initial` of them, then more (reusing the
+/// factorisation; NextModeCount predicts how many) until the highest one found is above
 /// fmax_hz (infinite: no growth) or all `available` − 1 are asked for.
+EigenResult SolveLowestModes(const EigenSolveFn& solve, EigenSolverOptions options, int initial,
+                             double fmax_hz, int available, const ProgressFn& progress = {});
+/// The same with a ShiftInvertSolver of the pencil.
 EigenResult SolveLowestModes(ShiftInvertSolver& solver, EigenSolverOptions options, int initial,
                              double fmax_hz, int available, const ProgressFn& progress = {});
+
+/// How many of the lowest modes to ask for next when the `eigenvalues` found (ascending,
+/// [rad²/s²]) end below fmax_hz: the mode count is modelled as N(f) = N_top (f / f_top)^p, p
+/// from the upper half of what was found (N/2 modes to f_{N/2}, N to f_top) and kept between
+/// 1/2 (bending of a slender part: f ∝ n²) and 3 (Weyl's law for a solid), with a 20 %
+/// margin. Why: asking for twice as many each time redid the whole solve up to three times
+/// (20, 40, then 80 modes for the 48 the inline-4 crank keeps below 20 kHz). The answer is
+/// at least N + 10 and at most max(4N, N + 20).
+int NextModeCount(const Eigen::VectorXd& eigenvalues, double fmax_hz);
 
 /// Builds the Craig–Bampton basis of `sys` (assembled from `mesh`) for `interfaces` (empty:
 /// free-free basis).

@@ -3,6 +3,7 @@
 #include "libemb/common/error.h"
 #include "libemb/common/mass_properties.h"
 #include "libemb/linalg/kronecker_matrix.h"
+#include "libemb/linalg/sparse_dense_product.h"
 
 namespace emb {
 
@@ -29,7 +30,7 @@ InertiaInvariants CalcInertiaInvariants(const Eigen::Matrix3Xd& nodes, const Spa
   F.middleCols(1, 3) = nodes.transpose();
   for (int l = 0; l < 3; ++l)
     for (int i = 0; i < n; ++i) F.block(i, 4 + l * ne, 1, ne) = modes.row(3 * i + l);
-  const Eigen::MatrixXd mF = ms * F;
+  const Eigen::MatrixXd mF = MultiplySymmetric(ms, F);  // m_s is symmetric, as M is
 
   InertiaInvariants inv;
   const Eigen::MatrixXd head = F.leftCols(4).transpose() * mF;  // 4 × (4 + 3 ne)

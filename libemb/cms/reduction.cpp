@@ -8,6 +8,7 @@
 #include "libemb/common/error.h"
 #include "libemb/fe/mass_properties.h"
 #include "libemb/linalg/extended_product.h"
+#include "libemb/linalg/sparse_dense_product.h"
 
 namespace emb {
 
@@ -96,6 +97,10 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   ReductionBasis basis =
       BuildReductionBasis(mesh, sys, interfaces, job.reduction, progress, inertial_loads);
   for (const auto& [name, s] : basis.times.phases) body.times.Add(name, s);
+  if (!basis.on_this_process) {  // an MPI rank that took part in the solves: rank 0 goes on
+    body.on_this_process = false;
+    return body;
+  }
   body.interfaces = basis.interfaces;
   body.free_free = basis.free_free;
   body.num_boundary = basis.num_boundary;
@@ -111,13 +116,13 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   const auto Tb = basis.T.leftCols(nb);
   const auto Tm = basis.T.rightCols(nr - nb);
   const Eigen::MatrixXd KTb = MultiplyExtended(sys.K, Tb);
-  const Eigen::MatrixXd KTm = sys.K * Tm;
+  const Eigen::MatrixXd KTm = MultiplySymmetric(sys.K, Tm);
   body.K.resize(nr, nr);
   body.K.topLeftCorner(nb, nb) = TransposeProductExtended(Tb, KTb);
   body.K.topRightCorner(nb, nr - nb) = Tb.transpose() * KTm;
   body.K.bottomLeftCorner(nr - nb, nb) = body.K.topRightCorner(nb, nr - nb).transpose();
   body.K.bottomRightCorner(nr - nb, nr - nb) = Tm.transpose() * KTm;
-  body.M = basis.T.transpose() * (sys.M * basis.T);
+  body.M = basis.T.transpose() * MultiplySymmetric(sys.M, basis.T);
   body.K = 0.5 * (body.K + body.K.transpose()).eval();
   body.M = 0.5 * (body.M + body.M.transpose()).eval();
   body.times.Add("reduced matrices", sw.seconds());

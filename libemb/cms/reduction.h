@@ -81,9 +81,13 @@ struct ReducedBody {
   Eigen::MatrixXd mesh_shapes;         ///< 3n × ne, empty unless kept
   int num_fe_dofs{0};
   PhaseTimes times;
+  /// False on an MPI rank other than 0 of a distributed reduction (ReductionOptions::
+  /// pencil_solver): it took part in the solves and holds nothing else; rank 0 has the body.
+  bool on_this_process{true};
 };
 
-/// Runs the job on an assembled part.
+/// Runs the job on an assembled part. With a distributed pencil solver in job.reduction every
+/// rank calls it (collective until the basis is built), and only rank 0's body is complete.
 /// @throws InputError / NumericalError as the steps do (see craig_bampton.h, interface.h).
 ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
                        const IsotropicMaterial& material, const ReductionJob& job,

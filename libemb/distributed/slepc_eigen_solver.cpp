@@ -11,99 +11,10 @@
 #include "libemb/common/error.h"
 #include "libemb/common/timer.h"
 #include "libemb/distributed/petsc_call.h"
+#include "libemb/distributed/petsc_matrices.h"
 
 namespace emb::distributed {
 namespace {
-
-// Owns a PETSc object and destroys it (unchecked: destructors must not throw).
-template <class T, PetscErrorCode (*Destroy)(T*)>
-struct Owned {
-  T handle{nullptr};
-  Owned() = default;
-  Owned(const Owned&) = delete;
-  Owned& operator=(const Owned&) = delete;
-  ~Owned() {
-    if (handle) Destroy(&handle);
-  }
-};
-using OwnedMat = Owned<Mat, MatDestroy>;
-using OwnedVec = Owned<Vec, VecDestroy>;
-using OwnedEps = Owned<EPS, EPSDestroy>;
-using OwnedScatter = Owned<VecScatter, VecScatterDestroy>;
-
-// The rows [begin, end) this rank owns in PETSc's default split of n rows.
-std::pair<PetscInt, PetscInt> OwnedRows(PetscInt n) {
-  PetscInt local = PETSC_DECIDE, global = n;
-  EMB_PETSC_CALL(PetscSplitOwnership(PETSC_COMM_WORLD, &local, &global));
-  PetscInt end = 0;
-  CheckMpi(MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD), "MPI_Scan");
-  return {end - local, end};
-}
-
-// Rows [begin, end) of the symmetric, fully stored A (column j of A = row j) as an MPIAIJ
-// matrix with exact preallocation; every rank passes its own rows.
-void Distribute(const SparseMatrix& A, std::pair<PetscInt, PetscInt> rows, OwnedMat& out) {
-  const auto [begin, end] = rows;
-  const PetscInt n = static_cast<PetscInt>(A.rows()), local = end - begin;
-  std::vector<PetscInt> diagonal(local, 0), off_diagonal(local, 0);
-  for (PetscInt i = begin; i < end; ++i)
-    for (SparseMatrix::InnerIterator it(A, i); it; ++it)
-      ++(it.row() >= begin && it.row() < end ? diagonal : off_diagonal)[i - begin];
-  EMB_PETSC_CALL(MatCreateAIJ(PETSC_COMM_WORLD, local, local, n, n, 0, diagonal.data(), 0,
-                              off_diagonal.data(), &out.handle));
-  std::vector<PetscInt> cols;
-  std::vector<PetscScalar> vals;
-  for (PetscInt i = begin; i < end; ++i) {
-    cols.clear();
-    vals.clear();
-    for (SparseMatrix::InnerIterator it(A, i); it; ++it) {
-      cols.push_back(static_cast<PetscInt>(it.row()));
-      vals.push_back(it.value());
-    }
-    EMB_PETSC_CALL(MatSetValues(out.handle, 1, &i, static_cast<PetscInt>(cols.size()),
-                                cols.data(), vals.data(), INSERT_VALUES));
-  }
-  EMB_PETSC_CALL(MatAssemblyBegin(out.handle, MAT_FINAL_ASSEMBLY));
-  EMB_PETSC_CALL(MatAssemblyEnd(out.handle, MAT_FINAL_ASSEMBLY));
-  EMB_PETSC_CALL(MatSetOption(out.handle, MAT_SYMMETRIC, PETSC_TRUE));
-  EMB_PETSC_CALL(MatSetOption(out.handle, MAT_SYMMETRY_ETERNAL, PETSC_TRUE));
-}
-
-// Order-dependent fingerprint of a sparse matrix: size, entries, Σ (k+1)·a_k in storage order.
-std::vector<double> Fingerprint(const SparseMatrix& A) {
-  double weighted = 0.0, k = 0.0;
-  for (int j = 0; j < A.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(A, j); it; ++it) weighted += (++k) * it.value() + it.row();
-  return {double(A.rows()), double(A.nonZeros()), weighted};
-}
-
-// True on every rank iff every rank holds bitwise the same K and M as rank 0.
-bool SameMatricesOnAllRanks(const SparseMatrix& K, const SparseMatrix& M) {
-  std::vector<double> mine = Fingerprint(K), m = Fingerprint(M);
-  mine.insert(mine.end(), m.begin(), m.end());
-  std::vector<double> root = mine;
-  CheckMpi(MPI_Bcast(root.data(), static_cast<int>(root.size()), MPI_DOUBLE, 0, PETSC_COMM_WORLD),
-           "MPI_Bcast");
-  int differs = root != mine ? 1 : 0, any = 0;
-  CheckMpi(MPI_Allreduce(&differs, &any, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD), "MPI_Allreduce");
-  return any == 0;
-}
-
-// MUMPS's counters of the factorisation behind `pc` (after set-up).
-void ReadFactorStats(PC pc, SlepcSolveStats& s) {
-  Mat F = nullptr;
-  EMB_PETSC_CALL(PCFactorGetMatrix(pc, &F));
-  PetscInt entries = 0, peak_mb = 0, total_mb = 0, negative = 0;
-  EMB_PETSC_CALL(MatMumpsGetInfog(F, 29, &entries));  // < 0: millions of entries
-  EMB_PETSC_CALL(MatMumpsGetInfog(F, 21, &peak_mb));
-  EMB_PETSC_CALL(MatMumpsGetInfog(F, 22, &total_mb));
-  EMB_PETSC_CALL(MatMumpsGetInfog(F, 12, &negative));
-  EMB_PETSC_CALL(MatMumpsGetRinfog(F, 3, &s.factor_flops));
-  s.factor_entries = entries >= 0 ? entries : -static_cast<long long>(entries) * 1000000LL;
-  s.factor_peak_mb = static_cast<double>(peak_mb);
-  s.factor_total_mb = static_cast<double>(total_mb);
-  s.negative_pivots = static_cast<int>(negative);
-}
 
 // Rank 0's status, eigenvalues and checks to every rank.
 void ShareOutcome(EigenResult& r, bool root) {
@@ -134,14 +45,25 @@ void ShareOutcome(EigenResult& r, bool root) {
 EigenResult SolveGeneralizedEigenSlepc(const SlepcSession& session, const SparseMatrix& K,
                                        const SparseMatrix& M, const EigenSolverOptions& o,
                                        SlepcSolveStats* stats_out, const ProgressFn& progress) {
+  return SolveGeneralizedEigenSlepc(session, K, M, SparseMatrix(0, K.cols()), o, stats_out,
+                                    progress);
+}
+
+EigenResult SolveGeneralizedEigenSlepc(const SlepcSession& session, const SparseMatrix& K,
+                                       const SparseMatrix& M, const SparseMatrix& C,
+                                       const EigenSolverOptions& o, SlepcSolveStats* stats_out,
+                                       const ProgressFn& progress) {
   EMB_THROW_IF(K.rows() != K.cols() || M.rows() != M.cols() || K.rows() != M.rows(),
                "eigenproblem: expected square K and M of one size, got K "
                    << K.rows() << "x" << K.cols() << ", M " << M.rows() << "x" << M.cols());
+  EMB_THROW_IF(C.cols() != K.cols(), "eigenproblem: constraints of " << C.cols()
+                                         << " columns for " << K.cols() << " unknowns");
   const PetscInt n = static_cast<PetscInt>(K.rows());
-  EMB_THROW_IF(o.num_modes < 1 || o.num_modes >= n,
-               "number of modes: expected 1 to " << n - 1 << " for SLEPc's Krylov-Schur on "
-                                                 << n << " unknowns, got " << o.num_modes);
-  if (!SameMatricesOnAllRanks(K, M))
+  const PetscInt nc = static_cast<PetscInt>(C.rows());  // constraints
+  EMB_THROW_IF(o.num_modes < 1 || o.num_modes >= n - nc,
+               "number of modes: expected 1 to " << n - nc - 1 << " for SLEPc's Krylov-Schur on "
+                                                 << n - nc << " unknowns, got " << o.num_modes);
+  if (!SameMatricesOnAllRanks({&K, &M, &C}))
     EMB_THROW(NumericalError, "the MPI ranks assembled different K or M (the mesh generated "
                               "differently on some rank?): mesh once with `emb mesh` and give "
                               "every rank the same .msh file");
@@ -154,10 +76,21 @@ EigenResult SolveGeneralizedEigenSlepc(const SlepcSession& session, const Sparse
   r.method = "slepc krylov-schur, mumps (" + std::to_string(session.size()) + " ranks)";
 
   Stopwatch sw;
-  const auto rows = OwnedRows(n);
+  // With constraints, the pencil ([K Cᵀ; C 0], [M 0; 0 0]) of n + nc unknowns (x, μ): its
+  // finite eigenpairs are those of K on C x = 0; M's zero block makes the B-inner product
+  // semi-definite, which SLEPc's shift-and-invert handles (purification, EPSSetPurify).
+  const PetscInt size = n + nc;
+  const auto rows = OwnedRows(size);
   OwnedMat Kp, Mp;
-  Distribute(K, rows, Kp);
-  Distribute(M, rows, Mp);
+  if (nc == 0) {  // no copies
+    Distribute(K, rows, Kp);
+    Distribute(M, rows, Mp);
+  } else {
+    SparseMatrix padded_M = M;
+    padded_M.conservativeResize(size, size);
+    Distribute(SaddlePoint(K, C), rows, Kp);
+    Distribute(padded_M, rows, Mp);
+  }
   r.times.Add("distribution", sw.seconds());
 
   OwnedEps eps;
@@ -197,6 +130,9 @@ EigenResult SolveGeneralizedEigenSlepc(const SlepcSession& session, const Sparse
     return r;
   }
   ReadFactorStats(pc, stats);
+  // The saddle-point matrix's inertia has nc negative eigenvalues more than the constrained
+  // K − σM (Haynsworth: inertia = inertia(K − σM on C x = 0) + nc negative).
+  if (stats.negative_pivots >= 0) stats.negative_pivots -= static_cast<int>(nc);
   r.factor.nnz_factor = stats.factor_entries;
   r.factor.flops = stats.factor_flops;
   r.factor.num_negative_pivots = stats.negative_pivots;
@@ -231,7 +167,7 @@ EigenResult SolveGeneralizedEigenSlepc(const SlepcSession& session, const Sparse
                                    SCATTER_FORWARD));
     EMB_PETSC_CALL(VecScatterEnd(to_root.handle, x.handle, x_root.handle, INSERT_VALUES,
                                  SCATTER_FORWARD));
-    if (root) {
+    if (root) {  // x of (x, μ)
       const PetscScalar* data = nullptr;
       EMB_PETSC_CALL(VecGetArrayRead(x_root.handle, &data));
       vectors.col(i) = Eigen::Map<const Eigen::VectorXd>(data, n);
@@ -257,7 +193,7 @@ EigenResult SolveGeneralizedEigenSlepc(const SlepcSession& session, const Sparse
   } else {
     r.status = EigenStatus::kSuccess;
   }
-  if (root) RefineAndCheckEigenpairs(K, M, SparseMatrix(0, K.cols()), o.residual_tolerance, r);
+  if (root) RefineAndCheckEigenpairs(K, M, C, o.residual_tolerance, r);
   ShareOutcome(r, root);
   r.times.Add("checks", sw.seconds());
   if (stats_out) *stats_out = stats;

@@ -54,4 +54,15 @@ EigenResult SolveGeneralizedEigenSlepc(const SlepcSession& session, const Sparse
                                        SlepcSolveStats* stats = nullptr,
                                        const ProgressFn& progress = {});
 
+/// The same on the subspace C φ = 0 (C: m × n, full row rank): SLEPc solves the pencil
+/// ([K Cᵀ; C 0], [M 0; 0 0]) of n + m unknowns, MUMPS factorises the (indefinite) shifted
+/// saddle-point matrix, and rank 0 checks the pairs as the single-process path does (residual
+/// outside range(Cᵀ)). negative_pivots counts the constrained eigenvalues below σ (MUMPS's
+/// count less the m of the constraints).
+EigenResult SolveGeneralizedEigenSlepc(const SlepcSession& session, const SparseMatrix& K,
+                                       const SparseMatrix& M, const SparseMatrix& C,
+                                       const EigenSolverOptions& options,
+                                       SlepcSolveStats* stats = nullptr,
+                                       const ProgressFn& progress = {});
+
 }  // namespace emb::distributed

@@ -62,6 +62,17 @@ SlepcSession::SlepcSession() {
   CheckMpi(MPI_Comm_size(PETSC_COMM_WORLD, &size_), "MPI_Comm_size");
 }
 
+int SlepcSession::FromRoot(int value) const {
+  CheckMpi(MPI_Bcast(&value, 1, MPI_INT, 0, PETSC_COMM_WORLD), "MPI_Bcast");
+  return value;
+}
+
+int SlepcSession::MaxOverRanks(int value) const {
+  int max = value;
+  CheckMpi(MPI_Allreduce(&value, &max, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD), "MPI_Allreduce");
+  return max;
+}
+
 SlepcSession::~SlepcSession() {
   if (std::uncaught_exceptions() > 0 && size_ > 1) return;
   PetscPopErrorHandler();

@@ -26,6 +26,10 @@ class SlepcSession {
   int rank() const { return rank_; }  ///< this process in MPI_COMM_WORLD, 0 … size − 1
   int size() const { return size_; }  ///< number of MPI processes
   bool is_root() const { return rank_ == 0; }
+  /// Rank 0's `value`, on every rank (collective).
+  int FromRoot(int value) const;
+  /// The largest `value` over the ranks, on every rank (collective).
+  int MaxOverRanks(int value) const;
 
  private:
   int rank_{0};

@@ -9,24 +9,17 @@
 
 namespace emb::engine {
 
-TorsionalDamperParts AddTorsionalDamper(mbs::System* sys, const TorsionalDamperSpec& s) {
-  const std::string what = "torsional damper '" + s.name + "'";
-  EMB_THROW_IF(!(s.ring_mass > 0.0) || !std::isfinite(s.ring_mass),
-               what << " ring_mass: expected > 0 kg, got " << s.ring_mass);
-  EMB_THROW_IF(!(s.ring_inertia > 0.0) || !std::isfinite(s.ring_inertia),
-               what << " ring_inertia: expected > 0 kg m^2, got " << s.ring_inertia);
-  EMB_THROW_IF(!(s.stiffness >= 0.0) || !std::isfinite(s.stiffness),
-               what << " stiffness: expected >= 0 N m/rad, got " << s.stiffness);
-  EMB_THROW_IF(!(s.damping >= 0.0) || !std::isfinite(s.damping),
-               what << " damping: expected >= 0 N m s/rad, got " << s.damping);
-  EMB_THROW_IF(s.stiffness == 0.0 && s.damping == 0.0,
-               what << ": expected a stiffness or a damping > 0 (a free ring does nothing)");
-  int hub = -1;
-  try {
-    hub = sys->FindMarker(s.hub_marker);
-  } catch (const InputError& e) {
-    EMB_THROW(InputError, what << " hub: " << e.what());
-  }
+namespace {
+
+struct CoaxialRing {
+  int body{-1}, marker{-1};
+};
+
+// A rigid ring (polar inertia J, diametral J / 2) at the hub marker's initial pose, spinning
+// with the hub's body, on a revolute joint `joint` about the hub marker's z axis; its marker
+// "<name>_axis" at its centre.
+CoaxialRing AddCoaxialRing(mbs::System* sys, const std::string& name, const std::string& joint,
+                           double mass, double J, int hub) {
   const mbs::Marker& m = sys->marker(hub);
   // The hub marker's initial pose and velocity from its body's initial data (undeformed).
   Eigen::Vector3d p_W = m.p_BM, v_W = Eigen::Vector3d::Zero(), omega_W = Eigen::Vector3d::Zero();
@@ -38,22 +31,76 @@ TorsionalDamperParts AddTorsionalDamper(mbs::System* sys, const TorsionalDamperS
     omega_W = b.omega_W;
     v_W = b.v_WB + b.omega_W.cross(b.R_WB * m.p_BM);
   }
+  const std::string hub_name = m.name;
   mbs::RigidBody ring;
-  ring.name = s.name + "_ring";
-  ring.mass = s.ring_mass;
-  ring.inertia_B = Eigen::Vector3d(0.5 * s.ring_inertia, 0.5 * s.ring_inertia, s.ring_inertia)
-                       .asDiagonal();
+  ring.name = name;
+  ring.mass = mass;
+  ring.inertia_B = Eigen::Vector3d(0.5 * J, 0.5 * J, J).asDiagonal();
   ring.p_WB = p_W;
   ring.R_WB = R_WM;
   ring.v_WB = v_W;
   ring.omega_W = omega_W;
+  CoaxialRing r;
+  r.body = sys->AddBody(ring);
+  r.marker = sys->AddMarker(name + "_axis", name, Eigen::Vector3d::Zero(),
+                            Eigen::Matrix3d::Identity());
+  sys->AddJoint(joint, mbs::JointType::kRevolute, name + "_axis", hub_name);
+  return r;
+}
+
+}  // namespace
+
+TorsionalDamperParts AddTorsionalDamper(mbs::System* sys, const TorsionalDamperSpec& s) {
+  const std::string what = "torsional damper '" + s.name + "'";
+  EMB_THROW_IF(!(s.ring_mass > 0.0) || !std::isfinite(s.ring_mass),
+               what << " ring_mass: expected > 0 kg, got " << s.ring_mass);
+  EMB_THROW_IF(!(s.ring_inertia > 0.0) || !std::isfinite(s.ring_inertia),
+               what << " ring_inertia: expected > 0 kg m^2, got " << s.ring_inertia);
+  EMB_THROW_IF(!(s.stiffness >= 0.0) || !std::isfinite(s.stiffness),
+               what << " stiffness: expected >= 0 N m/rad, got " << s.stiffness);
+  EMB_THROW_IF(!(s.damping >= 0.0) || !std::isfinite(s.damping),
+               what << " damping: expected >= 0 N m s/rad, got " << s.damping);
+  EMB_THROW_IF(s.stiffness == 0.0 && s.damping == 0.0 && s.arms.empty(),
+               what << ": expected a stiffness, a damping or a rubber arm > 0 (a free ring does "
+                       "nothing)");
+  std::vector<double> eps;
+  for (std::size_t j = 0; j < s.arms.size(); ++j) {
+    try {
+      // Per arm sqrt(2) tighter: the arms' errors add up to at most sqrt(2) times the
+      // largest relative one on |k*| (zener_rubber.h).
+      eps.push_back(CalcJunctionInertia(s.arms[j], s.band_hz, s.junction_error / std::sqrt(2.0)));
+    } catch (const InputError& e) {
+      EMB_THROW(InputError, what << " rubber arm " << j + 1 << ": " << e.what());
+    }
+  }
+  int hub = -1;
+  try {
+    hub = sys->FindMarker(s.hub_marker);
+  } catch (const InputError& e) {
+    EMB_THROW(InputError, what << " hub: " << e.what());
+  }
   TorsionalDamperParts parts;
-  parts.ring_body = sys->AddBody(ring);
-  parts.ring_marker =
-      sys->AddMarker(s.name + "_ring_axis", ring.name, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  sys->AddJoint(s.name + "_bearing", mbs::JointType::kRevolute, s.name + "_ring_axis", s.hub_marker);
-  sys->AddForceElement(std::make_shared<mbs::RotationalSpringDamper>(
-      s.name, parts.ring_marker, hub, s.stiffness, s.damping, 0.0));
+  const CoaxialRing ring =
+      AddCoaxialRing(sys, s.name + "_ring", s.name + "_bearing", s.ring_mass, s.ring_inertia, hub);
+  parts.ring_body = ring.body;
+  parts.ring_marker = ring.marker;
+  if (s.stiffness > 0.0 || s.damping > 0.0)
+    sys->AddForceElement(std::make_shared<mbs::RotationalSpringDamper>(
+        s.name, parts.ring_marker, hub, s.stiffness, s.damping, 0.0));
+  for (std::size_t j = 0; j < s.arms.size(); ++j) {
+    const std::string arm = s.name + "_arm" + std::to_string(j + 1);
+    const std::string junction_name = s.name + "_junction" + std::to_string(j + 1);
+    const CoaxialRing junction =
+        AddCoaxialRing(sys, junction_name, junction_name + "_bearing",
+                       s.ring_mass * eps[j] / s.ring_inertia, eps[j], hub);
+    const double k = s.arms[j].stiffness, c = k * s.arms[j].relaxation_time;
+    sys->AddForceElement(std::make_shared<mbs::RotationalSpringDamper>(
+        arm + "_spring", junction.marker, hub, k, 0.0, 0.0));
+    sys->AddForceElement(std::make_shared<mbs::RotationalSpringDamper>(
+        arm + "_dashpot", parts.ring_marker, junction.marker, 0.0, c, 0.0));
+    parts.junction_bodies.push_back(junction.body);
+    parts.junction_inertia.push_back(eps[j]);
+  }
   return parts;
 }
 

@@ -10,6 +10,15 @@
 ///   T_on_ring = -k theta - c theta',  k [N m/rad], c [N m s/rad]
 /// (Kelvin-Voigt rubber: stiffness and damping constant in frequency; k = 0 is the viscous
 /// ring). The ring starts spinning with the hub (its body's initial angular velocity).
+/// Frequency-dependent rubber (zener_rubber.h): Maxwell arms in parallel with k and c, so
+///   k*(w) = k + i w c + sum_j k_j i w tau_j / (1 + i w tau_j)
+/// (k = static_stiffness, one arm and c = 0: the Zener / standard linear solid), each arm
+/// realised with a light junction ring "<name>_junction<j>" (1-based) of polar inertia eps_j on
+/// its own revolute joint "<name>_junction<j>_bearing" about the hub axis, the spring
+/// "<name>_arm<j>_spring" (k_j, hub -> junction) and the dashpot "<name>_arm<j>_dashpot"
+/// (c_j = k_j tau_j, junction -> ring); eps_j from CalcJunctionInertia so that k*(w) of the
+/// model is within junction_error of the ideal up to band_hz (derivation in zener_rubber.h).
+/// Its mass is ring_mass eps_j / J_r (the ring's radius of gyration).
 ///
 /// Typical values, a 1.6-2.0 l inline-4 (the inline-4 scene's crank, first installed torsion
 /// ~ 400-600 Hz): ring J_r 2e-3 .. 1e-2 kg m^2 (mass 1-3 kg), mass ratio mu = J_r / J_modal
@@ -17,7 +26,9 @@
 /// 0.05 .. 0.15 (natural rubber ~ 0.05, damped elastomers ~ 0.1). TuneDenHartog gives k, c.
 
 #include <string>
+#include <vector>
 
+#include "libemb/engine/zener_rubber.h"
 #include "libemb/mbs/core/system.h"
 
 namespace emb::engine {
@@ -29,19 +40,30 @@ struct TorsionalDamperSpec {
   double ring_inertia{0.0};  ///< polar, about the axis [kg m^2] > 0
   double stiffness{0.0};     ///< [N m/rad] >= 0
   double damping{0.0};       ///< [N m s/rad] >= 0
+  std::vector<MaxwellArm> arms;  ///< Maxwell arms in parallel (frequency-dependent rubber)
+  /// Highest frequency of interest [Hz]: the arms' junction rings are chosen so that k*(w)
+  /// is within junction_error of the ideal rubber up to here. 5000 Hz is twice `emb
+  /// campbell`'s default band and far above the engine orders' content.
+  double band_hz{5000.0};
+  double junction_error{1e-3};  ///< bound on |k*_model / k*_ideal - 1| up to band_hz, (0, 1)
 };
 
 /// What AddTorsionalDamper added.
 struct TorsionalDamperParts {
   int ring_body{-1};
   int ring_marker{-1};
+  std::vector<int> junction_bodies;        ///< one per arm
+  std::vector<double> junction_inertia;    ///< eps_j [kg m^2], one per arm
 };
 
 /// Adds the ring body "<name>_ring" (at the hub marker's initial pose, spinning with the hub's
-/// body), its marker "<name>_ring_axis", the revolute joint "<name>_bearing" and the
-/// spring-damper "<name>" to an unfinalized system.
+/// body), its marker "<name>_ring_axis", the revolute joint "<name>_bearing", the
+/// spring-damper "<name>" (when k or c > 0) and per Maxwell arm its junction ring, joint and
+/// two elements (file comment) to an unfinalized system.
 /// @throws InputError naming the damper for a negative or zero ring mass or inertia, negative
-/// stiffness or damping, both k and c zero, or an unknown hub marker (did-you-mean).
+/// stiffness or damping, k, c zero and no arm, an arm's stiffness or relaxation time not > 0
+/// (naming the arm), band_hz not > 0, junction_error outside (0, 1), or an unknown hub marker
+/// (did-you-mean).
 TorsionalDamperParts AddTorsionalDamper(mbs::System* system, const TorsionalDamperSpec& spec);
 
 /// Den Hartog's optimum absorber on a primary mode of frequency f_n [Hz] and modal inertia

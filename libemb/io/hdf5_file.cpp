@@ -159,7 +159,8 @@ void DisableHdf5ExitCleanup() { H5dont_atexit(); }
 namespace {
 
 void WriteRaw(hid_t file, const std::string& fname, const std::string& path, hid_t file_type,
-              hid_t mem_type, const void* data, const std::vector<std::uint64_t>& dims) {
+              hid_t mem_type, const void* data, const std::vector<std::uint64_t>& dims,
+              bool compress) {
   std::vector<hsize_t> d(dims.begin(), dims.end());
   Handle space(CheckId(H5Screate_simple(static_cast<int>(d.size()), d.data(), nullptr), fname,
                        "dataspace for " + path),
@@ -167,7 +168,7 @@ void WriteRaw(hid_t file, const std::string& fname, const std::string& path, hid
   Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
   H5Pset_obj_track_times(dcpl.get(), 0);  // reproducible files: no time stamps
   const hsize_t total = std::accumulate(d.begin(), d.end(), hsize_t{1}, std::multiplies<>());
-  if (total >= 4096 && !d.empty()) {
+  if (compress && total >= 4096 && !d.empty()) {
     // Chunks of whole trailing rows, about 1 MiB each.
     std::vector<hsize_t> chunk = d;
     const hsize_t row = total / std::max<hsize_t>(d[0], 1);
@@ -190,7 +191,7 @@ void WriteRaw(hid_t file, const std::string& fname, const std::string& path, hid
 
 void H5File::Write(const std::string& path, const double* data,
                    const std::vector<std::uint64_t>& dims) {
-  WriteRaw(id_, path_, path, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, dims);
+  WriteRaw(id_, path_, path, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, dims, false);
 }
 void H5File::Write(const std::string& path, const float* data,
                    const std::vector<std::uint64_t>& dims) {
@@ -198,17 +199,17 @@ void H5File::Write(const std::string& path, const float* data,
 }
 void H5File::Write(const std::string& path, const int* data,
                    const std::vector<std::uint64_t>& dims) {
-  WriteRaw(id_, path_, path, H5T_STD_I32LE, H5T_NATIVE_INT, data, dims);
+  WriteRaw(id_, path_, path, H5T_STD_I32LE, H5T_NATIVE_INT, data, dims, true);
 }
 void H5File::Write(const std::string& path, const std::uint64_t* data,
                    const std::vector<std::uint64_t>& dims) {
-  WriteRaw(id_, path_, path, H5T_STD_U64LE, H5T_NATIVE_UINT64, data, dims);
+  WriteRaw(id_, path_, path, H5T_STD_U64LE, H5T_NATIVE_UINT64, data, dims, true);
 }
 void H5File::Write(const std::string& path, const std::vector<std::string>& strings) {
   std::size_t width = 0;
   const std::vector<char> packed = h5::PackFixed(strings, &width);
   Handle t = FixedString(width);
-  WriteRaw(id_, path_, path, t.get(), t.get(), packed.data(), {strings.size()});
+  WriteRaw(id_, path_, path, t.get(), t.get(), packed.data(), {strings.size()}, true);
 }
 
 namespace {

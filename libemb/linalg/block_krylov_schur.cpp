@@ -9,6 +9,7 @@
 #include "libemb/common/error.h"
 #include "libemb/common/parallel.h"
 #include "libemb/common/timer.h"
+#include "libemb/linalg/blas.h"
 
 namespace emb {
 namespace {
@@ -29,12 +30,13 @@ void FillRandom(Eigen::Ref<Eigen::MatrixXd> X, std::mt19937_64& rng) {
 Eigen::MatrixXd Symmetric(const Eigen::MatrixXd& A) { return 0.5 * (A + A.transpose()); }
 
 // The tall products of the process (n × k by k × b, and their transposes) cut into a fixed
-// number of row chunks that run concurrently; the partial sums of Pᵀ W are added in chunk
-// order, so the numbers do not depend on the thread count.
+// number of row chunks that run concurrently, each by the BLAS (blas.h); the partial
+// sums of Pᵀ W are added in chunk order, so the numbers do not depend on the thread count.
 constexpr int kRowChunks = 2;
 
 template <typename F>
 void ForRowChunks(Eigen::Index n, F&& f) {
+  UseOneBlasThread();  // the chunks call the BLAS concurrently
   const Eigen::Index per = (n + kRowChunks - 1) / kRowChunks;
   ParallelFor(kRowChunks, [&](int c) {
     const Eigen::Index first = c * per, rows = std::min(n, first + per) - first;
@@ -48,7 +50,7 @@ Eigen::MatrixXd TransposeTimes(const Eigen::Ref<const Eigen::MatrixXd>& P,
   Eigen::MatrixXd part[kRowChunks];
   for (auto& p : part) p = Eigen::MatrixXd::Zero(P.cols(), W.cols());
   ForRowChunks(P.rows(), [&](int c, Eigen::Index first, Eigen::Index rows) {
-    part[c].noalias() = P.middleRows(first, rows).transpose() * W.middleRows(first, rows);
+    Gemm(true, 1.0, P.middleRows(first, rows), W.middleRows(first, rows), 0.0, part[c]);
   });
   Eigen::MatrixXd sum = part[0];
   for (int c = 1; c < kRowChunks; ++c) sum += part[c];
@@ -60,7 +62,7 @@ void Times(const Eigen::Ref<const Eigen::MatrixXd>& P, const Eigen::MatrixXd& X,
            Eigen::MatrixXd& Y) {
   Y.resize(P.rows(), X.cols());
   ForRowChunks(P.rows(), [&](int, Eigen::Index first, Eigen::Index rows) {
-    Y.middleRows(first, rows).noalias() = P.middleRows(first, rows) * X;
+    Gemm(false, 1.0, P.middleRows(first, rows), X, 0.0, Y.middleRows(first, rows));
   });
 }
 
@@ -68,7 +70,7 @@ void Times(const Eigen::Ref<const Eigen::MatrixXd>& P, const Eigen::MatrixXd& X,
 void SubtractTimes(const Eigen::Ref<const Eigen::MatrixXd>& P, const Eigen::MatrixXd& X,
                    Eigen::MatrixXd& W) {
   ForRowChunks(P.rows(), [&](int, Eigen::Index first, Eigen::Index rows) {
-    W.middleRows(first, rows).noalias() -= P.middleRows(first, rows) * X;
+    Gemm(false, -1.0, P.middleRows(first, rows), X, 1.0, W.middleRows(first, rows));
   });
 }
 

@@ -19,6 +19,7 @@
 #include "libemb/linalg/dense_eigen.h"
 #include "libemb/linalg/kronecker_matrix.h"
 #include "libemb/linalg/shift_invert_solver.h"
+#include "libemb/linalg/sparse_dense_product.h"
 
 namespace emb {
 namespace {
@@ -112,8 +113,8 @@ class CachedMassProduct {
 void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
                           EigenResult& r) {
   Eigen::MatrixXd& Phi = r.vectors;
-  Eigen::MatrixXd KPhi = K * Phi;
-  Eigen::MatrixXd MPhi = M * Phi;
+  Eigen::MatrixXd KPhi = MultiplySymmetric(K, Phi);
+  Eigen::MatrixXd MPhi = MultiplySymmetric(M, Phi);
   const DenseEigenpairs ritz =
       SolveDenseEigenpairs(Phi.transpose() * KPhi, Phi.transpose() * MPhi, /*check=*/false);
   if (ritz.ok) {  // else keep Spectra's pairs; the checks will judge
@@ -311,7 +312,7 @@ Deflation FindNullSpace(const ShiftInvertSolver& solver, const BlockOperators& o
       solved += bz;
       OrthonormalizeInner(op, Z, BZ);
     }
-    const Eigen::MatrixXd KZ = K * Z;  // identification only: double is enough
+    const Eigen::MatrixXd KZ = MultiplySymmetric(K, Z);  // identification only: double is enough
     const DenseEigenpairs rr = SolveDenseEigenpairs(Z.transpose() * KZ, Z.transpose() * BZ, false);
     if (!rr.ok) return d;
     int nulls = 0;
@@ -346,7 +347,7 @@ void SolveBlock(ShiftInvertSolver& shift_solver, const EigenSolverOptions& o,
     if (kron)
       kron->Multiply(X, Y);
     else
-      Y = M * X;
+      Y = MultiplySymmetric(M, X);
   };
   BlockKrylovOptions bo;
   bo.num_wanted = o.num_modes;

@@ -75,40 +75,32 @@ void KroneckerIdentityMatrix::Multiply(const Eigen::MatrixXd& X, Eigen::MatrixXd
     for (Eigen::Index j = 0; j < X.cols(); ++j) Multiply(X.col(j).data(), Y.col(j).data());
     return;
   }
-  // Four columns per pass over a (one read of a's entries for twelve multiply-adds); the
-  // groups are independent and run concurrently.
-  constexpr int kGroup = 4;
-  const int cols = static_cast<int>(X.cols());
-  const int groups = (cols + kGroup - 1) / kGroup;
+  // On row-major copies the k rows of a node are k·cols contiguous doubles, and node b's rows
+  // are Σ_a a_ba (node a's rows): one contiguous axpy per entry of a. Column by column the
+  // same product gathers 3 scattered doubles per entry and column, which misses the cache once
+  // a block outgrows it (measured 46 s for the mass products of a 766k-DOF eigen-solve). The
+  // nodes are cut into a fixed number of ranges that run concurrently; each node is summed by
+  // one task in storage order, so the numbers do not depend on the thread count.
+  using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const RowMajorMatrix Xr = X;
+  RowMajorMatrix Yr(X.rows(), X.cols());
+  const Eigen::Index width = 3 * X.cols();
   const int nb = static_cast<int>(a_.cols());
   const int* outer = a_.outerIndexPtr();
   const int* inner = a_.innerIndexPtr();
   const double* val = a_.valuePtr();
-  const Eigen::Index ld = X.rows();
-  ParallelFor(groups, [&](int g) {
-    const int first = g * kGroup, count = std::min(kGroup, cols - first);
-    if (count < kGroup) {
-      for (int j = first; j < first + count; ++j) Multiply(X.col(j).data(), Y.col(j).data());
-      return;
-    }
-    const double* x = X.col(first).data();
-    double* y = Y.col(first).data();
-    for (int b = 0; b < nb; ++b) {
-      double s[kGroup][3] = {};
-      for (int p = outer[b]; p < outer[b + 1]; ++p) {
-        const double v = val[p];
-        const Eigen::Index a = 3 * static_cast<Eigen::Index>(inner[p]);
-        for (int c = 0; c < kGroup; ++c) {
-          const double* xa = x + c * ld + a;
-          s[c][0] += v * xa[0];
-          s[c][1] += v * xa[1];
-          s[c][2] += v * xa[2];
-        }
-      }
-      for (int c = 0; c < kGroup; ++c)
-        for (int i = 0; i < 3; ++i) y[c * ld + 3 * b + i] = s[c][i];
+  constexpr int kRanges = 16;
+  ParallelFor(kRanges, [&](int c) {
+    const int first = static_cast<int>(static_cast<long long>(nb) * c / kRanges);
+    const int last = static_cast<int>(static_cast<long long>(nb) * (c + 1) / kRanges);
+    for (int b = first; b < last; ++b) {
+      Eigen::Map<Eigen::RowVectorXd> y(Yr.data() + b * width, width);
+      y.setZero();
+      for (int p = outer[b]; p < outer[b + 1]; ++p)
+        y.noalias() += val[p] * Eigen::Map<const Eigen::RowVectorXd>(Xr.data() + inner[p] * width, width);
     }
   });
+  Y = Yr;
 }
 
 }  // namespace emb

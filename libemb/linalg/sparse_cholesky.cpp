@@ -1,7 +1,6 @@
 #include "libemb/linalg/sparse_cholesky.h"
 
 #include <cholmod.h>
-#include <dlfcn.h>
 
 #include <Eigen/SparseCholesky>
 #include <cstring>
@@ -10,6 +9,7 @@
 #include "libemb/common/error.h"
 #include "libemb/common/parallel.h"
 #include "libemb/common/timer.h"
+#include "libemb/linalg/blas.h"
 #include "libemb/linalg/metis_ordering.h"
 
 namespace emb {
@@ -47,36 +47,6 @@ cholmod_dense ViewDense(const double* data, int rows, int cols) {
 }
 
 using EigenLdlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>>;
-
-// Threads of the BLAS that CHOLMOD calls (OpenBLAS on Debian), looked up at run time so that
-// any BLAS works. Measured on a 93k-dof crankshaft (2 cores): the supernodal factorisation is
-// 1.9× faster with 2 BLAS threads, but the solves (memory-bound triangular sweeps) are ~15 %
-// slower with them, as idle OpenBLAS workers spin. So: all threads to factorise, one to solve.
-class BlasThreads {
- public:
-  static BlasThreads& Get() {
-    static BlasThreads instance;
-    return instance;
-  }
-  void UseAll() { Set(max_); }
-  void UseOne() { Set(1); }
-
- private:
-  BlasThreads() {
-    set_ = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
-    auto get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
-    max_ = get ? get() : 1;
-  }
-  void Set(int n) {
-    if (set_ && n != current_) {
-      set_(n);
-      current_ = n;
-    }
-  }
-  void (*set_)(int) = nullptr;
-  int max_ = 1;
-  int current_ = -1;
-};
 
 }  // namespace
 
@@ -161,9 +131,9 @@ class SparseCholesky::Impl {
         src = &compressed;
       }
       cholmod_sparse view = ViewUpper(*src);
-      BlasThreads::Get().UseAll();
+      UseAllBlasThreads();
       const int ok = cholmod_factorize(&view, factor_, &common_);
-      BlasThreads::Get().UseOne();
+      UseOneBlasThread();
       info.nnz_factor = static_cast<long long>(common_.lnz);
       info.flops = common_.fl;
       if (!ok || common_.status == CHOLMOD_OUT_OF_MEMORY || common_.status < CHOLMOD_OK) {

@@ -1,6 +1,7 @@
 #include "libemb/scene/engine_parts.h"
 
 #include <memory>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/engine/cylinder_pressure.h"
@@ -19,15 +20,90 @@ void ReadJournalBearing(MapReader& r, const std::string& name, mbs::System* sys)
   sys->AddForceElement(std::make_shared<mbs::JournalBearing>(name, i, j, p));
 }
 
-void ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys) {
+namespace {
+
+// The `rubber:` map of a torsional damper into s: {static_stiffness, arms: [{stiffness,
+// relaxation_time}, ...]} or {dynamic_stiffness, loss_factor, frequency_hz}, both with the
+// optional band_hz and junction_error.
+void ReadRubber(const YAML::Node& n, const std::string& file, const std::string& what,
+                engine::TorsionalDamperSpec* s) {
+  MapReader r(n, file, what);
+  const bool arms = r.Has("static_stiffness") || r.Has("arms");
+  const bool fit = r.Has("dynamic_stiffness") || r.Has("loss_factor") || r.Has("frequency_hz");
+  EMB_THROW_IF(arms && fit, Where(file, n)
+                                << ": " << what
+                                << ": expected either {static_stiffness, arms} or "
+                                   "{dynamic_stiffness, loss_factor, frequency_hz}, got keys of "
+                                   "both");
+  EMB_THROW_IF(!arms && !fit, Where(file, n)
+                                  << ": " << what
+                                  << ": expected {static_stiffness, arms: [{stiffness, "
+                                     "relaxation_time}, ...]} or {dynamic_stiffness, "
+                                     "loss_factor, frequency_hz}");
+  if (arms) {
+    s->stiffness = r.GetDouble("static_stiffness", NumberRange::NonNegative("N m/rad"));
+    const YAML::Node list = r.Require("arms");
+    if (!list.IsSequence() || list.size() == 0)
+      EMB_THROW(InputError, Where(file, list) << ": " << what
+                                              << " arms: expected a non-empty list of "
+                                                 "{stiffness, relaxation_time}");
+    for (std::size_t j = 0; j < list.size(); ++j) {
+      MapReader a(list[j], file, what + " arm " + std::to_string(j + 1));
+      engine::MaxwellArm arm;
+      arm.stiffness = a.GetDouble("stiffness", NumberRange::Positive("N m/rad"));
+      arm.relaxation_time = a.GetDouble("relaxation_time", NumberRange::Positive("s"));
+      a.Finish();
+      s->arms.push_back(arm);
+    }
+  } else {
+    const double k = r.GetDouble("dynamic_stiffness", NumberRange::Positive("N m/rad"));
+    const double eta = r.GetDouble(
+        "loss_factor", NumberRange::Closed(0.0, engine::kMaxZenerLossFactor, "(Im k*/Re k*)"));
+    EMB_THROW_IF(!(eta > 0.0), Where(file, n) << ": " << what
+                                              << " loss_factor: expected > 0, got " << eta);
+    const double hz = r.GetDouble("frequency_hz", NumberRange::Positive("Hz"));
+    const engine::ZenerRubber z = engine::FitZenerAtLossPeak(k, eta, hz);
+    s->stiffness = z.static_stiffness;
+    s->arms = z.arms;
+  }
+  s->band_hz = r.GetDouble("band_hz", s->band_hz, NumberRange::Positive("Hz"));
+  s->junction_error =
+      r.GetDouble("junction_error", s->junction_error, NumberRange::Closed(1e-12, 0.1));
+  r.Finish();
+}
+
+}  // namespace
+
+std::string ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys) {
   engine::TorsionalDamperSpec s;
   s.name = name;
   s.hub_marker = r.GetString("hub");
   s.ring_mass = r.GetDouble("ring_mass", NumberRange::Positive("kg"));
   s.ring_inertia = r.GetDouble("ring_inertia", NumberRange::Positive("kg m^2"));
-  s.stiffness = r.GetDouble("stiffness", 0.0, NumberRange::NonNegative("N m/rad"));
-  s.damping = r.GetDouble("damping", 0.0, NumberRange::NonNegative("N m s/rad"));
-  engine::AddTorsionalDamper(sys, s);  // names the damper in its errors
+  if (r.Has("rubber")) {
+    EMB_THROW_IF(r.Has("stiffness") || r.Has("damping"),
+                 Where(r.file(), r.node())
+                     << ": " << r.what()
+                     << ": expected either `rubber` or `stiffness`/`damping` (Kelvin-Voigt), "
+                        "got both");
+    ReadRubber(r.Require("rubber"), r.file(), r.what() + " rubber", &s);
+  } else {
+    r.Optional("rubber");
+    s.stiffness = r.GetDouble("stiffness", 0.0, NumberRange::NonNegative("N m/rad"));
+    s.damping = r.GetDouble("damping", 0.0, NumberRange::NonNegative("N m s/rad"));
+  }
+  // AddTorsionalDamper names the damper in its errors.
+  const engine::TorsionalDamperParts parts = engine::AddTorsionalDamper(sys, s);
+  if (s.arms.empty()) return "";
+  std::ostringstream note;
+  note.precision(4);
+  note << "torsional damper '" << name << "': rubber k_inf " << s.stiffness << " N m/rad";
+  for (std::size_t j = 0; j < s.arms.size(); ++j)
+    note << "; arm " << j + 1 << " k " << s.arms[j].stiffness << " N m/rad, tau "
+         << s.arms[j].relaxation_time << " s, junction ring " << parts.junction_inertia[j]
+         << " kg m^2";
+  note << "; k*(w) within " << s.junction_error << " of the rubber up to " << s.band_hz << " Hz";
+  return note.str();
 }
 
 mbs::TimeFunction ReadCylinderPressure(const YAML::Node& n, const std::string& file,

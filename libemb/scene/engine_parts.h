@@ -19,7 +19,14 @@ void ReadJournalBearing(MapReader& r, const std::string& name, mbs::System* sys)
 
 /// {name, type: torsional-damper, hub, ring_mass, ring_inertia, stiffness, damping}: adds an
 /// engine::AddTorsionalDamper ring (its body, marker, joint and spring-damper) on marker `hub`.
-void ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys);
+/// Instead of stiffness/damping (Kelvin-Voigt) a frequency-dependent `rubber:` map, either
+/// {static_stiffness, arms: [{stiffness, relaxation_time}, ...]} or the one-arm fit
+/// {dynamic_stiffness, loss_factor, frequency_hz} (engine::FitZenerAtLossPeak), both with
+/// optional band_hz and junction_error (the junction rings' band and error bound).
+/// @throws InputError naming the key for both forms at once, keys of both rubber forms,
+/// unknown keys, non-positive values, a loss factor outside (0, kMaxZenerLossFactor].
+/// Returns a note for a rubber damper (its junction rings and the bound up to band_hz), else "".
+std::string ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::System* sys);
 
 /// {bore, stroke, rod, compression_ratio, intake_pressure, exhaust_pressure,
 ///  crankcase_pressure, polytropic_exponent, fired, combustion_start_deg,

@@ -483,7 +483,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   if (const YAML::Node n = r.Optional("joints")) ReadJoints(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("motions")) ReadMotions(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("couplers")) ReadCouplers(n, source, &scene.system);
-  if (const YAML::Node n = r.Optional("forces")) ReadForces(n, source, &scene.system);
+  if (const YAML::Node n = r.Optional("forces")) ReadForces(n, source, &scene.system, &scene.notes);
   if (const YAML::Node n = r.Optional("sensors")) ReadSensors(n, source, &scene.system);
   if (const YAML::Node n = r.Optional("output_points"))
     ReadOutputPoints(n, source, &scene.system, parts.from_body_files, parts.beam_outputs);

@@ -243,7 +243,8 @@ mbs::JointCoordinate ReadCoordinate(MapReader& r, const std::string& key) {
                             << ": expected 'rotation' or 'translation', got '" << c << "'");
 }
 
-void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sys) {
+void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sys,
+                std::vector<std::string>* notes) {
   ReadNamedList(list, file, "forces", "force", [&](MapReader& r, const std::string& name,
                                                    const YAML::Node&) {
     const std::string& what = r.what();
@@ -280,7 +281,8 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
     } else if (type == "journal-bearing") {
       ReadJournalBearing(r, name, sys);
     } else if (type == "torsional-damper") {
-      ReadTorsionalDamper(r, name, sys);
+      const std::string note = ReadTorsionalDamper(r, name, sys);
+      if (notes && !note.empty()) notes->push_back(note);
     } else if (type == "lash") {
       ReadLash(r, name, sys);
     } else if (type == "clutch-damper") {

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <string>
+#include <vector>
 
 #include "libemb/mbs/core/joint.h"
 #include "libemb/mbs/core/system.h"
@@ -34,7 +35,9 @@ mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
 mbs::JointCoordinate ReadCoordinate(MapReader& r, const std::string& key);
 
 /// The 'forces' list: spring-damper, rotational-spring-damper, bushing, journal-bearing,
-/// lash, clutch-damper, force, torque.
-void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sys);
+/// torsional-damper, lash, clutch-damper, force, torque. `notes` (may be null) gets what the
+/// reader decided (a rubber damper's junction rings).
+void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sys,
+                std::vector<std::string>* notes = nullptr);
 
 }  // namespace emb::scene

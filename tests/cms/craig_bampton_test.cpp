@@ -275,5 +275,37 @@ TEST(CraigBampton, CutoffSelectionKeepsModesBelowIt) {
   EXPECT_GT(more.fixed_interface_hz.maxCoeff(), 6000.0);
 }
 
+// The growth of a cut-off solve: spectra whose counts follow N(f) = (f / f1)^p exactly (p = 1/2
+// beam bending, 1 torsion, 3 a solid) get a request covering the cut-off with the stated
+// margin, in one step; a spectrum without spread falls back to the steepest law, and the
+// request stays within [N + 10, max(4N, N + 20)].
+TEST(CraigBampton, NextModeCountCoversTheCutoffInOneStep) {
+  auto spectrum = [](int n, double p) {  // λ_k with f_k = f1 k^{1/p}
+    Eigen::VectorXd lambda(n);
+    for (int k = 1; k <= n; ++k) {
+      const double f = 100.0 * std::pow(k, 1.0 / p);
+      lambda[k - 1] = std::pow(2.0 * M_PI * f, 2);
+    }
+    return lambda;
+  };
+  for (const double p : {0.5, 1.0, 2.0, 3.0}) {
+    const int n = 20;
+    const Eigen::VectorXd lambda = spectrum(n, p);
+    const double f_top = std::sqrt(lambda[n - 1]) / (2.0 * M_PI);
+    const double fmax = 1.5 * f_top;
+    const double needed = std::pow(fmax / 100.0, p);  // N(fmax) of the model
+    const int next = NextModeCount(lambda, fmax);
+    SCOPED_TRACE(p);
+    EXPECT_GE(next, std::min<double>(needed, 4 * n));
+    EXPECT_LE(next, std::max(1.25 * needed, n + 10.0));  // the 20 % margin, and rounding
+  }
+  // Far beyond what 20 modes tell: capped at 4N.
+  EXPECT_EQ(NextModeCount(spectrum(20, 3.0), 1e6), 80);
+  // Only rigid modes (λ ≈ 0): no spread, the smallest step.
+  EXPECT_EQ(NextModeCount(Eigen::VectorXd::Zero(6), 1000.0), 16);
+  // Already past the cut-off: the smallest step.
+  EXPECT_EQ(NextModeCount(spectrum(20, 1.0), 10.0), 30);
+}
+
 }  // namespace
 }  // namespace emb

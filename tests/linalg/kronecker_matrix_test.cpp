@@ -30,8 +30,8 @@ TEST(KroneckerIdentityMatrix, MassMatricesAreDetectedAndAppliedExactly) {
     Eigen::VectorXd y(M.rows());
     kron->Multiply(x.data(), y.data());
     EXPECT_LE((y - M * x).cwiseAbs().maxCoeff(), kRoundOff * (M * x).cwiseAbs().maxCoeff());
-    // A block of 7 columns (one group of four per pass, the rest one by one): each column is
-    // the single product bit for bit (the same sums in the same order).
+    // A block of 7 columns (on row-major copies, node by node): each column is the single
+    // product bit for bit (the same sums in the same order).
     const Eigen::MatrixXd X = Eigen::MatrixXd::Random(M.rows(), 7);
     Eigen::MatrixXd Y;
     kron->Multiply(X, Y);

@@ -246,5 +246,63 @@ TEST(EngineSceneKeys, CylinderPressure) {
               {"'cubic' with periodic: true"});
 }
 
+
+TEST(EngineSceneKeys, TorsionalDamperRubber) {
+  auto tvd = [](const std::string& rest) {
+    return "forces:\n  - {name: tvd, type: torsional-damper, hub: journal, ring_mass: 1.0,\n"
+           "     ring_inertia: 4.0e-3, " + rest + "}\n";
+  };
+  const std::string arms =
+      "rubber: {static_stiffness: 1.8e4, arms: [{stiffness: 6.0e3, relaxation_time: 3.0e-4},\n"
+      "     {stiffness: 3.0e3, relaxation_time: 3.0e-3}], band_hz: 2500}";
+  const Scene a = ParseScene(std::string(kBase) + tvd(arms), "good.yaml");
+  EXPECT_GE(a.system.FindBody("tvd_junction1"), 0);
+  EXPECT_GE(a.system.FindBody("tvd_junction2"), 0);
+  EXPECT_GE(a.system.FindElement("tvd_bearing"), 0);
+  EXPECT_GE(a.system.FindElement("tvd_junction2_bearing"), 0);
+  // The loader says what it built: both junction rings and the bound.
+  const auto note = std::find_if(a.notes.begin(), a.notes.end(), [](const std::string& n) {
+    return n.find("torsional damper 'tvd'") != std::string::npos;
+  });
+  ASSERT_NE(note, a.notes.end());
+  EXPECT_NE(note->find("arm 2"), std::string::npos) << *note;
+  EXPECT_NE(note->find("within 0.001 of the rubber up to 2500 Hz"), std::string::npos) << *note;
+  const auto& forces = a.system.force_elements();
+  EXPECT_TRUE(std::any_of(forces.begin(), forces.end(),
+                          [](const auto& e) { return e->name() == "tvd_arm2_dashpot"; }));
+  const Scene b = ParseScene(
+      std::string(kBase) +
+          tvd("rubber: {dynamic_stiffness: 2.5e4, loss_factor: 0.2, frequency_hz: 380}"),
+      "good.yaml");
+  EXPECT_GE(b.system.FindBody("tvd_junction1"), 0);
+  ExpectError(tvd("stiffness: 2.0e4, " + arms), {"bad.yaml:9", "tvd", "either `rubber` or"});
+  ExpectError(tvd("rubber: {static_stiffness: 1.0e4, loss_factor: 0.2}"),
+              {"tvd", "rubber", "got keys of both"});
+  ExpectError(tvd("rubber: {}"), {"tvd", "rubber", "expected {static_stiffness"});
+  ExpectError(tvd("rubber: {static_stiffness: 1.0e4, arms: []}"), {"arms", "non-empty list"});
+  ExpectError(tvd("rubber: {static_stiffness: 1.0e4, arms: [{stiffness: -1, "
+                  "relaxation_time: 1.0e-3}]}"),
+              {"arm 1", "stiffness", "> 0"});
+  ExpectError(tvd("rubber: {static_stiffness: 1.0e4, arms: [{stiffness: 1.0e3}]}"),
+              {"arm 1", "relaxation_time"});
+  ExpectError(tvd("rubber: {static_stiffness: 1.0e4, arms: [{stiffness: 1.0e3, "
+                  "relaxation_time: 1.0e-3, relaxation: 1}]}"),
+              {"arm 1", "unknown key 'relaxation'"});
+  ExpectError(tvd("rubber: {static_stiffness: -1.0e4, arms: [{stiffness: 1.0e3, "
+                  "relaxation_time: 1.0e-3}]}"),
+              {"static_stiffness", ">= 0"});
+  ExpectError(tvd("rubber: {dynamic_stiffness: 2.5e4, loss_factor: 1.5, frequency_hz: 380}"),
+              {"loss_factor", "1.5"});
+  ExpectError(tvd("rubber: {dynamic_stiffness: 2.5e4, loss_factor: 0, frequency_hz: 380}"),
+              {"loss_factor", "expected > 0"});
+  ExpectError(tvd("rubber: {dynamic_stiffness: 2.5e4, loss_factor: 0.2}"), {"frequency_hz"});
+  ExpectError(tvd("rubber: {dynamic_stiffness: 2.5e4, loss_factor: 0.2, frequency_hz: 380, "
+                  "band: 1}"),
+              {"rubber", "unknown key 'band'"});
+  ExpectError(tvd("rubber: {dynamic_stiffness: 2.5e4, loss_factor: 0.2, frequency_hz: 380, "
+                  "junction_error: 0.5}"),
+              {"junction_error"});
+}
+
 }  // namespace
 }  // namespace emb::scene

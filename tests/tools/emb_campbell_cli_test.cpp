@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -96,6 +97,50 @@ TEST_F(EmbCampbellCli, TvdTuneOnTheTorsionMode) {
   EXPECT_NEAR(doc["summary"]["modal_inertia"].get<double>(), 0.2, 1e-8);
   EXPECT_NEAR(doc["summary"]["mass_ratio"].get<double>(), 0.1, 1e-8);
   EXPECT_NEAR(doc["summary"]["absorber_hz"].get<double>(), 120.0 / 1.1, 1e-6);
+  EXPECT_NE(doc["summary"]["linearisation"].get<std::string>().find("cycle average"),
+            std::string::npos);
+  // The equivalent Zener with Den Hartog's loss factor c w_a / k.
+  const auto& z = doc["zener"];
+  const double k = doc["summary"]["stiffness"].get<double>();
+  const double c = doc["summary"]["damping"].get<double>();
+  const double wa = 2 * std::numbers::pi * doc["summary"]["absorber_hz"].get<double>();
+  EXPECT_NEAR(z["loss_factor"].get<double>(), c * wa / k, 1e-12);
+}
+
+TEST_F(EmbCampbellCli, TvdTuneLinearisationAndZenerRubber) {
+  auto tune = [&](const std::string& options) {
+    const CliResult r = Run("tvd-tune -q " + kScene +
+                            " --rpm 3000 --body disc --hub disc_centre --ring-inertia 0.02 "
+                            "--json " + options);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto averaged = tune("--loss-factor 0.2");
+  const auto frozen = tune("--linearise frozen");
+  // The disc has no reciprocating parts: the cycle average is the frozen model (dense
+  // eigen-solves of the same matrices: round-off).
+  constexpr double kSameModel = 1e-9;
+  EXPECT_NEAR(averaged["summary"]["mode_hz"].get<double>() /
+                  frozen["summary"]["mode_hz"].get<double>(), 1.0, kSameModel);
+  EXPECT_NEAR(averaged["summary"]["modal_inertia"].get<double>() /
+                  frozen["summary"]["modal_inertia"].get<double>(), 1.0, kSameModel);
+  EXPECT_NE(frozen["summary"]["linearisation"].get<std::string>().find("frozen"),
+            std::string::npos);
+  // The printed Zener (k_inf, k_1, tau) has |k*(f_a)| = Den Hartog's k and loss factor 0.2 at
+  // f_a: recomputed here from the printed numbers (JSON keeps doubles to round-off).
+  const auto& z = averaged["zener"];
+  const double kinf = z["static_stiffness"].get<double>(), k1 = z["arm_stiffness"].get<double>();
+  const double tau = z["relaxation_time"].get<double>();
+  const double wa = 2 * std::numbers::pi * averaged["summary"]["absorber_hz"].get<double>();
+  const std::complex<double> iwt(0.0, wa * tau);
+  const std::complex<double> kstar = kinf + k1 * iwt / (1.0 + iwt);
+  constexpr double kRoundOff = 1e-12;
+  EXPECT_NEAR(std::abs(kstar) / averaged["summary"]["stiffness"].get<double>(), 1.0, kRoundOff);
+  EXPECT_NEAR(kstar.imag() / kstar.real(), 0.2, kRoundOff);
+  EXPECT_NEAR(z["damping_ratio"].get<double>(),
+              kstar.imag() / wa / (2 * 0.02 * 2 * std::numbers::pi *
+                                   averaged["summary"]["mode_hz"].get<double>()),
+              kRoundOff);
 }
 
 TEST_F(EmbCampbellCli, BadInputIsNamed) {
@@ -112,6 +157,12 @@ TEST_F(EmbCampbellCli, BadInputIsNamed) {
                 {"nose"});
   ExpectFailure("tvd-tune " + kScene + " --rpm 1000 --body disc --hub disc_centre --ring-inertia -1",
                 1, {"--ring-inertia"});
+  const std::string tvd = "tvd-tune " + kScene + " --rpm 1000 --body disc --hub disc_centre "
+                          "--ring-inertia 0.02 ";
+  ExpectFailure(tvd + "--loss-factor 1.5", 1, {"--loss-factor", "1.5"});
+  ExpectFailure(tvd + "--loss-factor 0", 1, {"--loss-factor", "> 0"});
+  ExpectFailure(tvd + "--linearise floquet", 1, {"--linearise", "floquet"});
+  ExpectFailure(tvd + "--angles 0", 1, {"--angles"});
   // A TVD with a negative inertia, or on a marker that does not exist, in a scene.
   std::ifstream in(kScene);
   std::stringstream text;
@@ -132,6 +183,10 @@ TEST_F(EmbCampbellCli, BadInputIsNamed) {
   ExpectFailure("campbell bad_inertia.yaml --rpm 1000 --body disc", 1, {"tvd", "ring_inertia"});
   ExpectFailure("campbell bad_stiffness.yaml --rpm 1000 --body disc", 1, {"tvd", "stiffness"});
   ExpectFailure("campbell bad_hub.yaml --rpm 1000 --body disc", 1, {"tvd", "crank_nose"});
+  with_force("bad_rubber.yaml", "{name: tvd, type: torsional-damper, hub: disc_centre, "
+                                "ring_mass: 1, ring_inertia: 0.01, rubber: {dynamic_stiffness: "
+                                "1.0e4, loss_factor: 2, frequency_hz: 100}}");
+  ExpectFailure("campbell bad_rubber.yaml --rpm 1000 --body disc", 1, {"tvd", "loss_factor"});
 }
 
 }  // namespace

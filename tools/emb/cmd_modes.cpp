@@ -183,6 +183,8 @@ struct ModesCommand {
             static_cast<long long>(modes.eig.sturm_count));
     for (const auto& [name, secs] : times.phases) s.Add("seconds_" + name, "time " + name + " [s]", secs);
     s.Add("seconds_total", "time total [s]", times.Total());
+    for (const auto& [name, secs] : modes.eig.block_times.phases)
+      s.Add("seconds_eigen-solve_" + name, "  eigen-solve: " + name + " [s]", secs);
     s.Add("peak_memory_mb", "peak memory [MB]", PeakResidentBytes() / 1e6);
 
     if (!h5_path.empty() && modes.eig.ok()) {

@@ -1,5 +1,8 @@
 // emb reduce PART: Craig–Bampton reduction of a solid part to its interfaces, orthonormalised,
 // with inertia invariants and a reduction certificate; the body file (HDF5) for multibody runs.
+// With --backend slepc the constraint modes and fixed-interface modes are solved on MPI ranks
+// (MUMPS, SLEPc); every rank meshes and assembles, rank 0 alone does the rest and writes:
+//   mpirun -n 4 emb reduce crank.msh --backend slepc -n 60
 
 #include <filesystem>
 #include <iostream>
@@ -16,6 +19,7 @@
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
 #include "tools/emb/progress_display.h"
+#include "tools/emb/slepc_backend.h"
 
 namespace emb::cli {
 namespace {
@@ -45,6 +49,7 @@ struct ReduceCommand {
   bool no_xdmf{false};
   bool allow_failed_certificate{false};
   std::string output;
+  std::string backend{"cholmod"};
 
   std::string OutputPath() const {
     if (!output.empty()) return output;
@@ -105,6 +110,23 @@ struct ReduceCommand {
   }
 
   void Run() const {
+    if (backend != "slepc") return Reduce(nullptr);
+    // Every rank of `mpirun -n N emb reduce ... --backend slepc` runs this; rank 0 alone prints
+    // and writes, and the ranks agree on the exit code (one message).
+    std::unique_ptr<SlepcBackend> distributed = SlepcBackend::Start();
+    if (!distributed->is_root() && !std::freopen("/dev/null", "w", stdout))
+      EMB_THROW(InputError, "--backend slepc: cannot send the output of rank > 0 to /dev/null");
+    distributed->Agree([&] { Reduce(distributed.get()); });
+    distributed->Finish();
+  }
+
+  // The reduction; with `distributed`, the constraint modes and fixed-interface modes are
+  // solved on every MPI rank and the rest by rank 0.
+  void Reduce(SlepcBackend* distributed) const {
+    const bool root = !distributed || distributed->is_root();
+    EMB_THROW_IF(distributed && free_free,
+                 "--free-free: not available with --backend slepc (it distributes the "
+                 "interior solves of a Craig-Bampton reduction; give interfaces)");
     part.material.Validate();
     if (num_modes) CheckInteger("--modes", *num_modes, 0, 1000000);
     if (fmax_hz) CheckNumber("--fmax", *fmax_hz, NumberRange::Positive("Hz"));
@@ -112,28 +134,33 @@ struct ReduceCommand {
     if (check_fmax_hz) CheckNumber("--check-fmax", *check_fmax_hz, NumberRange::Positive("Hz"));
     CheckNumber("--band-factor", band_factor, NumberRange::Closed(1.0, 100.0));
     CheckSolverOptions(tolerance, subspace, max_restarts, shift_hz);
-    // Every output checked and locked before any work.
-    const std::string h5_path = OutputPath();
+    // Every output checked and locked before any work (by rank 0, which writes them).
+    const std::string h5_path = root ? OutputPath() : "";
     const std::string xdmf_path =
-        no_xdmf || no_mesh_shapes
+        no_xdmf || no_mesh_shapes || !root
             ? ""
             : std::filesystem::path(h5_path).replace_extension(".xdmf").string();
+    MeshingOptions meshing = part.Meshing();
+    if (!root) meshing.save_as.clear();
     const PreparedOutputs outputs(
-        {{h5_path, "-o"}, {xdmf_path, "the .xdmf beside -o"}, {part.save_mesh, "--save-mesh"}},
+        {{h5_path, "-o"}, {xdmf_path, "the .xdmf beside -o"}, {meshing.save_as, "--save-mesh"}},
         {part.file});
-    const ProgressFn progress = MakeProgressDisplay(out.quiet);
+    const ProgressFn progress = MakeProgressDisplay(out.quiet || !root);
     PhaseTimes times;
     Stopwatch sw;
-    const Mesh mesh = ReadMesh(part.file, part.Meshing(), progress);
+    const Mesh mesh = ReadMesh(part.file, meshing, progress);
     times.Add("mesh", sw.seconds());
-    const ReductionJob job = Job(mesh);
+    ReductionJob job = Job(mesh);
+    if (distributed) job.reduction.pencil_solver = distributed->PencilSolver();
     // Resolve the interfaces before the expensive part: a wrong name fails at once.
     ResolveInterfaces(mesh, job.interfaces);
 
     sw.Restart();
     const SystemMatrices sys = AssembleSystem(mesh, part.material, progress);
     times.Add("assembly", sw.seconds());
+    if (distributed) distributed->Checkpoint();  // every rank ready for the collective solves
     const ReducedBody body = ReduceBody(mesh, sys, part.material, job, progress);
+    if (!body.on_this_process) return;  // an MPI rank done with its part of the solves
     for (const auto& p : body.times.phases) times.Add(p.first, p.second);
     FinishProgressLine();
 
@@ -220,6 +247,9 @@ struct ReduceCommand {
     Summary s("Craig-Bampton reduction of " + mesh.source);
     s.Add("mesh", "mesh", mesh.Summary());
     s.Add("dofs", "FE degrees of freedom", sys.num_dofs());
+    s.Add("backend", "interior solves", distributed ? std::string("slepc (MUMPS + SLEPc, MPI)")
+                                                    : std::string("cholmod"));
+    if (distributed) distributed->AddReductionSummary(s);
     s.Add("basis", "basis", body.free_free ? std::string("free-free (no interfaces)")
                                            : std::string("Craig-Bampton"));
     s.Add("selection", "selection", body.selection_note);
@@ -331,6 +361,12 @@ void RegisterReduceCommand(CLI::App& app) {
   cmd->add_option("--ncv", st->subspace, "Lanczos subspace size (0 = automatic)")->capture_default_str();
   cmd->add_option("--max-restarts", st->max_restarts, "Spectra's Lanczos restart limit")
       ->capture_default_str();
+  cmd->add_option("--backend", st->backend,
+                  "Interior solves: cholmod (one process) or slepc (distributed: constraint "
+                  "modes by MUMPS on MPI ranks, fixed-interface modes by SLEPc; run as mpirun "
+                  "-n N emb reduce ... --backend slepc; rank 0 does the rest and writes)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cholmod", "slepc"}));
   cmd->add_option("--damping-ratio", st->damping_ratio, "Modal damping ratio of every elastic mode")
       ->capture_default_str();
   cmd->add_option("--rayleigh", st->rayleigh, "Rayleigh damping ALPHA,BETA [1/s, s] instead of modal")

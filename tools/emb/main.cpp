@@ -37,6 +37,7 @@
 #include "tools/emb/interrupt.h"
 #include "tools/emb/no_exec.h"
 #include "tools/emb/progress_display.h"
+#include "tools/emb/slepc_backend.h"
 
 namespace {
 // The limit on reading an untrusted geometry script: kGeoScriptSeconds, or EMB_GEO_SECONDS.
@@ -122,6 +123,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : kExitUsage;
+  } catch (const ExitQuietly& e) {
+    return e.code;  // an MPI rank whose failure rank 0 has reported
   } catch (const emb::InputError& e) {
     FinishProgressLine();
     std::cerr << "emb: error: " << e.what() << "\n";

@@ -1,0 +1,24 @@
+#pragma once
+/// @file
+/// Y = A X for a symmetric sparse A (full storage, column-major) and a dense block X of k
+/// columns: the products of a modal basis with the stiffness or mass matrix (Rayleigh–Ritz,
+/// residual checks, reduced matrices).
+///
+/// Why not Eigen's `A * X`: for a column-major A it adds a_ij x_j,: into row i of a
+/// column-major Y, i.e. 2k strided accesses per nonzero, which miss the cache once X
+/// outgrows it (measured: the residual checks of 30 modes took 35 s at 766k DOF). Here row i
+/// of A is read as column i (A = Aᵀ), X and Y are held row-major, so each nonzero touches k
+/// contiguous doubles, and a fixed split of the rows runs concurrently (parallel.h): every
+/// row is summed by one task in the order of A's storage, so the result does not depend on the
+/// thread count.
+
+#include "libemb/linalg/sparse_types.h"
+
+namespace emb {
+
+/// A X for A symmetric (both triangles stored). Cost O(nnz(A) k), two transposing copies of
+/// n k doubles.
+/// @throws InputError if A is not square or X has a different number of rows.
+Eigen::MatrixXd MultiplySymmetric(const SparseMatrix& A, const Eigen::Ref<const Eigen::MatrixXd>& X);
+
+}  // namespace emb
