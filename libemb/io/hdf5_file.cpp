@@ -195,7 +195,7 @@ void H5File::Write(const std::string& path, const double* data,
 }
 void H5File::Write(const std::string& path, const float* data,
                    const std::vector<std::uint64_t>& dims) {
-  WriteRaw(id_, path_, path, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, data, dims);
+  WriteRaw(id_, path_, path, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, data, dims, false);
 }
 void H5File::Write(const std::string& path, const int* data,
                    const std::vector<std::uint64_t>& dims) {
