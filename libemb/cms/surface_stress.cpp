@@ -79,7 +79,7 @@ void TransferSurfaceStresses(body_codec::Codec& c, ModalStressSurface& s, Eigen:
                  "'" << h5.path() << "': " << path << ": expected indices 0.." << num - 1
                      << " into " << root << "/nodes");
   }
-  c.FloatMatrix(root + "/modal", s.stresses);
+  c.Matrix<float>(root + "/modal", s.stresses);
   c.ExpectShape(root + "/modal", s.stresses, 6 * num, ne);
   EMB_THROW_IF(!c.writing() && !(s.stresses.allFinite() && s.coordinates.allFinite()),
                "'" << h5.path() << "': " << root << ": holds a non-finite value (NaN or inf)");
