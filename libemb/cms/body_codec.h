@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -31,20 +32,28 @@ class Codec {
  public:
   Codec(H5File& h5, bool writing) : h5_(h5), writing_(writing) {}
 
+  // A matrix stored as `Stored` (double, or float for large data of low precision needs: the
+  // digest covers the stored values); reading gives them back as doubles.
+  template <typename Stored = double>
   void Matrix(const std::string& path, Eigen::MatrixXd& A) {
+    using Rows = Eigen::Matrix<Stored, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     if (writing_) {
-      const RowMajor r = A;
+      const Rows r = A.cast<Stored>();
       h5_.Write(path, r.data(), {std::uint64_t(A.rows()), std::uint64_t(A.cols())});
-      digest_.Add(r.data(), sizeof(double) * r.size());
+      digest_.Add(r.data(), sizeof(Stored) * r.size());
       return;
     }
     const auto shape = h5_.Shape(path);
     EMB_THROW_IF(shape.size() != 2, "'" << h5_.path() << "': " << path
                                         << ": expected a 2-D dataset, got " << shape.size()
                                         << " dimensions");
-    const std::vector<double> v = h5_.ReadDoubles(path);
-    A = Eigen::Map<const RowMajor>(v.data(), shape[0], shape[1]);
-    digest_.Add(v.data(), sizeof(double) * v.size());
+    std::vector<Stored> v;
+    if constexpr (std::is_same_v<Stored, float>)
+      v = h5_.ReadFloats(path);
+    else
+      v = h5_.ReadDoubles(path);
+    A = Eigen::Map<const Rows>(v.data(), shape[0], shape[1]).template cast<double>();
+    digest_.Add(v.data(), sizeof(Stored) * v.size());
   }
   void Vector(const std::string& path, Eigen::VectorXd& x) {
     if (writing_) {
@@ -61,6 +70,20 @@ class Codec {
       h5_.Write(path, v.data(), {std::uint64_t(v.size())});
     else
       v = h5_.ReadInts(path);
+    digest_.Add(v.data(), sizeof(int) * v.size());
+  }
+  // An integer table of `cols` columns as a (rows, cols) dataset (e.g. face connectivity).
+  void IntTable(const std::string& path, std::vector<int>& v, std::uint64_t cols) {
+    if (writing_) {
+      EMB_CHECK(cols > 0 && v.size() % cols == 0);
+      h5_.Write(path, v.data(), {std::uint64_t(v.size()) / cols, cols});
+    } else {
+      const auto shape = h5_.Shape(path);
+      EMB_THROW_IF(shape.size() != 2 || shape[1] != cols,
+                   "'" << h5_.path() << "': " << path << ": expected a (rows, " << cols
+                       << ") dataset");
+      v = h5_.ReadInts(path);
+    }
     digest_.Add(v.data(), sizeof(int) * v.size());
   }
   // k matrices of one size as a (k, rows, cols) dataset.

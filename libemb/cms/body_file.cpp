@@ -97,7 +97,7 @@ void Transfer(Codec& c, ReducedBody& b) {
   c.ExpectShape("/invariants/Sbar", stacked, 9 * ne, ne);
   for (int k = 0; k < 9; ++k) inv.Sbar[k] = stacked.middleRows(k * ne, ne);
   TransferGeometricStiffness(c, b.geometric_stiffness);
-  TransferModalStresses(c, b.stress_groups, ne);
+  TransferModalStresses(c, b.stress_groups, b.stress_surface, ne);
 }
 
 // Format version 2 of the digest also covers everything else the reader uses (the
@@ -105,8 +105,17 @@ void Transfer(Codec& c, ReducedBody& b) {
 // datasets only, so a changed damping ratio or material went unnoticed.
 // Version 3 is version 2 with the optional modal stresses (modal_stress.h) digested; a file
 // without them is written as version 2, so that older readers still take it.
+// Version 4 is version 3 with the whole-surface modal stresses (surface_stress.h) digested
+// too; files without them keep version 2 or 3, so that older readers still take those.
 constexpr long long kDigestVersion = 2;
 constexpr long long kDigestVersionStress = 3;
+constexpr long long kDigestVersionSurface = 4;
+constexpr const char* kStressSurfaceGroup = "/stress/surface";
+
+long long DigestVersionOf(const ReducedBody& b) {
+  if (!b.stress_surface.empty()) return kDigestVersionSurface;
+  return b.stress_groups.empty() ? kDigestVersion : kDigestVersionStress;
+}
 
 void TransferMetadata(Codec& c, const BodyFileInfo& info, const ReducedBody& b) {
   for (const std::string* s :
@@ -148,6 +157,7 @@ ReducedBody NumericContent(const ReducedBody& b) {
   c.invariants = b.invariants;
   c.geometric_stiffness = b.geometric_stiffness;
   c.stress_groups = b.stress_groups;
+  c.stress_surface = b.stress_surface;
   return c;
 }
 
@@ -217,8 +227,7 @@ void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const 
     written.element_types = mesh ? ElementTypes(*mesh) : info.element_types;
     TransferMetadata(codec, written, body);
     h5.SetAttribute("/", "content_digest", codec.Hex());
-    h5.SetAttribute("/", "content_digest_version",
-                    body.stress_groups.empty() ? kDigestVersion : kDigestVersionStress);
+    h5.SetAttribute("/", "content_digest_version", DigestVersionOf(body));
     if (body.geometric_stiffness.present) {
       h5.SetAttribute(kGeometricStiffnessGroup, "support", body.geometric_stiffness.support);
       h5.SetAttribute(kGeometricStiffnessGroup, "centrifugal_products",
@@ -359,14 +368,18 @@ ReducedBody ReadBodyFile(const std::string& path, BodyFileInfo* info_out) {
       h5.HasAttribute("/", "content_digest_version")
           ? h5.ReadIntAttribute("/", "content_digest_version")
           : 1;
-  EMB_THROW_IF(digest_version < 1 || digest_version > kDigestVersionStress,
+  EMB_THROW_IF(digest_version < 1 || digest_version > kDigestVersionSurface,
                "body file '" << path << "': expected content digest version 1 to "
-                             << kDigestVersionStress << ", got " << digest_version);
-  EMB_THROW_IF(h5.Exists(kStressGroup) != (digest_version == kDigestVersionStress),
-               "body file '" << path << "': content digest version " << digest_version
-                             << (digest_version == kDigestVersionStress ? " without" : " with")
-                             << " a " << kStressGroup << " group: the file was modified after "
-                             << "it was written; refusing it");
+                             << kDigestVersionSurface << ", got " << digest_version);
+  // The version says which optional stress data the digest covers: a group removed or added
+  // afterwards is refused here, before the digest would say so less clearly.
+  for (const auto& [group, from] : {std::pair{kStressGroup, kDigestVersionStress},
+                                    std::pair{kStressSurfaceGroup, kDigestVersionSurface}})
+    EMB_THROW_IF(h5.Exists(group) != (digest_version >= from),
+                 "body file '" << path << "': content digest version " << digest_version
+                               << (digest_version >= from ? " without" : " with") << " a "
+                               << group << " group: the file was modified after "
+                               << "it was written; refusing it");
   if (h5.Exists(kGeometricStiffnessGroup))
     b.geometric_stiffness.support = h5.ReadStringAttribute(kGeometricStiffnessGroup, "support");
   Codec codec(h5, false);

@@ -54,6 +54,9 @@
 ///   /stress                (optional: modal stresses at named surface groups, modal_stress.h;
 ///                          present → @content_digest_version 3, which digests them too)
 ///     names, <name>/nodes (m), <name>/modal (6 m, ne)  [Pa per unit elastic coordinate]
+///     surface/…            (optional: the whole boundary surface, surface_stress.h; present →
+///                          @content_digest_version 4) face_types, nodes (s), coordinates
+///                          (s, 3), faces/<Type> (f, k), modal (6 s, ne)
 ///   /mesh …                the mesh (see mesh_io.h), and
 ///   /modes/mesh_shapes     (ne, n, 3) Φ = T X at every node  — both only if kept
 ///

@@ -109,14 +109,14 @@ ModalStressCheck CheckModalStresses(const std::vector<ModalStressGroup>& groups,
 }
 
 void TransferModalStresses(body_codec::Codec& c, std::vector<ModalStressGroup>& groups,
-                           Eigen::Index ne) {
+                           ModalStressSurface& surface, Eigen::Index ne) {
   const std::string root = kStressGroup;
   H5File& h5 = c.h5();
   if (c.writing()) {
-    if (groups.empty()) return;
+    if (groups.empty() && surface.empty()) return;
     std::vector<std::string> names;
     for (const auto& g : groups) names.push_back(g.name);
-    h5.Write(root + "/names", names);
+    if (!names.empty()) h5.Write(root + "/names", names);
     h5.SetAttribute(root, "components", std::string(kStressComponentNames));
     h5.SetAttribute(root, "recovery",
                     std::string("nodal average over the cells sharing the node of the stress "
@@ -124,8 +124,9 @@ void TransferModalStresses(body_codec::Codec& c, std::vector<ModalStressGroup>& 
     h5.SetAttribute(root, "units", std::string("Pa per unit elastic coordinate"));
   } else {
     groups.clear();
-    if (!c.Exists(root + "/names")) return;
-    for (const std::string& name : h5.ReadStrings(root + "/names")) groups.push_back({name, {}, {}});
+    if (c.Exists(root + "/names"))
+      for (const std::string& name : h5.ReadStrings(root + "/names"))
+        groups.push_back({name, {}, {}});
   }
   for (ModalStressGroup& g : groups) {
     c.Text(g.name);
@@ -134,6 +135,7 @@ void TransferModalStresses(body_codec::Codec& c, std::vector<ModalStressGroup>& 
     c.Matrix(base + "/modal", g.stresses);
     c.ExpectShape(base + "/modal", g.stresses, 6 * static_cast<Eigen::Index>(g.nodes.size()), ne);
   }
+  TransferSurfaceStresses(c, surface, ne);
 }
 
 }  // namespace emb

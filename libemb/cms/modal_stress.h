@@ -24,12 +24,14 @@
 ///     names                (g strings)
 ///     <name>/nodes         (m) 0-based mesh nodes
 ///     <name>/modal         (6 m, ne) Σ_g, row 6 i + c
+///     surface/…            the whole boundary surface (surface_stress.h; digest version 4)
 
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "libemb/cms/surface_stress.h"
 #include "libemb/fe/material.h"
 #include "libemb/linalg/sparse_types.h"
 #include "libemb/mesh/mesh.h"
@@ -95,9 +97,10 @@ ModalStressCheck CheckModalStresses(const std::vector<ModalStressGroup>& groups,
                                     const Eigen::MatrixXd& Mhat, const std::string& note);
 
 /// Writes or reads the optional /stress group of a body file through `codec` (internal to
-/// body_file.cpp); reading, absent in the file → `groups` empty. Stress matrices must have
-/// `ne` columns. @throws InputError naming the file and dataset for a wrong shape.
+/// body_file.cpp): the groups, then the whole surface (surface_stress.h) if present; reading,
+/// absent in the file → `groups` / `surface` empty. Stress matrices must have `ne` columns.
+/// @throws InputError naming the file and dataset for a wrong shape.
 void TransferModalStresses(body_codec::Codec& codec, std::vector<ModalStressGroup>& groups,
-                           Eigen::Index ne);
+                           ModalStressSurface& surface, Eigen::Index ne);
 
 }  // namespace emb

@@ -174,6 +174,13 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
     body.times.Add("modal stresses", sw.seconds());
   }
 
+  if (job.stress_surface) {
+    sw.Restart();
+    if (progress) progress("surface modal stresses", 0.0);
+    body.stress_surface = CalcSurfaceModalStresses(mesh, material, Phi);
+    body.times.Add("surface modal stresses", sw.seconds());
+  }
+
   if (job.geometric_stiffness) {
     sw.Restart();
     if (progress) progress("geometric stiffness", 0.0);

@@ -55,6 +55,9 @@ struct ReductionJob {
   /// Surface groups whose modal stresses are stored (modal_stress.h); checked against the
   /// full FE model in the certificate's static load cases when that check runs.
   std::vector<std::string> stress_groups;
+  /// Also store the modal stresses on the whole boundary surface (surface_stress.h), for the
+  /// whole-surface stress field of a run (ParaView).
+  bool stress_surface{false};
 };
 
 /// A reduced flexible body: everything a multibody run (and Python) needs.
@@ -73,6 +76,7 @@ struct ReducedBody {
   ReductionCertificate certificate;
   GeometricStiffness geometric_stiffness;  ///< present unless the job switched it off
   std::vector<ModalStressGroup> stress_groups;  ///< modal stresses (modal_stress.h)
+  ModalStressSurface stress_surface;   ///< on the whole surface (surface_stress.h), optional
   ModalStressCheck stress_check;       ///< against the full model (not stored in the file)
   Eigen::MatrixXd mesh_shapes;         ///< 3n × ne, empty unless kept
   int num_fe_dofs{0};

@@ -193,6 +193,10 @@ void H5File::Write(const std::string& path, const double* data,
                    const std::vector<std::uint64_t>& dims) {
   WriteRaw(id_, path_, path, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, dims, false);
 }
+void H5File::Write(const std::string& path, const float* data,
+                   const std::vector<std::uint64_t>& dims) {
+  WriteRaw(id_, path_, path, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, data, dims, false);
+}
 void H5File::Write(const std::string& path, const int* data,
                    const std::vector<std::uint64_t>& dims) {
   WriteRaw(id_, path_, path, H5T_STD_I32LE, H5T_NATIVE_INT, data, dims, true);
@@ -332,6 +336,9 @@ std::vector<T> ReadAll(hid_t file, const std::string& fname, const std::string& 
 
 std::vector<double> H5File::ReadDoubles(const std::string& path) const {
   return ReadAll<double>(id_, path_, path, H5T_NATIVE_DOUBLE, Shape(path), file_size_);
+}
+std::vector<float> H5File::ReadFloats(const std::string& path) const {
+  return ReadAll<float>(id_, path_, path, H5T_NATIVE_FLOAT, Shape(path), file_size_);
 }
 std::vector<int> H5File::ReadInts(const std::string& path) const {
   return ReadAll<int>(id_, path_, path, H5T_NATIVE_INT, Shape(path), file_size_);

@@ -37,6 +37,9 @@ class H5File {
   /// stored plain: deflate shrank the inline-4 crank's 120 MB of mode shapes by 4 % at the
   /// cost of ~4 s of the reduction's write (and the same again to read them back).
   void Write(const std::string& path, const double* data, const std::vector<std::uint64_t>& dims);
+  /// Single precision (IEEE binary32): for large data whose precision needs are far below a
+  /// double's (e.g. the whole-surface modal stresses, cms/surface_stress.h).
+  void Write(const std::string& path, const float* data, const std::vector<std::uint64_t>& dims);
   void Write(const std::string& path, const int* data, const std::vector<std::uint64_t>& dims);
   void Write(const std::string& path, const std::uint64_t* data,
              const std::vector<std::uint64_t>& dims);
@@ -54,6 +57,8 @@ class H5File {
   std::vector<std::uint64_t> Shape(const std::string& path) const;
   std::vector<double> ReadDoubles(const std::string& path) const;
   std::vector<int> ReadInts(const std::string& path) const;
+  /// The values as floats (a double dataset is rounded by HDF5's conversion).
+  std::vector<float> ReadFloats(const std::string& path) const;
   std::vector<std::string> ReadStrings(const std::string& path) const;
   std::string ReadStringAttribute(const std::string& object, const std::string& name) const;
   double ReadDoubleAttribute(const std::string& object, const std::string& name) const;

@@ -7,8 +7,11 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/core/system.h"
+#include "libemb/mesh/mesh.h"
 #include "libemb/results/fatigue.h"
 #include "libemb/results/steady_state.h"
 
@@ -31,6 +34,13 @@ struct StressOutput {
   std::string body;        ///< the flexible part
   std::string body_file;   ///< its body file (the mesh for the XDMF)
   std::vector<double> field_times;  ///< [s] write the groups' stress fields at these times
+  /// [s] write the stress field on the whole part surface at these times (the body file
+  /// needs emb reduce --stress-surface)
+  std::vector<double> surface_field_times;
+  /// The body file's surface (surface_stress.h) when surface_field_times are asked: node
+  /// positions (s × 3) [m] and faces (indices into the surface nodes).
+  Eigen::MatrixXd surface_coordinates;
+  std::vector<CellBlock> surface_faces;
   bool fatigue{false};
   /// Stress measure counted per node: "max_principal" (sigma_1) or "signed_von_mises".
   std::string measure{"max_principal"};

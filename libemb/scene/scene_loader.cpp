@@ -37,8 +37,8 @@ using Eigen::Vector3d;
 // their interfaces).
 struct Parts {
   std::map<std::string, mbs::FlexiblePart> from_body_files;
-  /// The modal stress groups of those parts' body files (cms/modal_stress.h), by part.
-  std::map<std::string, std::vector<ModalStressGroup>> stress_groups;
+  /// The modal stresses of those parts' body files (cms/modal_stress.h), by part.
+  std::map<std::string, PartStresses> stresses;
   std::map<std::string, mbs::BeamPart> beams;
   std::map<std::string, BeamPartOutputs> beam_outputs;  // the same, for output points
   /// Parts with `basis: installed` (the analysis builds their basis at the start).
@@ -151,7 +151,7 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
       rb.Optional(key);
   }
   rb.Finish();
-  const ReducedBody reduced = mbs::ReadPartBodyFile(path, name, expect_mesh_hash);
+  ReducedBody reduced = mbs::ReadPartBodyFile(path, name, expect_mesh_hash);
   mbs::FlexibleBodyModel m = mbs::MakeFlexibleBody(name, reduced, path, options, placement);
   for (auto [key, values, target] :
        {std::tuple{"modal_coordinates", &eta0, &m.body.eta0},
@@ -167,7 +167,7 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   m.part.body = sys->AddBody(m.body);
   notes->push_back(m.part.note);
   parts->from_body_files[name] = std::move(m.part);
-  parts->stress_groups[name] = reduced.stress_groups;
+  parts->stresses[name] = {std::move(reduced.stress_groups), std::move(reduced.stress_surface)};
 }
 
 void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOptions& options,
@@ -489,7 +489,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
     ReadOutputPoints(n, source, &scene.system, parts.from_body_files, parts.beam_outputs);
   if (const YAML::Node n = r.Optional("stress_outputs"))
     scene.stress_outputs = ReadStressOutputs(n, source, &scene.system, parts.from_body_files,
-                                             parts.stress_groups);
+                                             parts.stresses);
   YAML::Node analysis_node = r.Optional("analysis");
   if (analysis_node) ReadAnalysis(analysis_node, source, &scene.analysis, &scene.steady_state);
   scene.analysis.installed_bases = parts.installed_bases;

@@ -65,7 +65,7 @@ SnCurve ReadSn(MapReader& f, StressOutput* out) {
 std::vector<StressOutput> ReadStressOutputs(
     const YAML::Node& list, const std::string& file, mbs::System* sys,
     const std::map<std::string, mbs::FlexiblePart>& body_file_parts,
-    const std::map<std::string, std::vector<ModalStressGroup>>& stress_groups) {
+    const std::map<std::string, PartStresses>& stresses) {
   std::vector<StressOutput> outputs;
   ReadNamedList(
       list, file, "stress_outputs", "stress output",
@@ -78,13 +78,18 @@ std::vector<StressOutput> ReadStressOutputs(
         if (const YAML::Node g = r.Optional("groups"))
           spec.groups = Strings(g, file, r.what() + " groups");
         if (const YAML::Node n = r.Optional("nodes")) spec.nodes = Nodes(n, file, r.what() + " nodes");
-        if (r.Has("field_times")) {
-          out.field_times = r.GetDoubles("field_times");
-          for (double t : out.field_times)
-            EMB_THROW_IF(!std::isfinite(t), r.what() << " field_times: expected finite times [s], got " << t);
-        } else {
-          r.Optional("field_times");
+        for (auto [key, times] : {std::pair{"field_times", &out.field_times},
+                                  std::pair{"surface_field_times", &out.surface_field_times}}) {
+          if (!r.Has(key)) {
+            r.Optional(key);
+            continue;
+          }
+          *times = r.GetDoubles(key);
+          for (double t : *times)
+            EMB_THROW_IF(!std::isfinite(t),
+                         r.what() << " " << key << ": expected finite times [s], got " << t);
         }
+        spec.surface = !out.surface_field_times.empty();
         if (const YAML::Node f = r.Optional("fatigue")) {
           MapReader fr(f, file, r.what() + " fatigue");
           out.fatigue = true;
@@ -100,9 +105,14 @@ std::vector<StressOutput> ReadStressOutputs(
                                                      "expected a cms part");
         }
         out.body_file = part->second.source;
-        const auto groups = stress_groups.find(out.body);
-        EMB_CHECK(groups != stress_groups.end());
-        sys->AddProbe(mbs::MakeStressProbe(part->second, groups->second, spec));
+        const auto stored = stresses.find(out.body);
+        EMB_CHECK(stored != stresses.end());
+        sys->AddProbe(mbs::MakeStressProbe(part->second, stored->second.groups, spec,
+                                           &stored->second.surface));
+        if (spec.surface) {
+          out.surface_coordinates = stored->second.surface.coordinates;
+          out.surface_faces = stored->second.surface.faces;
+        }
         outputs.push_back(std::move(out));
       });
   return outputs;

@@ -10,6 +10,8 @@
 ///       groups: [crankpin_fillet_1]      # default: every stress group of the body file
 ///       nodes: [1234]                    # full components: fillets.n1234.xx ... (optional)
 ///       field_times: [0.05, 0.06]        # XDMF of the groups' stress fields [s] (optional)
+///       surface_field_times: [0.05]      # XDMF of the whole surface's field [s] (optional;
+///                                        # the body file needs emb reduce --stress-surface)
 ///       fatigue:                         # optional
 ///         measure: max_principal         # or signed_von_mises
 ///         fatigue_strength_coefficient: 1.2e9   # Basquin sigma_f' [Pa]
@@ -29,13 +31,21 @@
 
 namespace emb::scene {
 
-/// Reads the list (`stress_groups`: the body files' modal stresses by part), adds a stress probe per entry to `sys` (not finalized) and returns the
-/// entries. @throws InputError with file:line naming the entry: unknown body, a rigid part or
-/// one without a body file, a body file without modal stresses, an unknown group, a node in
-/// none of the groups, a bad S-N curve, a negative field time, bad keys.
+/// The modal stresses a part's body file holds: its groups and (optional) whole surface.
+struct PartStresses {
+  std::vector<ModalStressGroup> groups;
+  ModalStressSurface surface;
+};
+
+/// Reads the list (`stresses`: the body files' modal stresses by part), adds a stress probe
+/// per entry to `sys` (not finalized) and returns the entries. @throws InputError with
+/// file:line naming the entry: unknown body, a rigid part or one without a body file, a body
+/// file without modal stresses (or without the surface that surface_field_times need), an
+/// unknown group, a node in none of the groups, a bad S-N curve, a non-finite field time,
+/// bad keys.
 std::vector<StressOutput> ReadStressOutputs(
     const YAML::Node& list, const std::string& file, mbs::System* sys,
     const std::map<std::string, mbs::FlexiblePart>& body_file_parts,
-    const std::map<std::string, std::vector<ModalStressGroup>>& stress_groups);
+    const std::map<std::string, PartStresses>& stresses);
 
 }  // namespace emb::scene

@@ -2,17 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <limits>
-#include <sstream>
-#include <tuple>
 
 #include "libemb/common/error.h"
 #include "libemb/fe/stress_measures.h"
-#include "libemb/io/atomic_file.h"
 #include "libemb/io/hdf5_file.h"
 #include "libemb/io/mesh_io.h"
+#include "libemb/mesh/boundary_surface.h"
 #include "libemb/results/rainflow.h"
+#include "libemb/results/stress_field_file.h"
 
 namespace emb::scene {
 namespace {
@@ -32,6 +30,40 @@ Eigen::VectorXd Measure(const std::string& measure, const mbs::StressSnapshot& s
   return m;
 }
 
+// Whether the sample at `t` takes the next of the sorted `times` (advancing `next` past every
+// time it reaches).
+bool Due(const std::vector<double>& times, std::size_t& next, double t) {
+  if (next >= times.size() || t < times[next] - kFieldTimeSlack) return false;
+  while (next < times.size() && t >= times[next] - kFieldTimeSlack) ++next;
+  return true;
+}
+
+// The group's field (coordinates and faces from the body file's mesh).
+NodalStressField GroupField(const StressOutput& out, const mbs::StressRows& group, const Mesh& mesh,
+                       const BoundarySurface& boundary) {
+  NodalStressField f;
+  f.path = "/" + out.name + "/" + group.name;
+  f.title = out.name + "." + group.name;
+  f.nodes = group.nodes;
+  f.coordinates.resize(static_cast<Eigen::Index>(group.nodes.size()), 3);
+  std::vector<int> local(static_cast<std::size_t>(mesh.num_nodes()), -1);
+  for (std::size_t i = 0; i < group.nodes.size(); ++i) {
+    const int node = group.nodes[i];
+    EMB_THROW_IF(node < 0 || node >= mesh.num_nodes(),
+                 "stress output '" << out.name << "': node " << node
+                                   << " is not in the mesh of '" << out.body_file << "'");
+    f.coordinates.row(static_cast<Eigen::Index>(i)) = mesh.nodes.col(node).transpose();
+    local[static_cast<std::size_t>(node)] = static_cast<int>(i);
+  }
+  std::vector<int> sorted = group.nodes;
+  std::sort(sorted.begin(), sorted.end());
+  for (CellBlock b : SelectFaces(boundary, sorted).faces) {
+    for (int& n : b.connectivity) n = local[static_cast<std::size_t>(n)];
+    f.faces.push_back(std::move(b));
+  }
+  return f;
+}
+
 }  // namespace
 
 StressRecorder::StressRecorder(const mbs::System& system, std::vector<StressOutput> outputs)
@@ -39,13 +71,17 @@ StressRecorder::StressRecorder(const mbs::System& system, std::vector<StressOutp
   for (std::size_t o = 0; o < outputs_.size(); ++o) {
     StressOutput& out = outputs_[o];
     std::sort(out.field_times.begin(), out.field_times.end());
+    std::sort(out.surface_field_times.begin(), out.surface_field_times.end());
     std::shared_ptr<const mbs::StressProbe> probe;
     for (const auto& p : system.probes())
       if (p->name() == out.name) probe = std::dynamic_pointer_cast<const mbs::StressProbe>(p);
     EMB_THROW_IF(!probe, "stress output '" << out.name << "': no stress probe of that name in "
                                                           "the system");
     probes_.push_back(probe);
+    EMB_CHECK(out.surface_field_times.empty() || probe->has_surface());
     next_field_.push_back(0);
+    next_surface_.push_back(0);
+    surfaces_.emplace_back();
     for (std::size_t g = 0; g < probe->groups().size(); ++g)
       groups_.push_back({static_cast<int>(o), static_cast<int>(g), {}, {}, {}, {}});
   }
@@ -56,20 +92,22 @@ bool StressRecorder::has_fatigue() const {
 }
 
 bool StressRecorder::has_fields() const {
-  return std::any_of(outputs_.begin(), outputs_.end(),
-                     [](const auto& o) { return !o.field_times.empty(); });
+  return std::any_of(outputs_.begin(), outputs_.end(), [](const auto& o) {
+    return !o.field_times.empty() || !o.surface_field_times.empty();
+  });
 }
 
 void StressRecorder::Add(const mbs::Sample& s) {
   const mbs::StateLayout& L = system_.layout();
   std::vector<char> take_field(outputs_.size(), 0);
   for (std::size_t o = 0; o < outputs_.size(); ++o) {
-    const auto& times = outputs_[o].field_times;
-    std::size_t& next = next_field_[o];
-    if (next < times.size() && s.t >= times[next] - kFieldTimeSlack) {
-      take_field[o] = 1;
-      while (next < times.size() && s.t >= times[next] - kFieldTimeSlack) ++next;
-    }
+    take_field[o] = Due(outputs_[o].field_times, next_field_[o], s.t);
+    if (!Due(outputs_[o].surface_field_times, next_surface_[o], s.t)) continue;
+    const mbs::StressProbe& probe = *probes_[o];
+    const int b = probe.body();
+    surfaces_[o].t.push_back(s.t);
+    surfaces_[o].field.push_back(
+        probe.SurfaceStresses(s.q.segment(L.elastic_q(b), L.num_elastic(b))));
   }
   for (Group& g : groups_) {
     const StressOutput& out = outputs_[static_cast<std::size_t>(g.output)];
@@ -128,90 +166,50 @@ std::vector<double> StressRecorder::MissedFieldTimes() const {
   for (std::size_t o = 0; o < outputs_.size(); ++o)
     for (std::size_t k = next_field_[o]; k < outputs_[o].field_times.size(); ++k)
       missed.push_back(outputs_[o].field_times[k]);
+  for (std::size_t o = 0; o < outputs_.size(); ++o)
+    for (std::size_t k = next_surface_[o]; k < outputs_[o].surface_field_times.size(); ++k)
+      missed.push_back(outputs_[o].surface_field_times[k]);
   return missed;
 }
 
 void StressRecorder::WriteFields(const std::string& h5_path, const std::string& xdmf_path) const {
-  AtomicFile h5_out(h5_path);
-  std::ostringstream x;
-  x.precision(12);
-  x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n";
-  const std::string h5_name = std::filesystem::path(h5_path).filename().string();
-  {
-    H5File h5(h5_out.temp_path(), H5File::Mode::kCreate);
-    h5.SetAttribute("/", "format", std::string("emb.stress_fields"));
-    h5.SetAttribute("/", "units", std::string("SI: m, s, Pa; stress in Voigt order xx, yy, zz, "
-                                              "xy, yz, zx, mesh axes"));
-    std::vector<Mesh> meshes(outputs_.size());
-    for (const Group& g : groups_) {
-      if (g.field.empty()) continue;
-      const StressOutput& out = outputs_[static_cast<std::size_t>(g.output)];
-      Mesh& mesh = meshes[static_cast<std::size_t>(g.output)];
-      if (mesh.num_nodes() == 0) {
-        const H5File body(out.body_file, H5File::Mode::kRead);
-        EMB_THROW_IF(!body.Exists("/mesh/nodes"),
-                     "stress output '" << out.name << "': body file '" << out.body_file
-                                       << "' has no mesh (reduced with --no-mesh-shapes), which "
-                                          "field_times need");
-        mesh = ReadMeshSection(body);
-      }
-      const mbs::StressRows& group = probes_[static_cast<std::size_t>(g.output)]->groups()[g.index];
-      const std::uint64_t m = group.nodes.size(), k = g.field.size();
-      const std::string base = "/" + out.name + "/" + group.name;
-      std::vector<double> xyz, stress, vm, p1;
-      for (int node : group.nodes) {
-        EMB_THROW_IF(node < 0 || node >= mesh.num_nodes(),
-                     "stress output '" << out.name << "': node " << node
-                                       << " is not in the mesh of '" << out.body_file << "'");
-        for (int c = 0; c < 3; ++c) xyz.push_back(mesh.nodes(c, node));
-      }
-      for (const Eigen::MatrixXd& s : g.field)
-        for (Eigen::Index i = 0; i < s.cols(); ++i) {
-          const Voigt6 v = s.col(i);
-          for (int c = 0; c < 6; ++c) stress.push_back(v[c]);
-          vm.push_back(VonMises(v));
-          p1.push_back(PrincipalStresses(v)[0]);
-        }
-      h5.Write(base + "/nodes", group.nodes.data(), {m});
-      h5.Write(base + "/coordinates", xyz.data(), {m, 3});
-      h5.Write(base + "/times", g.field_t.data(), {k});
-      h5.Write(base + "/stress", stress.data(), {k, m, 6});
-      h5.Write(base + "/von_mises", vm.data(), {k, m});
-      h5.Write(base + "/max_principal", p1.data(), {k, m});
-      x << "  <Grid Name=\"" << out.name << "." << group.name
-        << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-      for (std::uint64_t s = 0; s < k; ++s) {
-        x << "   <Grid Name=\"t = " << g.field_t[s] << " s\" GridType=\"Uniform\">\n"
-          << "    <Time Value=\"" << g.field_t[s] << "\"/>\n"
-          << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << m << "\"/>\n"
-          << "    <Geometry GeometryType=\"XYZ\">\n     <DataItem Dimensions=\"" << m
-          << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5_name << ":"
-          << base << "/coordinates</DataItem>\n    </Geometry>\n";
-        for (const auto& [field, width, type] :
-             {std::tuple{"von_mises", 1, "Scalar"}, std::tuple{"max_principal", 1, "Scalar"},
-              std::tuple{"stress", 6, "Tensor6"}}) {
-          const bool scalar = width == 1;
-          x << "    <Attribute Name=\"" << field << "\" AttributeType=\"" << type
-            << "\" Center=\"Node\">\n     <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << m
-            << (scalar ? "" : " 6") << "\">\n      <DataItem Dimensions=\"3 " << (scalar ? 2 : 3)
-            << "\" Format=\"XML\">" << s << " 0" << (scalar ? "" : " 0") << " 1 1"
-            << (scalar ? "" : " 1") << " 1 " << m << (scalar ? "" : " 6")
-            << "</DataItem>\n      <DataItem Dimensions=\"" << k << " " << m
-            << (scalar ? "" : " 6") << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-            << h5_name << ":" << base << "/" << field << "</DataItem>\n     </DataItem>\n"
-            << "    </Attribute>\n";
-        }
-        x << "   </Grid>\n";
-      }
-      x << "  </Grid>\n";
+  std::vector<NodalStressField> fields;
+  // Per output, the body file's mesh and its boundary faces (for the groups' faces).
+  std::vector<Mesh> meshes(outputs_.size());
+  std::vector<BoundarySurface> boundaries(outputs_.size());
+  for (const Group& g : groups_) {
+    if (g.field.empty()) continue;
+    const auto o = static_cast<std::size_t>(g.output);
+    const StressOutput& out = outputs_[o];
+    if (meshes[o].num_nodes() == 0) {
+      const H5File body(out.body_file, H5File::Mode::kRead);
+      EMB_THROW_IF(!body.Exists("/mesh/nodes"),
+                   "stress output '" << out.name << "': body file '" << out.body_file
+                                     << "' has no mesh (reduced with --no-mesh-shapes), which "
+                                        "field_times need");
+      meshes[o] = ReadMeshSection(body);
+      boundaries[o] = ExtractBoundarySurface(meshes[o]);
     }
-    h5.Close();
+    NodalStressField f = GroupField(out, probes_[o]->groups()[static_cast<std::size_t>(g.index)],
+                               meshes[o], boundaries[o]);
+    f.times = g.field_t;
+    f.stress = g.field;
+    fields.push_back(std::move(f));
   }
-  x << " </Domain>\n</Xdmf>\n";
-  AtomicFile xdmf(xdmf_path);
-  xdmf.WriteText(x.str());
-  h5_out.Commit();
-  xdmf.Commit();
+  for (std::size_t o = 0; o < outputs_.size(); ++o) {
+    if (surfaces_[o].t.empty()) continue;
+    const StressOutput& out = outputs_[o];
+    NodalStressField f;
+    f.path = "/" + out.name + "/surface";
+    f.title = out.name + ".surface";
+    f.nodes = probes_[o]->surface().nodes;
+    f.coordinates = out.surface_coordinates;
+    f.faces = out.surface_faces;
+    f.times = surfaces_[o].t;
+    f.stress = surfaces_[o].field;
+    fields.push_back(std::move(f));
+  }
+  WriteStressFields(h5_path, xdmf_path, fields);
 }
 
 }  // namespace emb::scene

@@ -11,13 +11,11 @@
 /// (fatigue.h); the row reports the node of the largest D. Life = 1 / D windows (engine
 /// cycles when the window is one steady cycle).
 ///
-/// Stress-field file (HDF5, written atomically at the end of the run), per output o and
-/// group g:
-///   /<o>/<g>/nodes (m) mesh nodes, /<o>/<g>/coordinates (m, 3) [m, mesh axes],
-///   /<o>/<g>/times (k) [s], /<o>/<g>/stress (k, m, 6) [Pa, Voigt xx yy zz xy yz zx],
-///   /<o>/<g>/von_mises (k, m), /<o>/<g>/max_principal (k, m) [Pa]
-/// and an XDMF file beside it: one temporal collection per group, the nodes as a
-/// Polyvertex grid with the three fields (ParaView: "Point Gaussian" shows them).
+/// Stress fields (results/stress_field_file.h, written atomically at the end of the run): per
+/// output o the fields of its groups, /<o>/<g>, at its field_times, with the group's faces
+/// (the boundary faces of the body file's mesh whose nodes are all in the group), and the
+/// field on the whole surface, /<o>/surface, at its surface_field_times. A field time is
+/// taken by the first sample at or after it.
 
 #include <string>
 #include <vector>
@@ -60,6 +58,10 @@ class StressRecorder {
   void WriteFields(const std::string& h5_path, const std::string& xdmf_path) const;
 
  private:
+  struct Surface {                          // per output: the whole-surface field
+    std::vector<double> t;
+    std::vector<Eigen::MatrixXd> field;     // 6 x s per surface field time
+  };
   struct Group {
     int output, index;                      // output and group index in the probe
     std::vector<double> t;                  // sample times (fatigue)
@@ -71,6 +73,8 @@ class StressRecorder {
   std::vector<StressOutput> outputs_;
   std::vector<std::shared_ptr<const mbs::StressProbe>> probes_;
   std::vector<std::size_t> next_field_;     // per output: next field time to take
+  std::vector<std::size_t> next_surface_;   // per output: next surface field time to take
+  std::vector<Surface> surfaces_;           // per output
   std::vector<Group> groups_;
 };
 

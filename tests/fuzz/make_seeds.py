@@ -50,7 +50,7 @@ def main():
         shutil.copy(os.path.join(work, "disc.yaml"), os.path.join(args.out, "scene"))
         for cmd in (["mesh", "bar.geo", "--save-mesh", "bar.msh"],
                     ["reduce", "bar.geo", "-i", "x0", "-i", "x1:rbe3", "-n", "2",
-                     "--no-reference", "--no-xdmf", "-o", "body.h5"],
+                     "--no-reference", "--no-xdmf", "--stress-surface", "-o", "body.h5"],
                     ["run", "disc.yaml", "-o", "disc.h5"]):
             r = subprocess.run([args.emb, *cmd, "-q"], cwd=work, capture_output=True, text=True)
             if r.returncode != 0:

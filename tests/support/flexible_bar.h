@@ -27,6 +27,7 @@ struct BarSpec {
   bool keep_mesh_shapes{false};  ///< also Φ at every mesh node (ReducedBody::mesh_shapes)
                                  ///< and the mesh in the body file
   std::vector<std::string> stress_groups;  ///< modal stresses stored (cms/modal_stress.h)
+  bool stress_surface{false};  ///< also on the whole surface (cms/surface_stress.h)
 
   std::string Key() const {
     std::ostringstream k;
@@ -35,6 +36,7 @@ struct BarSpec {
     for (const auto& i : interfaces) k << "_" << i;
     for (const auto& i : stiffening_supports) k << "_held-" << i;
     for (const auto& g : stress_groups) k << "_stress-" << g;
+    if (stress_surface) k << "_surface";
     std::string s = k.str();
     for (char& c : s)
       if (c == ':' || c == '@' || c == ',') c = '-';
@@ -82,6 +84,7 @@ inline const ReducedBody& FlexibleBar(const BarSpec& spec) {
   job.keep_mesh_shapes = spec.keep_mesh_shapes;
   job.stiffening_supports = spec.stiffening_supports;
   job.stress_groups = spec.stress_groups;
+  job.stress_surface = spec.stress_surface;
   return made[key] = ReduceBody(mesh, sys, material, job);
 }
 

@@ -10,8 +10,10 @@
 
 namespace emb {
 
-// Changes entry `index` of dataset `name` in place, as an editor (or a disk error) would.
-inline void ChangeOneEntry(const std::string& path, const char* name, std::size_t index) {
+// Changes entry `index` of dataset `name` in place, as an editor (or a disk error) would: scales
+// it by `factor` (a float32 dataset needs a change larger than its rounding, 2^-24).
+inline void ChangeOneEntry(const std::string& path, const char* name, std::size_t index,
+                           double factor = 1.0 + 1e-12) {
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   const hid_t ds = H5Dopen2(file, name, H5P_DEFAULT);
@@ -21,7 +23,7 @@ inline void ChangeOneEntry(const std::string& path, const char* name, std::size_
   H5Sclose(space);
   ASSERT_LT(index, v.size());
   ASSERT_GE(H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), 0);
-  v[index] *= 1.0 + 1e-12;
+  v[index] *= factor;
   ASSERT_GE(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()), 0);
   H5Dclose(ds);
   H5Fclose(file);

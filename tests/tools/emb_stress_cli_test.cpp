@@ -12,7 +12,7 @@
 
 #include "libemb/io/hdf5_file.h"
 #include "tests/support/cli_fixture.h"
-#include "tests/support/flexible_bar.h"
+#include "tests/support/clamped_bar_scene.h"
 
 namespace {
 
@@ -21,31 +21,16 @@ using emb::test::CliResult;
 
 class EmbStressCli : public emb::test::CliTest {
  protected:
-  // A clamped bar (x0 held) with a tip force on x1, its top face z1 a stress group.
+  // The clamped bar, its top face z1 and side y0 stress groups (tests/support).
   static emb::testing::BarSpec Bar(bool stresses) {
-    emb::testing::BarSpec bar;
-    bar.interfaces = {"x0:rbe2", "x1:rbe2"};
-    bar.modes = 6;
-    bar.ny = 2;
-    bar.nz = 2;
-    bar.damping_ratio = 0.02;
-    bar.keep_mesh_shapes = true;
-    if (stresses) bar.stress_groups = {"z1", "y0"};
-    return bar;
+    return emb::testing::ClampedBar(stresses ? std::vector<std::string>{"z1", "y0"}
+                                             : std::vector<std::string>{});
   }
   void WriteScene(const std::string& name, const emb::testing::BarSpec& bar,
                   const std::string& stress_outputs, const std::string& load,
                   const std::string& analysis) const {
-    std::ofstream(dir_ / name)
-        << "bodies:\n  - {name: bar, model: cms, body_file: " << emb::testing::FlexibleBarFile(bar)
-        << "}\n"
-        << "markers:\n  - {name: root, body: bar, interface: x0}\n"
-        << "  - {name: tip, body: bar, interface: x1}\n"
-        << "  - {name: base, body: ground, frame: world, position: [0, 0.02, 0.015]}\n"
-        << "joints:\n  - {name: clamp, type: fixed, i: root, j: base}\n"
-        << "forces:\n  - {name: load, type: force, marker: tip, direction: [0, 0, 1], "
-           "function: " << load << "}\n"
-        << "stress_outputs:\n" << stress_outputs << "analysis: " << analysis << "\n";
+    std::ofstream(dir_ / name) << emb::testing::ClampedBarScene(bar, stress_outputs, "[0, 0, 1]",
+                                                                load, analysis);
   }
   // The top-face node at (x, width/2, height) of the bar's mesh.
   static int TopNode(const emb::testing::BarSpec& bar, double x) {
@@ -160,11 +145,12 @@ TEST_F(EmbStressCli, BadInputIsRefusedByName) {
   ExpectFailure("run node.yaml -o out.h5", 1, {"node 0", "none of its groups"});
 }
 
-// emb reduce: the stress table and its check, the option in --help, a wrong group named.
+// emb reduce: the stress table and its check, the whole surface (--stress-surface: Tet10 from
+// gmsh, so Tri6 faces), the options in --help, a wrong group and exclusive options named.
 TEST_F(EmbStressCli, ReduceStoresAndChecksModalStresses) {
   WriteBarGeo();
   const CliResult r = Run("reduce bar.geo -q --json -n 4 --no-reference -i x0:rbe2 -i x1:rbe2 "
-                          "--stress-groups y0 -o bar_body.h5");
+                          "--stress-groups y0 --stress-surface -o bar_body.h5");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   const auto& rows = j["stress"];
@@ -173,11 +159,18 @@ TEST_F(EmbStressCli, ReduceStoresAndChecksModalStresses) {
   EXPECT_LE(rows[0]["check_error"].get<double>(), 1e-6) << rows[0];  // round-off (modal_stress_test)
   emb::H5File f((dir_ / "bar_body.h5").string(), emb::H5File::Mode::kRead);
   EXPECT_EQ(f.ReadStrings("/stress/names"), std::vector<std::string>{"y0"});
+  const long long surface_nodes = j["summary"]["stress_surface_nodes"].get<long long>();
+  EXPECT_EQ(static_cast<long long>(f.Shape("/stress/surface/nodes")[0]), surface_nodes);
+  EXPECT_EQ(f.ReadStrings("/stress/surface/face_types"), std::vector<std::string>{"Tri6"});
+  EXPECT_EQ(f.Shape("/stress/surface/modal")[0], 6u * static_cast<std::uint64_t>(surface_nodes));
+  ExpectFailure("reduce bar.geo -n 4 -i x0:rbe2 --no-stress --stress-surface -o out.h5", 1,
+                {"--no-stress and --stress-surface"});
   ExpectFailure("reduce bar.geo -n 4 -i x0:rbe2 -i x1:rbe2 --stress-groups fillet -o out.h5", 1,
                 {"fillet"});
   const CliResult help = Run("reduce --help");
   EXPECT_NE(help.out.find("--stress-groups"), std::string::npos);
   EXPECT_NE(help.out.find("--no-stress"), std::string::npos);
+  EXPECT_NE(help.out.find("--stress-surface"), std::string::npos);
 }
 
 }  // namespace

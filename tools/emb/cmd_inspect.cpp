@@ -46,6 +46,11 @@ struct InspectCommand {
       stress_groups.push_back(g.name + " (" + std::to_string(g.num_nodes()) + " nodes)");
     if (stress_groups.empty()) stress_groups.push_back("none");
     s.Add("stress_groups", "modal stresses (stress groups)", stress_groups);
+    const ModalStressSurface& surface = body.stress_surface;
+    s.Add("stress_surface", "modal stresses on the whole surface",
+          surface.empty() ? std::string("none (emb reduce --stress-surface stores them)")
+                          : std::to_string(surface.num_nodes()) + " nodes, " +
+                                std::to_string(surface.num_faces()) + " faces");
     const InertiaInvariants& inv = body.invariants;
     s.Add("mass_kg", "mass [kg]", inv.mass);
     const Eigen::Vector3d c = inv.CenterOfMass();

@@ -45,6 +45,7 @@ struct ReduceCommand {
   std::vector<std::string> stiffening_supports;
   std::vector<std::string> stress_groups;
   bool no_stress{false};
+  bool stress_surface{false};
   bool no_xdmf{false};
   bool allow_failed_certificate{false};
   std::string output;
@@ -94,8 +95,10 @@ struct ReduceCommand {
     job.stiffening_supports = stiffening_supports;
     EMB_THROW_IF(no_stress && !stress_groups.empty(),
                  "--no-stress and --stress-groups exclude each other");
+    EMB_THROW_IF(no_stress && stress_surface, "--no-stress and --stress-surface exclude each other");
     if (!no_stress)
       job.stress_groups = stress_groups.empty() ? DefaultStressGroups(mesh) : stress_groups;
+    job.stress_surface = stress_surface;
     if (free_free) {
       EMB_THROW_IF(!interfaces.empty(), "--free-free and --interface exclude each other");
     } else if (!interfaces.empty()) {
@@ -266,6 +269,14 @@ struct ReduceCommand {
                     (sc.run ? sc.note + ", max rel. error " + FormatNumber(sc.max_error)
                             : sc.note.empty() ? std::string("not run") : sc.note);
     s.Add("stress_groups", "modal stresses", stress_note);
+    const ModalStressSurface& surf = body.stress_surface;
+    s.Add("stress_surface", "modal stresses on the whole surface",
+          surf.empty() ? std::string("none (no --stress-surface)")
+                       : std::to_string(surf.num_nodes()) + " nodes, " +
+                             std::to_string(surf.num_faces()) + " faces");
+    if (!surf.empty())
+      s.Add("stress_surface_nodes", "surface nodes with modal stresses",
+            static_cast<long long>(surf.num_nodes()));
     if (sc.run) s.Add("stress_check_error", "modal stress check: max rel. error", sc.max_error);
     for (const auto& [name, secs] : times.phases) s.Add("seconds_" + name, "time " + name + " [s]", secs);
     s.Add("seconds_total", "time total [s]", times.Total());
@@ -385,6 +396,11 @@ void RegisterReduceCommand(CLI::App& app) {
                   "crankpin_fillet_<i> and journal_fillet_<k> groups, if any")
       ->delimiter(',');
   cmd->add_flag("--no-stress", st->no_stress, "Store no modal stresses (not even the default fillet groups)");
+  cmd->add_flag("--stress-surface", st->stress_surface,
+                "Also store the modal stresses on the whole boundary surface (the faces of one "
+                "cell; quadratic faces kept) with its nodes and faces, for the whole-surface "
+                "stress field of emb run (stress_outputs: surface_field_times) in ParaView; "
+                "grows the body file by 24 bytes per surface node and elastic mode (float32)");
   cmd->add_flag("--no-xdmf", st->no_xdmf, "Do not write the .xdmf file next to the .h5");
   cmd->add_flag("--allow-failed-certificate", st->allow_failed_certificate,
                 "Write the body file even if the certificate fails (the exit code is still 3)");

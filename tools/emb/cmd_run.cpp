@@ -98,9 +98,9 @@ struct RunCommand {
     // Every output checked and locked before any work (and before any file is truncated).
     CheckWritableOutput(h5, output.empty() ? scene_file + ": output.file" : "-o");
     CheckWritableOutput(csv_path, csv.empty() ? scene_file + ": output.csv" : "--csv");
-    // The stress fields of the scene's stress_outputs (field_times) beside the results.
+    // The stress fields of the scene's stress_outputs (field_times, surface_field_times) beside the results.
     bool fields = false;
-    for (const auto& o : sc.stress_outputs) fields |= !o.field_times.empty();
+    for (const auto& o : sc.stress_outputs) fields |= !o.field_times.empty() || !o.surface_field_times.empty();
     const std::string stem =
         h5.empty() ? "" : (std::filesystem::path(h5).parent_path() / std::filesystem::path(h5).stem()).string();
     const std::string fields_h5 = fields && !h5.empty() ? stem + ".stress.h5" : "";

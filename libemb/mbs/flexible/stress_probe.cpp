@@ -12,11 +12,29 @@ namespace {
 
 constexpr const char* kComponents[6] = {"xx", "yy", "zz", "xy", "yz", "zx"};
 
+// The kept modes' columns of the body file's modal stresses `file` (6 m x all modes).
+Eigen::MatrixXd KeptColumns(const FlexiblePart& part, const Eigen::MatrixXd& file,
+                            const std::string& who, const std::string& name) {
+  Eigen::MatrixXd rows(file.rows(), part.num_modes());
+  for (int j = 0; j < part.num_modes(); ++j) {
+    const int mode = part.kept_modes[static_cast<std::size_t>(j)];
+    EMB_THROW_IF(mode >= file.cols(), who << ": stress group '" << name << "' has " << file.cols()
+                                          << " modes; expected " << part.num_available_modes);
+    rows.col(j) = file.col(mode);
+  }
+  return rows;
+}
+
 }  // namespace
 
 StressProbe::StressProbe(std::string name, int body, std::vector<StressRows> groups,
-                         std::vector<int> nodes)
-    : Probe(std::move(name)), body_(body), groups_(std::move(groups)), nodes_(std::move(nodes)) {
+                         std::vector<int> nodes, StressRows surface)
+    : Probe(std::move(name)),
+      body_(body),
+      groups_(std::move(groups)),
+      nodes_(std::move(nodes)),
+      surface_(std::move(surface)) {
+  EMB_CHECK(surface_.rows.rows() == 6 * static_cast<Eigen::Index>(surface_.nodes.size()));
   for (const StressRows& g : groups_) {
     EMB_CHECK(g.rows.rows() == 6 * static_cast<Eigen::Index>(g.nodes.size()));
     for (const char* c : {".von_mises", ".von_mises_node", ".max_principal", ".max_principal_node"})
@@ -46,7 +64,20 @@ std::shared_ptr<const Probe> StressProbe::WithElasticBasis(int body,
     EMB_CHECK(g.rows.cols() == T.rows());
     g.rows = g.rows * T;
   }
-  return std::make_shared<StressProbe>(name(), body_, std::move(groups), nodes_);
+  StressRows surface = surface_;
+  if (has_surface()) {
+    EMB_CHECK(surface.rows.cols() == T.rows());
+    surface.rows = surface.rows * T;
+  }
+  return std::make_shared<StressProbe>(name(), body_, std::move(groups), nodes_,
+                                       std::move(surface));
+}
+
+Eigen::MatrixXd StressProbe::SurfaceStresses(const Eigen::VectorXd& eta) const {
+  EMB_CHECK(has_surface());
+  const Eigen::VectorXd v = surface_.rows * eta;
+  return Eigen::Map<const Eigen::MatrixXd>(v.data(), 6,
+                                           static_cast<Eigen::Index>(surface_.nodes.size()));
 }
 
 Eigen::MatrixXd StressProbe::GroupStresses(int g, const Eigen::VectorXd& eta) const {
@@ -99,13 +130,21 @@ void StressProbe::DoEval(const System&, const std::vector<BodyKinematics>& bodie
 
 std::shared_ptr<StressProbe> MakeStressProbe(const FlexiblePart& part,
                                              const std::vector<ModalStressGroup>& file_groups,
-                                             const StressProbeSpec& spec) {
+                                             const StressProbeSpec& spec,
+                                             const ModalStressSurface* file_surface) {
   const std::string who = "stress output '" + spec.name + "': part '" + part.name + "' (" +
                           part.source + ")";
   EMB_THROW_IF(!part.flexible, who << " is rigid: no elastic coordinates to recover stresses "
                                       "from; expected a flexible (cms) part");
-  EMB_THROW_IF(file_groups.empty(), who << ": the body file has no modal stresses; reduce it "
-                                           "with --stress-groups NAME,... (emb reduce)");
+  const bool has_surface = file_surface != nullptr && !file_surface->empty();
+  EMB_THROW_IF(spec.surface && !has_surface,
+               who << ": the body file has no modal stresses on the whole surface, which "
+                      "surface_field_times need; reduce it with --stress-surface (emb reduce)");
+  const bool surface_only =
+      spec.surface && file_groups.empty() && spec.groups.empty() && spec.nodes.empty();
+  EMB_THROW_IF(file_groups.empty() && !surface_only,
+               who << ": the body file has no modal stresses" << (has_surface ? " at groups" : "")
+                   << "; reduce it with --stress-groups NAME,... (emb reduce)");
   std::vector<std::string> available;
   for (const auto& g : file_groups) available.push_back(g.name);
   std::string listed;
@@ -118,20 +157,19 @@ std::shared_ptr<StressProbe> MakeStressProbe(const FlexiblePart& part,
     EMB_THROW_IF(it == file_groups.end(), who << ": unknown stress group '" << name << "'"
                                               << DidYouMean(name, available)
                                               << "; the body file has: " << listed);
-    StressRows r;
-    r.name = name;
-    r.nodes = it->nodes;
-    r.rows.resize(it->stresses.rows(), part.num_modes());
-    for (int j = 0; j < part.num_modes(); ++j) {
-      const int mode = part.kept_modes[static_cast<std::size_t>(j)];
-      EMB_THROW_IF(mode >= it->stresses.cols(),
-                   who << ": stress group '" << name << "' has " << it->stresses.cols()
-                       << " modes; expected " << part.num_available_modes);
-      r.rows.col(j) = it->stresses.col(mode);
-    }
-    rows.push_back(std::move(r));
+    rows.push_back({name, it->nodes, KeptColumns(part, it->stresses, who, name)});
   }
-  return std::make_shared<StressProbe>(spec.name, part.body, std::move(rows), spec.nodes);
+  // The fields file names the surface's field after the output like a group's: /<o>/surface.
+  EMB_THROW_IF(spec.surface && std::find(names.begin(), names.end(), "surface") != names.end(),
+               who << ": a stress group named 'surface' and surface_field_times would both be "
+                      "written as field '" << spec.name << "/surface'; expected the group "
+                      "renamed, or the output split in two");
+  StressRows surface;
+  if (spec.surface)
+    surface = {"surface", file_surface->nodes,
+               KeptColumns(part, file_surface->stresses, who, "surface")};
+  return std::make_shared<StressProbe>(spec.name, part.body, std::move(rows), spec.nodes,
+                                       std::move(surface));
 }
 
 }  // namespace emb::mbs

@@ -38,6 +38,7 @@ struct StressProbeSpec {
   std::string name;                 ///< probe name (channel prefix)
   std::vector<std::string> groups;  ///< stress groups of the body file; empty: all of them
   std::vector<int> nodes;           ///< mesh nodes with full component histories
+  bool surface{false};              ///< also keep the whole-surface rows (field output only)
 };
 
 /// One group's node stresses in the part's current elastic coordinates.
@@ -58,7 +59,10 @@ struct StressSnapshot {
 class StressProbe final : public Probe {
  public:
   /// @throws InputError naming the probe if a component node is in none of the groups.
-  StressProbe(std::string name, int body, std::vector<StressRows> groups, std::vector<int> nodes);
+  /// `surface`: the whole-surface rows (name "surface"; no channels: the stress recorder
+  /// writes its field at chosen times), empty rows for none.
+  StressProbe(std::string name, int body, std::vector<StressRows> groups, std::vector<int> nodes,
+              StressRows surface = {});
   std::vector<int> bodies() const override { return {body_}; }
   std::shared_ptr<const Probe> WithElasticBasis(int body, const Eigen::MatrixXd& T) const override;
   int body() const { return body_; }
@@ -66,6 +70,13 @@ class StressProbe final : public Probe {
   /// Stresses (6 x m, column i = node i of the group) of group `g` at elastic coordinates
   /// `eta` of the part. @pre eta.size() == number of the part's elastic coordinates.
   Eigen::MatrixXd GroupStresses(int g, const Eigen::VectorXd& eta) const;
+  /// Whether the probe holds the whole-surface rows (StressProbeSpec::surface).
+  bool has_surface() const { return surface_.rows.size() > 0; }
+  /// The whole-surface rows (mesh nodes of the body file's surface, sigma = rows * eta).
+  const StressRows& surface() const { return surface_; }
+  /// Stresses (6 x s, column i = surface node i) on the whole surface at `eta`. Cost
+  /// O(6 s n). @pre has_surface().
+  Eigen::MatrixXd SurfaceStresses(const Eigen::VectorXd& eta) const;
   /// All groups' stresses and measures at elastic coordinates `eta`; the same `eta` as the
   /// last call returns the kept result (valid until the next call with another eta).
   /// Not thread-safe (one run per process: emb's sweeps fork).
@@ -80,17 +91,23 @@ class StressProbe final : public Probe {
   std::vector<StressRows> groups_;
   std::vector<int> nodes_;                         // component nodes
   std::vector<std::pair<int, int>> node_slots_;    // (group, index in the group) per node
+  StressRows surface_;                             // whole surface (rows empty: none)
   mutable Eigen::VectorXd last_eta_;               // the eta of snapshot_ (empty: none yet)
   mutable StressSnapshot snapshot_;
 };
 
 /// The probe of `spec` on `part` from the body file's modal stress groups `file_groups`
-/// (ReducedBody::stress_groups of the part's file).
+/// (ReducedBody::stress_groups of the part's file) and, if spec.surface, its whole-surface
+/// modal stresses `file_surface` (ReducedBody::stress_surface). A file with a surface but no
+/// groups gives a probe without groups (and channels) when spec names no group or node.
 /// @throws InputError naming the probe, the part and its file: a rigid part, a body file
 ///   without modal stresses ("reduce it with --stress-groups"), an unknown group (with the
-///   groups the file has and a did-you-mean), a node in none of the groups.
+///   groups the file has and a did-you-mean), a node in none of the groups, a surface asked
+///   from a file without one ("reduce it with --stress-surface") or together with a group
+///   named "surface" (both fields would be called so).
 std::shared_ptr<StressProbe> MakeStressProbe(const FlexiblePart& part,
                                              const std::vector<ModalStressGroup>& file_groups,
-                                             const StressProbeSpec& spec);
+                                             const StressProbeSpec& spec,
+                                             const ModalStressSurface* file_surface = nullptr);
 
 }  // namespace emb::mbs

@@ -115,3 +115,51 @@ TEST(StressProbe, BadRequestsAreNamed) {
 
 }  // namespace
 }  // namespace emb::mbs
+
+namespace emb::mbs {
+namespace {
+
+// The whole-surface rows follow the kept modes and a change of basis like a group's; a
+// surface asked from a file without one, or with a group called "surface", is named.
+TEST(StressProbe, SurfaceRowsFollowKeptModesAndBasis) {
+  const ModalStressGroup rows = Group("surface", 7, 6, 3);
+  ModalStressSurface surface;
+  surface.nodes = rows.nodes;
+  surface.stresses = rows.stresses;
+  const FlexiblePart part = Part(6, {1, 2, 4});
+  StressProbeSpec spec;
+  spec.name = "s";
+  spec.surface = true;
+  const auto probe = MakeStressProbe(part, {}, spec, &surface);  // surface only: no channels
+  EXPECT_TRUE(probe->channels().empty());
+  ASSERT_TRUE(probe->has_surface());
+  const Eigen::Vector3d eta(0.5, -0.25, 1.5);
+  Eigen::VectorXd xi_file = Eigen::VectorXd::Zero(6);
+  for (int j = 0; j < 3; ++j) xi_file[part.kept_modes[j]] = eta[j];
+  const Eigen::VectorXd expected = surface.stresses * xi_file;
+  const Eigen::MatrixXd sigma = probe->SurfaceStresses(eta);
+  ASSERT_EQ(sigma.cols(), 7);
+  const double scale = expected.cwiseAbs().maxCoeff();
+  EXPECT_LE((Eigen::Map<const Eigen::VectorXd>(sigma.data(), sigma.size()) - expected)
+                .cwiseAbs()
+                .maxCoeff(),
+            kRoundOff * scale);
+  // eta = T zeta: the probe in zeta gives the same stresses.
+  Eigen::Matrix3d T;
+  T << 1.0, 0.5, 0.0, 0.0, 2.0, -1.0, 0.25, 0.0, 1.0;
+  const Eigen::Vector3d zeta = T.inverse() * eta;
+  const auto changed = std::dynamic_pointer_cast<const StressProbe>(probe->WithElasticBasis(1, T));
+  ASSERT_TRUE(changed);
+  EXPECT_LE((changed->SurfaceStresses(zeta) - sigma).cwiseAbs().maxCoeff(), kRoundOff * scale);
+  // Errors.
+  EXPECT_THROW(MakeStressProbe(part, {Group("a", 2, 6, 4)}, spec, nullptr), InputError);
+  try {
+    MakeStressProbe(part, {Group("surface", 2, 6, 5)}, spec, &surface);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("named 'surface'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace emb::mbs
