@@ -169,6 +169,7 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
     }
     cert.times.Add("reference modes", sw.seconds());
   }
+  ReturnFreedMemory();  // the reference factorisation and Krylov basis
 
   // 5. Static exactness.
   if (options.static_check) {
@@ -181,6 +182,7 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
     cert.static_loads = st.num_loads;
     cert.static_error = st.max_error;
     if (st.run) cert.times.Add("static check", static_sw.seconds());
+    ReturnFreedMemory();  // the pinned factorisation
     if (st.run && !(st.max_error <= CertificateLimits::kStatic))
       fail("the reduced body is not statically exact at its interfaces (error " +
            Sci(st.max_error) + ", limit " + Sci(CertificateLimits::kStatic) + ")");

@@ -200,13 +200,27 @@ EigenResult SolveLowestModes(const EigenSolveFn& solve, EigenSolverOptions optio
                              double fmax_hz, int available, const ProgressFn& progress) {
   const int limit = available - 1;  // Lanczos needs fewer than the problem size
   int nev = initial;
+  // What earlier, too small attempts cost: reported with the last one.
+  PhaseTimes spent, spent_block;
+  int solves = 0, block_steps = 0;
   for (;;) {
     options.num_modes = std::min(nev, limit);
     EigenResult r = solve(options, progress);
+    r.times.Merge(spent);
+    r.block_times.Merge(spent_block);
+    r.num_solves += solves;
+    r.block_steps += block_steps;
     if (!r.ok() || !std::isfinite(fmax_hz) ||
         FrequencyHz(r.eigenvalues[r.eigenvalues.size() - 1]) > fmax_hz || options.num_modes == limit)
       return r;
     nev = NextModeCount(r.eigenvalues, fmax_hz);
+    spent = r.times;
+    spent_block = r.block_times;
+    solves = r.num_solves;
+    block_steps = r.block_steps;
+    // The pairs found are locked in the next, larger solve (EigenSolverOptions::known_vectors).
+    options.known_vectors = std::move(r.vectors);
+    options.known_eigenvalues = std::move(r.eigenvalues);
   }
 }
 
@@ -287,6 +301,7 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   const int nq = 6 * nb;
   b.num_boundary = nq;
 
+  Stopwatch sw;
   const InterfacePartition part = PartitionByInterfaces(mesh, interfaces);
   const std::vector<int>& slaved = part.slaved;
   const std::vector<int>& interior = part.interior;
@@ -295,7 +310,6 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   const Eigen::MatrixXd& Q = part.Q;
   const SparseMatrix& C = part.C;
 
-  Stopwatch sw;
   const SparseMatrix KII = ExtractSubmatrix(sys.K, interior, interior);
   const SparseMatrix MII = ExtractSubmatrix(sys.M, interior, interior);
   const SparseMatrix KIS = ExtractSubmatrix(sys.K, interior, slaved);

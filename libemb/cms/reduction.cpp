@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "libemb/common/error.h"
+#include "libemb/common/timer.h"
 #include "libemb/fe/mass_properties.h"
 #include "libemb/linalg/extended_product.h"
 #include "libemb/linalg/sparse_dense_product.h"
@@ -97,6 +98,7 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   ReductionBasis basis =
       BuildReductionBasis(mesh, sys, interfaces, job.reduction, progress, inertial_loads);
   for (const auto& [name, s] : basis.times.phases) body.times.Add(name, s);
+  ReturnFreedMemory();  // the interior factorisation and the Krylov basis
   if (!basis.on_this_process) {  // an MPI rank that took part in the solves: rank 0 goes on
     body.on_this_process = false;
     return body;
@@ -115,7 +117,7 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   const int nb = basis.num_boundary, nr = static_cast<int>(basis.T.cols());
   const auto Tb = basis.T.leftCols(nb);
   const auto Tm = basis.T.rightCols(nr - nb);
-  const Eigen::MatrixXd KTb = MultiplyExtended(sys.K, Tb);
+  const Eigen::MatrixXd KTb = MultiplyExtended(sys.K, Tb, Symmetry::kSymmetric);
   const Eigen::MatrixXd KTm = MultiplySymmetric(sys.K, Tm);
   body.K.resize(nr, nr);
   body.K.topLeftCorner(nb, nb) = TransposeProductExtended(Tb, KTb);

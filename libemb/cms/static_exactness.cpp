@@ -45,8 +45,7 @@ StaticExactness CheckStaticExactness(const Mesh& mesh, const CoupledModel& model
   const Eigen::MatrixXd G = reader(held);
   Eigen::MatrixXd Dout(nq - 6, ny);
   for (size_t k = 0; k < loaded.size(); ++k) Dout.middleRows(6 * k, 6) = reader(loaded[k]);
-  const Eigen::MatrixXd F = Dout.transpose();  // unit loads, one column each
-  const int nl = static_cast<int>(F.cols());
+  const int nl = nq - 6;  // unit loads: the columns of Doutᵀ
 
   // Pinned factorisation and the support by multipliers (pinned_solver.h).
   std::vector<int> pins;
@@ -60,8 +59,19 @@ StaticExactness CheckStaticExactness(const Mesh& mesh, const CoupledModel& model
     out.note = "not run: " + solver.message();
     return out;
   }
-  const Eigen::MatrixXd Y = solver.Solve(F, Eigen::MatrixXd::Zero(6, nl));
-  const Eigen::MatrixXd d_full = Dout * Y;
+  // The loads in groups of kLoadsPerSolve: the solves and their refinement hold a few dense
+  // blocks of the model's size per group, not per load (at 293k DOF and 60 loads the whole
+  // set of them was ~1 GB of the reduction's peak memory).
+  constexpr int kLoadsPerSolve = 16;
+  Eigen::MatrixXd d_full(nl, nl);
+  if (stress.size() > 0) out.full_stresses.resize(stress.rows(), nl);
+  for (int first = 0; first < nl; first += kLoadsPerSolve) {
+    const int k = std::min(kLoadsPerSolve, nl - first);
+    const Eigen::MatrixXd Y =
+        solver.Solve(Dout.middleRows(first, k).transpose(), Eigen::MatrixXd::Zero(6, k));
+    d_full.middleCols(first, k) = Dout * Y;
+    if (stress.size() > 0) out.full_stresses.middleCols(first, k) = stress * (model.P * Y);
+  }
 
   // Reduced: hold the six coordinates of `held`, unit loads on the other interface coordinates.
   const int nr = static_cast<int>(Khat.rows());
@@ -77,7 +87,6 @@ StaticExactness CheckStaticExactness(const Mesh& mesh, const CoupledModel& model
   const Eigen::MatrixXd x = Kff.ldlt().solve(E);
   const Eigen::MatrixXd d_red = x.topRows(nl);
   if (stress.size() > 0) {
-    out.full_stresses = stress * (model.P * Y);
     out.reduced_z = Eigen::MatrixXd::Zero(nr, nl);
     for (size_t a = 0; a < keep.size(); ++a) out.reduced_z.row(keep[a]) = x.row(a);
   }

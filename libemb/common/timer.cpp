@@ -1,6 +1,11 @@
 #include "libemb/common/timer.h"
 
 #include <sys/resource.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+#include <algorithm>
 
 namespace emb {
 
@@ -15,6 +20,23 @@ double PhaseTimes::Total() const {
   double sum = 0.0;
   for (const auto& p : phases) sum += p.second;
   return sum;
+}
+
+void PhaseTimes::Merge(const PhaseTimes& other) {
+  for (const auto& [name, seconds] : other.phases) {
+    auto it = std::find_if(phases.begin(), phases.end(),
+                           [&](const auto& p) { return p.first == name; });
+    if (it == phases.end())
+      phases.emplace_back(name, seconds);
+    else
+      it->second += seconds;
+  }
+}
+
+void ReturnFreedMemory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
 }
 
 long long PeakResidentBytes() {

@@ -42,7 +42,7 @@ class SolidElement {
   /// ≤ 0 the cell is inverted and K_e must not be used.
   static double CalcStiffness(const NodeCoords& X, double lambda, double mu, Stiffness& K) {
     K.setZero();
-    return ForEachStiffnessPoint(X, [&](int, double c, const Gradient& G) {
+    const double min_det = ForEachStiffnessPoint(X, [&](int, double c, const Gradient& G) {
       const Eigen::Matrix<double, kNodes, kNodes> S = c * mu * (G.transpose() * G);
       for (int b = 0; b < kNodes; ++b)
         for (int a = 0; a < kNodes; ++a)
@@ -52,6 +52,11 @@ class SolidElement {
                   c * (lambda * G(i, a) * G(j, b) + mu * G(j, a) * G(i, b)) +
                   (i == j ? S(a, b) : 0.0);
     });
+    // Exactly symmetric (the lower triangle mirrored; the products above are not commuted
+    // alike for K_ab and K_ba): the assembled K then equals Kᵀ to the last bit, and a product
+    // may read its columns as rows without an error of ε‖K‖‖x‖ (extended_product.h).
+    K = K.template selfadjointView<Eigen::Lower>();
+    return min_det;
   }
 
   /// Cauchy stress σ_q [Pa] at the NumStressPoints() stiffness-rule points of the cell with
@@ -87,8 +92,11 @@ class SolidElement {
       const double det = (X * q.dN[p].transpose()).determinant();
       min_det = std::min(min_det, det);
       if (!(det > 0.0)) return min_det;
-      m.noalias() += (q.w[p] * det * rho) * (q.N[p] * q.N[p].transpose());
+      m.template selfadjointView<Eigen::Lower>().rankUpdate(q.N[p], q.w[p] * det * rho);
     }
+    // Exactly symmetric (the lower triangle mirrored): an FE mass matrix is then a ⊗ I₃ with a
+    // symmetric a to the last bit, which kronecker_matrix.h needs for its fast product.
+    m = m.template selfadjointView<Eigen::Lower>();
     return min_det;
   }
 

@@ -97,11 +97,12 @@ struct Deflation {
 };
 
 /// Runs the method. @throws InputError for impossible options (num_wanted < 1, a basis larger
-/// than the range, block size < 1). Cost per step: one block solve S and one block product B
+/// than the range, block size < 1). `known` is copied into the basis and released at once
+/// (move it in to hold it only once). Cost per step: one block solve S and one block product B
 /// of b columns, O(n m b) for the reorthogonalisation; per restart O(n m²).
 BlockKrylovResult SolveBlockKrylovSchur(const BlockOperators& op, const BlockKrylovOptions& options,
                                         const ProgressFn& progress = {},
-                                        const Deflation& known = {});
+                                        Deflation known = {});
 
 /// A readable name of a status ("successful", ...).
 const char* Name(BlockKrylovStatus status);

@@ -328,6 +328,28 @@ Deflation FindNullSpace(const ShiftInvertSolver& solver, const BlockOperators& o
   }
 }
 
+// The pairs of o.known_vectors as a deflation (θ = 1/(λ − σ)), B-orthonormalised again in
+// double: none if there are none, if they do not fit the wanted count with a block to spare, if
+// one lies at or below σ, or if all of them lie in the null space of K (then the null space
+// may be larger than they are, and FindNullSpace looks for all of it).
+Deflation KnownPairs(const ShiftInvertSolver& solver, const BlockOperators& op,
+                     const EigenSolverOptions& o, double sigma) {
+  const Eigen::MatrixXd& Z = o.known_vectors;
+  const Eigen::VectorXd& lambda = o.known_eigenvalues;
+  const int r = static_cast<int>(Z.cols());
+  Deflation d;
+  if (r == 0 || r >= o.num_modes) return d;
+  EMB_THROW_IF(Z.rows() != op.rows || lambda.size() != r,
+               "known eigenpairs: expected " << op.rows << " x " << lambda.size()
+                                             << " vectors, got " << Z.rows() << " x " << r);
+  const double null_level = 1e-10 * NormOne(solver.K()) / std::max(NormOne(solver.M()), 1e-300);
+  if (!((lambda.array() - sigma).minCoeff() > 0.0) || !(lambda.maxCoeff() > null_level)) return d;
+  d.vectors = Z;
+  OrthonormalizeInner(op, d.vectors, d.inner_vectors);
+  d.theta = (lambda.array() - sigma).inverse().matrix();
+  return d;
+}
+
 void SolveBlock(ShiftInvertSolver& shift_solver, const EigenSolverOptions& o,
                 const ProgressFn& progress, EigenResult& r) {
   const SparseMatrix& M = shift_solver.M();
@@ -358,11 +380,13 @@ void SolveBlock(ShiftInvertSolver& shift_solver, const EigenSolverOptions& o,
   bo.max_restarts = o.max_restarts;
   Stopwatch sw;
   int null_solves = 0;
-  const Deflation null_space =
-      r.shift < 0.0 ? FindNullSpace(shift_solver, op, r.shift, o.num_modes - 1, null_solves)
-                    : Deflation{};
+  Deflation locked = KnownPairs(shift_solver, op, o, r.shift);
+  const int num_known = static_cast<int>(locked.vectors.cols());
+  if (num_known == 0 && r.shift < 0.0)
+    locked = FindNullSpace(shift_solver, op, r.shift, o.num_modes - 1, null_solves);
   const double null_seconds = sw.seconds();
-  const BlockKrylovResult b = SolveBlockKrylovSchur(op, bo, progress, null_space);
+  const int num_locked = static_cast<int>(locked.vectors.cols());
+  const BlockKrylovResult b = SolveBlockKrylovSchur(op, bo, progress, std::move(locked));
   r.times.Add("eigen-solve", sw.seconds());
   r.block_times.Add("null space", null_seconds);
   r.block_times.Add("solves", b.seconds_solve);
@@ -371,7 +395,8 @@ void SolveBlock(ShiftInvertSolver& shift_solver, const EigenSolverOptions& o,
                     b.seconds_total - b.seconds_solve - b.seconds_inner);
   r.iterations = b.restarts;
   r.num_solves = b.vectors_solved + null_solves;
-  r.num_null = static_cast<int>(null_space.vectors.cols());
+  r.num_null = num_known > 0 ? 0 : num_locked;
+  r.num_known = num_known;
   r.block_size = b.block_size;
   r.block_steps = b.block_steps;
   r.num_converged = b.num_converged;

@@ -9,7 +9,7 @@
 /// refinement converges to the correctly rounded solution while cond(A)·ε < 1 (Wilkinson's
 /// mixed-precision refinement). The same holds for products such as Tᵀ(K T) whose exact values
 /// are small next to ‖K‖‖T‖ (the stiffness of rigid-like motions).
-/// Cost: one pass over A per column of X, 2–3× a double sparse product.
+/// Cost: one pass over A per 8 columns of X, and a transposed copy of A unless it is symmetric.
 
 #include <Eigen/Core>
 
@@ -17,12 +17,16 @@
 
 namespace emb {
 
+/// Whether A = Aᵀ (both triangles stored), which saves the transposed copy of A.
+enum class Symmetry { kGeneral, kSymmetric };
+
 /// A X with extended-precision accumulation.
-Eigen::MatrixXd MultiplyExtended(const SparseMatrix& A, const Eigen::MatrixXd& X);
+Eigen::MatrixXd MultiplyExtended(const SparseMatrix& A, const Eigen::MatrixXd& X,
+                                 Symmetry symmetry = Symmetry::kGeneral);
 
 /// B − A X with extended-precision accumulation.
 Eigen::MatrixXd ResidualExtended(const SparseMatrix& A, const Eigen::MatrixXd& X,
-                                 const Eigen::MatrixXd& B);
+                                 const Eigen::MatrixXd& B, Symmetry symmetry = Symmetry::kGeneral);
 
 /// Aᵀ B for dense A, B of the same height, with extended-precision accumulation.
 /// Cost: rows · cols(A) · cols(B) long double multiply-adds.

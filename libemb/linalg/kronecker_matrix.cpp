@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "libemb/common/parallel.h"
+#include "libemb/linalg/sparse_dense_product.h"
 
 namespace emb {
 
@@ -75,32 +75,9 @@ void KroneckerIdentityMatrix::Multiply(const Eigen::MatrixXd& X, Eigen::MatrixXd
     for (Eigen::Index j = 0; j < X.cols(); ++j) Multiply(X.col(j).data(), Y.col(j).data());
     return;
   }
-  // On row-major copies the k rows of a node are k·cols contiguous doubles, and node b's rows
-  // are Σ_a a_ba (node a's rows): one contiguous axpy per entry of a. Column by column the
-  // same product gathers 3 scattered doubles per entry and column, which misses the cache once
-  // a block outgrows it (a 766k-DOF eigen-solve on a loaded machine spent 46 s in them; no gain measured at 138k). The
-  // nodes are cut into a fixed number of ranges that run concurrently; each node is summed by
-  // one task in storage order, so the numbers do not depend on the thread count.
-  using RowMajorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  const RowMajorMatrix Xr = X;
-  RowMajorMatrix Yr(X.rows(), X.cols());
-  const Eigen::Index width = 3 * X.cols();
-  const int nb = static_cast<int>(a_.cols());
-  const int* outer = a_.outerIndexPtr();
-  const int* inner = a_.innerIndexPtr();
-  const double* val = a_.valuePtr();
-  constexpr int kRanges = 16;
-  ParallelFor(kRanges, [&](int c) {
-    const int first = static_cast<int>(static_cast<long long>(nb) * c / kRanges);
-    const int last = static_cast<int>(static_cast<long long>(nb) * (c + 1) / kRanges);
-    for (int b = first; b < last; ++b) {
-      Eigen::Map<Eigen::RowVectorXd> y(Yr.data() + b * width, width);
-      y.setZero();
-      for (int p = outer[b]; p < outer[b + 1]; ++p)
-        y.noalias() += val[p] * Eigen::Map<const Eigen::RowVectorXd>(Xr.data() + inner[p] * width, width);
-    }
-  });
-  Y = Yr;
+  // Node b's three rows are Σ_a a_ba (node a's rows): on row-major panels one contiguous
+  // axpy per entry of a (sparse_dense_product.h).
+  MultiplySymmetric(a_, 3, X, Y);
 }
 
 }  // namespace emb

@@ -23,6 +23,9 @@ class KroneckerIdentityMatrix {
 
   const SparseMatrix& scalar() const { return a_; }
   int block() const { return k_; }
+  /// Whether a = aᵀ to the last bit: only then do block products take the fast row-major
+  /// path (sparse_dense_product.h); otherwise they scatter column by column (~4× slower).
+  bool symmetric() const { return symmetric_; }
 
  private:
   KroneckerIdentityMatrix(SparseMatrix a, int k, bool symmetric)

@@ -52,7 +52,7 @@ Eigen::MatrixXd RefineConstrainedSolve(const SparseMatrix& K, const SparseMatrix
   int it = 0;
   bool converged = false;
   while (!converged && it < kMaxStaticIterations) {
-    const Eigen::MatrixXd r = ResidualExtended(K, X, B);
+    const Eigen::MatrixXd r = ResidualExtended(K, X, B, Symmetry::kSymmetric);
     const Eigen::MatrixXd rc = C.rows() > 0 ? ResidualExtended(C, X, Qk) : Eigen::MatrixXd(0, k);
     const Eigen::MatrixXd delta = solve(r, rc);
     X += delta;

@@ -80,7 +80,7 @@ Eigen::MatrixXd PinnedConstrainedSolver::Solve(const Eigen::MatrixXd& B, const E
   const SparseMatrix Ct = C_.transpose();
   int step = 0;
   while (step < kRefinementSteps) {
-    const Eigen::MatrixXd r1 = ResidualExtended(K_, X, B - Ct * mu);
+    const Eigen::MatrixXd r1 = ResidualExtended(K_, X, B - Ct * mu, Symmetry::kSymmetric);
     const Eigen::MatrixXd r2 = ResidualExtended(C_, X, Q);
     Eigen::MatrixXd dX, dmu;
     SolveOnce(r1, r2, dX, dmu);

@@ -63,6 +63,14 @@ class SparseCholesky::Impl {
     common_.final_ll = backend == CholeskyBackend::kCholmodSupernodal ? 1 : 0;
     common_.print = 0;
     common_.error_handler = nullptr;
+    // Supernode amalgamation: fundamental supernodes of fewer than 32 columns are always
+    // merged with their parent (CHOLMOD's default: 4), larger ones while the explicit zeros
+    // stay below CHOLMOD's default fractions. Wider supernodes give the BLAS bigger blocks:
+    // the numeric factorisation of the 138k- and 293k-DOF Tet10 crankshafts ran ~20 % and
+    // ~15 % faster for 3 % and 2.5 % more memory (measured while choosing these).
+    common_.nrelax[0] = 32;
+    common_.nrelax[1] = 64;
+    common_.nrelax[2] = 128;
   }
   ~Impl() {
     if (factor_) cholmod_free_factor(&factor_, &common_);

@@ -118,6 +118,38 @@ TEST(EigenSolver, NonConvergenceSaysHowManyConverged) {
       << r.message;
 }
 
+TEST(EigenSolver, KnownPairsAreLockedAndOnlyTheRestIsSought) {
+  // A free beam: 6 rigid modes, then exactly degenerate bending pairs.
+  const SystemMatrices sys = Beam(2);
+  EigenSolverOptions o;
+  o.shift = -1e2;
+  o.method = EigenMethod::kBlock;
+  o.num_modes = 12;
+  const EigenResult first = SolveGeneralizedEigen(sys.K, sys.M, o);
+  ASSERT_TRUE(first.ok()) << first.message;
+  o.num_modes = 30;
+  const EigenResult direct = SolveGeneralizedEigen(sys.K, sys.M, o);
+  ASSERT_TRUE(direct.ok()) << direct.message;
+  o.known_vectors = first.vectors;
+  o.known_eigenvalues = first.eigenvalues;
+  const EigenResult warm = SolveGeneralizedEigen(sys.K, sys.M, o);
+  ASSERT_TRUE(warm.ok()) << warm.message;  // every pair, the known ones too, checked again
+  EXPECT_EQ(warm.num_known, 12);
+  EXPECT_EQ(direct.num_known, 0);
+  const double scale = direct.eigenvalues.cwiseAbs().maxCoeff();
+  for (int i = 0; i < 30; ++i)
+    EXPECT_NEAR(warm.eigenvalues[i], direct.eigenvalues[i], kAgreement * scale) << "mode " << i;
+  // The known pairs need no solves (nor does the null space, among them).
+  EXPECT_LT(warm.num_solves, direct.num_solves);
+  // Known pairs that are all rigid (the null space may be larger): ignored, searched afresh.
+  o.known_vectors = first.vectors.leftCols(6);
+  o.known_eigenvalues = first.eigenvalues.head(6);
+  const EigenResult nulls = SolveGeneralizedEigen(sys.K, sys.M, o);
+  ASSERT_TRUE(nulls.ok()) << nulls.message;
+  EXPECT_EQ(nulls.num_known, 0);
+  EXPECT_EQ(nulls.num_null, 6);
+}
+
 TEST(EigenSolver, MoreModesThanUnknownsIsAnInputError) {
   const SystemMatrices sys =
       AssembleSystem(MakeBoxMesh({0.1, 0.1, 0.1}, {1, 1, 1}, CellType::kHex8), IsotropicMaterial{});

@@ -24,6 +24,9 @@ TEST(KroneckerIdentityMatrix, MassMatricesAreDetectedAndAppliedExactly) {
   for (const SparseMatrix& M : {sys.M, ExtractSubmatrix(sys.M, free, free)}) {
     const auto kron = KroneckerIdentityMatrix::Detect(M, 3);
     ASSERT_TRUE(kron.has_value());
+    // The element mass is mirrored from one triangle, so the assembled factor is symmetric to
+    // the last bit and block products take the row-major path.
+    EXPECT_TRUE(kron->symmetric());
     EXPECT_EQ(kron->scalar().rows() * 3, M.rows());
     EXPECT_EQ(kron->scalar().nonZeros() * 9, M.nonZeros());
     const Eigen::VectorXd x = Eigen::VectorXd::Random(M.rows());

@@ -7,6 +7,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/fe/assembly.h"
+#include "libemb/linalg/kronecker_matrix.h"
 #include "libemb/mesh/box_mesh.h"
 
 namespace emb {
@@ -28,6 +29,26 @@ TEST(MultiplySymmetric, EqualsTheSparseProduct) {
     ASSERT_EQ(Y.cols(), reference.cols());
     EXPECT_LE((Y - reference).cwiseAbs().maxCoeff(), kRoundOff * scale.maxCoeff());
   }
+}
+
+TEST(MultiplySymmetric, EveryPanelWidthAndNodeBlocksEqualTheSparseProduct) {
+  const Mesh mesh = MakeBoxMesh({0.3, 0.1, 0.1}, {4, 2, 2}, CellType::kTet10);
+  const SystemMatrices sys = AssembleSystem(mesh, IsotropicMaterial{});
+  const auto kron = KroneckerIdentityMatrix::Detect(sys.M, 3);
+  ASSERT_TRUE(kron.has_value());
+  // 63 columns: panels of 32, 16, 8, 4, 2 and 1 (of 16, ... with three rows per node).
+  const Eigen::MatrixXd X = Eigen::MatrixXd::Random(sys.num_dofs(), 63);
+  for (const SparseMatrix* A : {&sys.K, &sys.M}) {
+    const Eigen::MatrixXd scale = A->cwiseAbs() * X.cwiseAbs();
+    EXPECT_LE((MultiplySymmetric(*A, X) - (*A) * X).cwiseAbs().maxCoeff(),
+              kRoundOff * scale.maxCoeff());
+  }
+  Eigen::MatrixXd Y;
+  MultiplySymmetric(kron->scalar(), 3, X, Y);
+  const Eigen::MatrixXd scale = sys.M.cwiseAbs() * X.cwiseAbs();
+  EXPECT_LE((Y - sys.M * X).cwiseAbs().maxCoeff(), kRoundOff * scale.maxCoeff());
+  EXPECT_THROW(MultiplySymmetric(kron->scalar(), 2, X, Y), InputError);
+  EXPECT_THROW(MultiplySymmetric(kron->scalar(), 3, X.topRows(9), Y), InputError);
 }
 
 TEST(MultiplySymmetric, RefusesMismatchedShapes) {

@@ -35,7 +35,7 @@ struct ModesCommand {
   SupportOptions supports;
   int subspace{0};
   int block_size{0};
-  double tolerance{1e-10};
+  double tolerance{1e-9};  // EigenSolverOptions::tolerance: why modes, unlike reduce, use 1e-9
   int max_restarts{1000};
   bool sturm_check{false};
   std::string backend{"cholmod"};
@@ -50,6 +50,7 @@ struct ModesCommand {
   }
 
   void Run() const {
+    const Stopwatch elapsed;  // the whole command, the steps between the phases too
     part.material.Validate();
     EMB_THROW_IF(num_modes < 1, "--modes: expected at least 1, got " << num_modes);
     CheckSolverOptions(tolerance, subspace, max_restarts, shift_hz);
@@ -192,6 +193,7 @@ struct ModesCommand {
       WriteModesFile(h5_path, xdmf_path, mesh, part.material, modes, prov);
       s.Add("output", "written", h5_path + (xdmf_path.empty() ? "" : " and " + xdmf_path));
     }
+    s.Add("seconds_elapsed", "time elapsed, whole command [s]", elapsed.seconds());
     if (out.json) {
       PrintJson({{"summary", s.ToJson()}, {"modes", table.ToJson()}});
     } else {
@@ -234,7 +236,7 @@ void RegisterModesCommand(CLI::App& app) {
                   "Right-hand sides per solve of the block method (0 = automatic: 8 for up to "
                   "12 modes, else 16)")
       ->capture_default_str();
-  cmd->add_option("--tol", st->tolerance, "Lanczos relative tolerance")->capture_default_str();
+  cmd->add_option("--tol", st->tolerance, "Relative tolerance on the Ritz residuals (block Krylov-Schur and Lanczos); the pairs are then checked against their backward errors")->capture_default_str();
   cmd->add_option("--max-restarts", st->max_restarts, "Spectra's Lanczos restart limit")
       ->capture_default_str();
   cmd->add_flag("--sturm-check", st->sturm_check,

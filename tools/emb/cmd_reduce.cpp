@@ -123,6 +123,7 @@ struct ReduceCommand {
   // The reduction; with `distributed`, the constraint modes and fixed-interface modes are
   // solved on every MPI rank and the rest by rank 0.
   void Reduce(SlepcBackend* distributed) const {
+    const Stopwatch elapsed;  // the whole command, the steps between the phases too
     const bool root = !distributed || distributed->is_root();
     EMB_THROW_IF(distributed && free_free,
                  "--free-free: not available with --backend slepc (it distributes the "
@@ -297,6 +298,7 @@ struct ReduceCommand {
       s.Add("seconds_write", "time write [s]", ws.seconds());
       s.Add("output", "written", h5_path + (xdmf.empty() ? "" : " and " + xdmf));
     }
+    s.Add("seconds_elapsed", "time elapsed, whole command [s]", elapsed.seconds());
     if (out.json) {
       PrintJson({{"summary", s.ToJson()},
                  {"interfaces", itf_table.ToJson()},
@@ -359,7 +361,7 @@ void RegisterReduceCommand(CLI::App& app) {
                   "(default: --band/--fmax, or half the highest fixed-interface mode kept)");
   cmd->add_option("--shift-hz", st->shift_hz, "Lanczos shift [Hz] (negative: lowest modes)")
       ->capture_default_str();
-  cmd->add_option("--tol", st->tolerance, "Lanczos relative tolerance")->capture_default_str();
+  cmd->add_option("--tol", st->tolerance, "Relative tolerance on the Ritz residuals (block Krylov-Schur and Lanczos); the pairs are then checked against their backward errors")->capture_default_str();
   cmd->add_option("--ncv", st->subspace, "Lanczos subspace size (0 = automatic)")->capture_default_str();
   cmd->add_option("--max-restarts", st->max_restarts, "Spectra's Lanczos restart limit")
       ->capture_default_str();
