@@ -118,6 +118,7 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
   const CoupledModel model =
       compare || statics ? BuildCoupledModel(mesh, sys, basis.interfaces) : CoupledModel{};
   if (compare || statics) cert.times.Add("coupled model", coupled_sw.seconds());
+  ReturnFreedMemory();  // the temporaries of the coupled model and of the invariants
   if (compare) {
     Stopwatch sw;
     int in_band = 0;

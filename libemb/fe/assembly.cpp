@@ -177,6 +177,10 @@ SystemMatrices AssembleSystem(const Mesh& mesh, const IsotropicMaterial& materia
     });
   }
   sys.mass = material.density * sys.volume;
+  // M = m ⊗ I₃ was added into K's 3×3-block pattern: its off-diagonal block entries (two
+  // thirds) are zeros, dropped so that M and its copies (submatrices, coupled models) hold a
+  // third of K's entries (~190 MB less per copy at 293k DOF).
+  sys.M.prune([](Eigen::Index, Eigen::Index, double v) { return v != 0.0; });
   ReportProgress(progress, "assembly", 1.0);
   return sys;
 }

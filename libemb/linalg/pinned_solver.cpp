@@ -29,10 +29,13 @@ PinnedConstrainedSolver::PinnedConstrainedSolver(const SparseMatrix& K, const Ei
   free_ = Complement(pins, n);
   std::vector<int> all(m);
   for (int i = 0; i < m; ++i) all[i] = i;
-  Kff_ = ExtractSubmatrix(K, free_, free_);
-  Kff_.makeCompressed();
   Cf_ = ExtractSubmatrix(C, all, free_);
-  const FactorInfo fi = chol_.Factorize(Kff_);
+  FactorInfo fi;
+  {  // K_ff only for the factorisation: the refinement's residuals use K itself
+    SparseMatrix Kff = ExtractSubmatrix(K, free_, free_);
+    Kff.makeCompressed();
+    fi = chol_.Factorize(Kff);
+  }
   if (!fi.ok()) {
     message_ = "the pinned stiffness could not be factorised: " + fi.message;
     return;

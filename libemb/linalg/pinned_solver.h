@@ -62,7 +62,7 @@ class PinnedConstrainedSolver {
   const Eigen::MatrixXd& R_;
   const SparseMatrix& C_;
   std::vector<int> free_;
-  SparseMatrix Kff_, Cf_;
+  SparseMatrix Cf_;
   SparseCholesky chol_;
   Eigen::MatrixXd Y_;  // K_ff⁻¹ C_fᵀ
   Eigen::PartialPivLU<Eigen::MatrixXd> small_;
