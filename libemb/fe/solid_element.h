@@ -77,9 +77,11 @@ class SolidElement {
   static double CalcGeometricStiffness(const NodeCoords& X, const Eigen::Matrix3d* sigma,
                                        ScalarMass& s) {
     s.setZero();
-    return ForEachStiffnessPoint(X, [&](int p, double dv, const Gradient& G) {
+    const double min_det = ForEachStiffnessPoint(X, [&](int p, double dv, const Gradient& G) {
       s.noalias() += dv * (G.transpose() * (sigma[p] * G));
     });
+    s = s.template selfadjointView<Eigen::Lower>();  // exactly symmetric, as CalcStiffness
+    return min_det;
   }
 
   /// Scalar consistent mass m_ab (kNodes × kNodes) with density ρ [kg/m³]; the 3-D mass is
