@@ -62,12 +62,7 @@ void AccumulatePanel(const SparseMatrix& At, const RowMajorMatrix& X, const RowM
   });
 }
 
-// out = sign·(A X) + B (B may be empty), with a long double accumulator per entry. The rows of
-// A (the columns of a transposed copy) are read against row-major panels of 8 columns of X, so
-// A streams once per panel and each entry touches contiguous doubles; column by column, the
-// products of the constraint modes and the static checks spent more time than all else in a
-// reduction, streaming K once per column (measured with perf while writing this).
-// Column by column instead, scattering the columns of A whose x_j is not zero: for an X with
+// out = sign·(A X) + B column by column, scattering the columns of A whose x_j is not zero: for an X with
 // few nonzero rows (e.g. interface motions spread onto their nodes) only those columns are read.
 Eigen::MatrixXd AccumulateColumns(const SparseMatrix& A, const Eigen::MatrixXd& X,
                                   const Eigen::MatrixXd* B, long double sign) {
@@ -89,6 +84,12 @@ Eigen::MatrixXd AccumulateColumns(const SparseMatrix& A, const Eigen::MatrixXd& 
   return out;
 }
 
+// out = sign·(A X) + B (B may be empty), with a long double accumulator per entry. The rows of
+// A (the columns of Aᵀ: A itself if symmetric, else a transposed copy) are read against
+// row-major panels of 8 columns of X, so A streams once per panel and each entry touches
+// contiguous doubles; column by column, the products of the constraint modes and the static
+// checks spent more time than all else in a reduction, streaming K once per column (measured
+// with perf while writing this).
 Eigen::MatrixXd Accumulate(const SparseMatrix& A, const Eigen::MatrixXd& X,
                            const Eigen::MatrixXd* B, long double sign, Symmetry symmetry) {
   EMB_CHECK(A.cols() == X.rows());

@@ -1,8 +1,5 @@
 #include "libemb/linalg/sparse_dense_product.h"
 
-#include <algorithm>
-#include <vector>
-
 #include "libemb/common/error.h"
 #include "libemb/common/parallel.h"
 

@@ -9,10 +9,11 @@
 /// outgrows it (the checks of 30 modes at 138k DOF: 0.59 s before, 0.36 s after, in the two
 /// committed versions of benchmarks/results/ccx_vs_emb.json). Here row i
 /// of A is read as column i (A = Aᵀ), X and Y are held row-major in panels of 32 (16 for
-/// three rows per node), 16, 8, 4, 2 or 1 columns, so each nonzero touches a fixed number of contiguous doubles summed in
-/// registers, and a fixed split of the rows runs concurrently (parallel.h): every row is
-/// summed by one task in the order of A's storage, so the result does not depend on the
-/// thread count.
+/// three rows per node), 16, 8, 4, 2 or 1 columns, so each nonzero touches a fixed number of
+/// contiguous doubles summed in registers, and a fixed split of the rows runs concurrently
+/// (parallel.h): every row is summed by one task in the order of A's storage, so the result
+/// does not depend on the thread count. A must equal Aᵀ to the last bit for A X to be exact
+/// (the FE element matrices are built so).
 
 #include "libemb/linalg/sparse_types.h"
 
