@@ -23,13 +23,13 @@ double PhaseTimes::Total() const {
 }
 
 void PhaseTimes::Merge(const PhaseTimes& other) {
-  for (const auto& [name, seconds] : other.phases) {
+  for (const auto& phase : other.phases) {  // (clang 14 cannot capture structured bindings)
     auto it = std::find_if(phases.begin(), phases.end(),
-                           [&](const auto& p) { return p.first == name; });
+                           [&](const auto& p) { return p.first == phase.first; });
     if (it == phases.end())
-      phases.emplace_back(name, seconds);
+      phases.push_back(phase);
     else
-      it->second += seconds;
+      it->second += phase.second;
   }
 }
 
