@@ -11,6 +11,7 @@
 #include "libemb/cms/static_exactness.h"
 #include "libemb/common/error.h"
 #include "libemb/fe/modal_analysis.h"
+#include "libemb/fe/rigid_body_modes.h"
 #include "libemb/linalg/sparse_dense_product.h"
 
 namespace emb {
@@ -127,6 +128,9 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
     // the highest passes fmax.
     EigenSolverOptions so = options.solver;
     so.shift = LambdaFromHz(-1.0);
+    // A part in one piece: its six rigid motions are all of the null space, locked from the
+    // start instead of searched for.
+    if (ConnectedPieces(mesh).count == 1) so.null_space = model.rigid;
     const SparseMatrix none(0, model.size());
     ShiftInvertSolver solver(model.K, model.M, none, so.backend);
     const EigenResult ref =

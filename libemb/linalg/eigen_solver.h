@@ -57,6 +57,17 @@ struct EigenSolverOptions {
   /// unless they include a pair above the null space (then they hold all of it).
   Eigen::MatrixXd known_vectors;
   Eigen::VectorXd known_eigenvalues;
+  /// All of the null space of K (n × r), when the caller knows it — a part's rigid motions
+  /// (PieceRigidBodyModes): with a shift below the spectrum the block method locks it from
+  /// the start instead of searching for it by inverse iteration (two block solves). Used only
+  /// without constraints, for r < num_modes, and if K annihilates it to round-off; else the
+  /// null space is searched as without it. If it is not all of the null space, the rest lies
+  /// in the Krylov space and caps the accuracy the checks measure.
+  Eigen::MatrixXd null_space;
+  /// A fill-reducing ordering of the unknowns for the factorisation of K − σM (row k of the
+  /// permuted matrix is row ordering[k]), e.g. from the mesh, computed while K and M were
+  /// assembled. Empty = METIS on the pattern of K − σM.
+  std::vector<int> ordering;
 };
 
 enum class EigenStatus {
@@ -83,6 +94,7 @@ struct EigenResult {
   int block_size{1};                 ///< right-hand sides per solve (1: single-vector Lanczos)
   int block_steps{0};                ///< block solves (= num_solves for single vectors)
   int num_null{0};                   ///< null vectors of K found and deflated first (block)
+  bool null_space_given{false};      ///< ... taken from options.null_space, not searched for
   int num_known{0};                  ///< known pairs locked from the start (block, options)
   int sturm_count{-1};               ///< eigenvalues below σ_c by inertia, -1 if not checked
   double shift{0.0};

@@ -52,6 +52,10 @@ class ShiftInvertSolver {
   /// The pinned solver (pinned mode, after Prepare), else nullptr.
   const PinnedConstrainedSolver* pinned() const { return pinned_.get(); }
 
+  /// The fill-reducing ordering for the factorisation of K − σM (SparseCholesky::SetOrdering);
+  /// empty = METIS on its pattern.
+  void SetOrdering(std::vector<int> perm) { chol_.SetOrdering(std::move(perm)); }
+
   /// Factorises K − σM and, with constraints, forms Y and S. Returns false (see message())
   /// if the factorisation failed, is inaccurate (backward error of a test solve > 1e-10) or if
   /// S is not positive definite (dependent constraints, or an indefinite A).
