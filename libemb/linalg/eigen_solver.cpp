@@ -15,6 +15,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
+#include "libemb/linalg/blas.h"
 #include "libemb/linalg/block_krylov_schur.h"
 #include "libemb/linalg/dense_eigen.h"
 #include "libemb/linalg/kronecker_matrix.h"
@@ -115,21 +116,22 @@ void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, const Sp
   Eigen::MatrixXd& Phi = r.vectors;
   Eigen::MatrixXd KPhi = MultiplySymmetric(K, Phi);
   Eigen::MatrixXd MPhi = MultiplySymmetric(M, Phi);
-  const DenseEigenpairs ritz =
-      SolveDenseEigenpairs(Phi.transpose() * KPhi, Phi.transpose() * MPhi, /*check=*/false);
-  if (ritz.ok) {  // else keep Spectra's pairs; the checks will judge
-    const Eigen::MatrixXd& Q = ritz.vectors;
-    Phi = Phi * Q;
-    KPhi = KPhi * Q;
-    MPhi = MPhi * Q;
+  const DenseEigenpairs ritz = SolveDenseEigenpairs(TallTransposeTimes(Phi, KPhi),
+                                                    TallTransposeTimes(Phi, MPhi), /*check=*/false);
+  // The rotation of Φ: the Ritz vectors (else Spectra's pairs are kept, and the checks judge),
+  // then canonical signs and degenerate rotations (issue 12); K Φ and M Φ follow in one product.
+  Eigen::MatrixXd rotation = Eigen::MatrixXd::Identity(Phi.cols(), Phi.cols()), T;
+  if (ritz.ok) {
+    TallTimes(Phi, ritz.vectors, T);
+    Phi.swap(T);
     r.eigenvalues = ritz.eigenvalues;
+    rotation = ritz.vectors;
   }
-  // Signs and degenerate rotations canonical (issue 12); K Φ and M Φ follow.
-  {
-    const Eigen::MatrixXd R = CanonicalizeEigenvectors(Phi, r.eigenvalues);
-    KPhi = (KPhi * R).eval();
-    MPhi = (MPhi * R).eval();
-  }
+  rotation = (rotation * CanonicalizeEigenvectors(Phi, r.eigenvalues)).eval();
+  TallTimes(KPhi, rotation, T);
+  KPhi.swap(T);
+  TallTimes(MPhi, rotation, T);
+  MPhi.swap(T);
   Eigen::LLT<Eigen::MatrixXd> cct;
   ResidualProjection outside_constraints;
   if (C.rows() > 0) {
@@ -492,8 +494,7 @@ EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
 
 int CountEigenvaluesBelow(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
                           double sigma) {
-  SparseMatrix A = K - sigma * M;
-  A.makeCompressed();
+  const SparseMatrix A = ShiftedMatrix(K, M, sigma);
   SparseCholesky ldlt(CholeskyBackend::kCholmodLDLT, 3);
   const FactorInfo fi = ldlt.Factorize(A);
   if (!fi.ok()) return -1;

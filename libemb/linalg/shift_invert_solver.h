@@ -35,6 +35,10 @@
 
 namespace emb {
 
+/// A = K − σM, compressed, with K's structure when M's entries all lie in K's pattern (FE
+/// matrices: M's pattern is K's), formed column-concurrently; else Eigen's general sum.
+SparseMatrix ShiftedMatrix(const SparseMatrix& K, const SparseMatrix& M, double sigma);
+
 class ShiftInvertSolver {
  public:
   /// K, M: n × n symmetric (full storage), C: m × n (m may be 0). The matrices are referenced,
