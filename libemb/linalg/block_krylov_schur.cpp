@@ -264,10 +264,11 @@ BlockKrylovResult SolveBlockKrylovSchur(const BlockOperators& op, const BlockKry
                "block Krylov-Schur: expected a tolerance in (0, 1), got " << o.tolerance);
   // The block shrinks on small problems so that the basis plus one block fits the range.
   int b = std::min(o.block_size, std::max(1, (range - nev) / 3));
-  // Basis: the wanted pairs, room for a few blocks beyond them (what converges them without
-  // restarting on the crankshaft), at most the range less one block. (Six blocks took 8–10 %
-  // fewer solves on the crankshaft but 150 MB more memory at 293k DOF, where memory binds.)
-  int m = o.max_basis > 0 ? o.max_basis : std::max(2 * nev, nev + 4 * b);
+  // Basis: the wanted pairs and room for a few blocks beyond them, at most the range less one
+  // block (spare_blocks: see EigenSolverOptions::spare_blocks).
+  EMB_THROW_IF(o.spare_blocks < 2, "block Krylov-Schur: expected at least 2 spare blocks, got "
+                                       << o.spare_blocks);
+  int m = o.max_basis > 0 ? o.max_basis : std::max(2 * nev, nev + o.spare_blocks * b);
   m = std::min(m, range - b);
   EMB_THROW_IF(m < nev + b, "block Krylov-Schur: " << nev << " wanted eigenvalues and blocks of "
                                                    << b << " do not fit a space of dimension "

@@ -408,6 +408,7 @@ void SolveBlock(ShiftInvertSolver& shift_solver, const EigenSolverOptions& o,
   bo.block_size = o.block_size > 0 ? o.block_size : AutomaticBlockSize(o.num_modes);
   // --ncv is a minimum here: the block basis needs the wanted pairs and two blocks.
   bo.max_basis = o.subspace > 0 ? std::max(o.subspace, o.num_modes + 2 * bo.block_size) : 0;
+  bo.spare_blocks = o.spare_blocks;
   bo.tolerance = o.tolerance;
   bo.max_restarts = o.max_restarts;
   Stopwatch sw;

@@ -92,6 +92,7 @@ struct ModesCommand {
     mo.num_modes = num_modes;
     mo.shift_hz = shift_hz;
     mo.solver.subspace = subspace;
+    mo.solver.spare_blocks = 6;  // fewer solves and restarts; memory does not bind here
     mo.solver.tolerance = tolerance;
     mo.solver.max_restarts = max_restarts;
     mo.solver.sturm_check = sturm_check;
@@ -254,7 +255,8 @@ void RegisterModesCommand(CLI::App& app) {
                   "single-vector shift-invert Lanczos), dense")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "block", "lanczos", "dense"}));
-  cmd->add_option("--ncv", st->subspace, "Krylov basis size (0 = automatic)")
+  cmd->add_option("--ncv", st->subspace,
+                  "Krylov basis size (0 = automatic: block method max(2 modes, modes + 6 blocks))")
       ->capture_default_str();
   cmd->add_option("--block-size", st->block_size,
                   "Right-hand sides per solve of the block method (0 = automatic: 8 for up to "
