@@ -87,6 +87,7 @@ SparseMatrix BuildPattern(const NodeGraph& g, int num_nodes) {
 // (the numbers do not depend on the thread count), and the fixed number of tasks per batch.
 constexpr int kCellBatch = 1024;
 constexpr int kTasksPerBatch = 16;
+constexpr int kScatterTasks = 8;
 
 template <CellType T>
 void AssembleBlock(const Mesh& mesh, const CellBlock& block, const NodeGraph& g,
@@ -103,8 +104,6 @@ void AssembleBlock(const Mesh& mesh, const CellBlock& block, const NodeGraph& g,
   const int* outer = K.outerIndexPtr();
   double* kval = K.valuePtr();
   double* mval = M.valuePtr();
-  int pos[kN][kN];
-  const int report_every = std::max(1, total / 50);
   const int num_cells = block.num_cells();
   std::vector<Computed> batch(static_cast<size_t>(std::min(kCellBatch, num_cells)));
   for (int first = 0; first < num_cells; first += kCellBatch) {
@@ -122,26 +121,37 @@ void AssembleBlock(const Mesh& mesh, const CellBlock& block, const NodeGraph& g,
         e.size = (X.rowwise().maxCoeff() - X.rowwise().minCoeff()).norm();
       }
     });
-    // Checked and added in cell order.
+    // Checked in cell order.
     for (int k = 0; k < count; ++k) {
       const int c = first + k;
       const Computed& e = batch[k];
-      const int* nodes = block.cell(c);
       CheckCellJacobian(mesh.source, T, block.tags[c], e.det, e.size);
       volume += e.me.sum() / rho;  // Σ_ab m_ab = ρ ∫ dV (partition of unity)
-      for (int b = 0; b < kN; ++b)
-        for (int a = 0; a < kN; ++a) pos[a][b] = 3 * g.Find(nodes[b], nodes[a]);
-      for (int b = 0; b < kN; ++b)
-        for (int j = 0; j < 3; ++j) {
-          const int col_start = outer[3 * nodes[b] + j];
-          for (int a = 0; a < kN; ++a) {
-            const int base = col_start + pos[a][b];
-            for (int i = 0; i < 3; ++i) kval[base + i] += e.Ke(3 * a + i, 3 * b + j);
-            mval[base + j] += e.me(a, b);
+    }
+    // Added in cell order, concurrently by the columns' nodes: task t adds the columns of the
+    // nodes whose 16-node run is t modulo the task count (interleaved, so that the nearby nodes
+    // of a batch of cells spread over all tasks); every entry is still a sum in cell order.
+    ParallelFor(kScatterTasks, [&](int task) {
+      int pos[kN];
+      for (int k = 0; k < count; ++k) {
+        const Computed& e = batch[k];
+        const int* nodes = block.cell(first + k);
+        for (int b = 0; b < kN; ++b) {
+          if ((nodes[b] >> 4) % kScatterTasks != task) continue;
+          for (int a = 0; a < kN; ++a) pos[a] = 3 * g.Find(nodes[b], nodes[a]);
+          for (int j = 0; j < 3; ++j) {
+            const int col_start = outer[3 * nodes[b] + j];
+            for (int a = 0; a < kN; ++a) {
+              const int base = col_start + pos[a];
+              for (int i = 0; i < 3; ++i) kval[base + i] += e.Ke(3 * a + i, 3 * b + j);
+              mval[base + j] += e.me(a, b);
+            }
           }
         }
-      if (++done % report_every == 0) ReportProgress(progress, "assembly", double(done) / total);
-    }
+      }
+    });
+    done += count;
+    ReportProgress(progress, "assembly", double(done) / total);
   }
 }
 

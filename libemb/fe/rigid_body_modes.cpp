@@ -23,12 +23,14 @@ MeshPieces ConnectedPieces(const Mesh& mesh) {
     const int k = b.nodes_per_cell();
     for (int c = 0; c < b.num_cells(); ++c) {
       const int* nodes = b.cell(c);
-      const int first = Root(parent, nodes[0]);
+      int root = Root(parent, nodes[0]);  // of the cell's nodes so far
       in_cell[nodes[0]] = 1;
       for (int i = 1; i < k; ++i) {
         in_cell[nodes[i]] = 1;
         const int r = Root(parent, nodes[i]);
-        if (r != first) parent[std::max(r, first)] = std::min(r, first);
+        if (r == root) continue;
+        parent[std::max(r, root)] = std::min(r, root);  // the lower root stays a root
+        root = std::min(r, root);
       }
     }
   }

@@ -63,6 +63,27 @@ TEST(PieceRigidBodyModes, SixPerPieceInTheNullSpaceOfK) {
   EXPECT_EQ(PieceRigidBodyModes(mesh, 1).cols(), 0);
 }
 
+// One cell is one piece whatever the order of its nodes: a Tet4 listed 2, 0, 1, 3 merges
+// three earlier roots (a union–find that kept the cell's first root after it stopped being a
+// root split this cell in two, and a crankshaft mesh into a piece and a lone node).
+TEST(PieceRigidBodyModes, OneCellIsOnePieceWhateverItsNodeOrder) {
+  Mesh mesh;
+  mesh.nodes.resize(3, 5);
+  mesh.nodes << 0, 1, 0, 0, 3,  //
+      0, 0, 1, 0, 3,            //
+      0, 0, 0, 1, 3;
+  mesh.node_tags = {1, 2, 3, 4, 5};
+  CellBlock tet;
+  tet.type = CellType::kTet4;
+  tet.connectivity = {2, 0, 1, 3};
+  tet.tags = {1};
+  mesh.blocks.push_back(tet);
+  const MeshPieces p = ConnectedPieces(mesh);
+  EXPECT_EQ(p.count, 1);
+  EXPECT_EQ(p.of_node, (std::vector<int>{0, 0, 0, 0, -1}));  // node 4 is in no cell
+  EXPECT_EQ(ConnectedPieces(TwoBeams()).count, 2);
+}
+
 TEST(PieceRigidBodyModes, LockedNullSpaceGivesTheSearchedModesWithFewerSolves) {
   const Mesh mesh = TwoBeams();
   const SystemMatrices sys = AssembleSystem(mesh, IsotropicMaterial{});
