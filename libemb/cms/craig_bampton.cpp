@@ -149,13 +149,14 @@ Eigen::MatrixXd SolveInertiaRelief(const Mesh& mesh, const SystemMatrices& sys,
 // residuals and corrections and the solver's workspace scale with the columns solved at once
 // (the 66 constraint modes of a 293k-DOF crankshaft in one group held ~0.5 GB more at the
 // reduction's peak), and a group is still a blocked solve (the factor is streamed once per
-// group; benchmarks/README.md "Solves with blocks of right-hand sides"). `iterations`: the most
-// refinement steps a group took, −1 if one did not converge. Every rank of a distributed
-// solver makes the same calls; Ψ is empty where it does not hold results.
+// group). There, three groups of 22 took 6.8 s against 8.7 s for five of 13–14 (one group of
+// 66: 7.2 s, a quieter run), at the same peak (set by the fixed-interface eigen-solve).
+// `iterations`: the most refinement steps a group took, −1 if one did not converge. Every rank
+// of a distributed solver makes the same calls; Ψ is empty where it does not hold results.
 Eigen::MatrixXd SolveConstraintModes(ConstrainedPencilSolver& solver, const Eigen::MatrixXd& rhs,
                                      const Eigen::MatrixXd& Q, int& iterations,
                                      const ProgressFn& progress) {
-  constexpr int kConstraintModesPerSolve = 16;
+  constexpr int kConstraintModesPerSolve = 22;
   const int nq = static_cast<int>(rhs.cols());
   const int groups = (nq + kConstraintModesPerSolve - 1) / kConstraintModesPerSolve;
   Eigen::MatrixXd Psi;
