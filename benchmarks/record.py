@@ -154,6 +154,7 @@ def collect_modes(items):
         s = r["summary"]
         runs.append({"h_m": float(h), "dofs": s["dofs"], "nnz_factor": s["nnz_factor"],
                      "seconds": phases(s), "solves": s["solves"],
+                     "ordering_s": s.get("ordering_seconds"),
                      "peak_memory_mb": s["peak_memory_mb"], "status": s["status"],
                      "rigid_modes": s["rigid_modes"],
                      "max_backward_error": s["max_backward_error"],
@@ -481,6 +482,7 @@ def collect_ccx(items):
         wall = wall_from_time(emb_time)
         runs.append({"h_m": float(h), "dofs": s["dofs"], "nnz_factor": s["nnz_factor"],
                      "emb_seconds": phases(s), "emb_wall_s": wall,
+                     "ordering_s": s.get("ordering_seconds"),
                      "emb_peak_mb": peak_mb_from_time(emb_time),
                      "ccx_wall_s": c["seconds"], "ccx_peak_mb": c["peak_memory_mb"],
                      "ratio": c["seconds"] / wall, "max_rel_freq_diff": diff,

@@ -11,6 +11,7 @@
 #include "libemb/cms/static_exactness.h"
 #include "libemb/common/error.h"
 #include "libemb/fe/modal_analysis.h"
+#include "libemb/fe/rigid_body_modes.h"
 #include "libemb/linalg/sparse_dense_product.h"
 
 namespace emb {
@@ -129,6 +130,9 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
     // the highest passes fmax.
     EigenSolverOptions so = options.solver;
     so.shift = LambdaFromHz(-1.0);
+    // A part in one piece: its six rigid motions are all of the null space, locked from the
+    // start instead of searched for.
+    if (ConnectedPieces(mesh).count == 1) so.null_space = model.rigid;
     // Blocks of kReferenceBlockSize unless the options say: the Krylov basis (about the wanted
     // pairs plus four blocks, block_krylov_schur.h) is held with the full model's factorisation
     // and the reduced body's shapes, where a reduction's memory peaks. On the 293k-DOF

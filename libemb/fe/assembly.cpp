@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "libemb/common/error.h"
 #include "libemb/common/parallel.h"
 #include "libemb/fe/cell_dispatch.h"
 #include "libemb/fe/solid_element.h"
+#include "libemb/linalg/metis_ordering.h"
 
 namespace emb {
 namespace {
@@ -183,6 +185,22 @@ SystemMatrices AssembleSystem(const Mesh& mesh, const IsotropicMaterial& materia
   sys.M.prune([](Eigen::Index, Eigen::Index, double v) { return v != 0.0; });
   ReportProgress(progress, "assembly", 1.0);
   return sys;
+}
+
+std::vector<int> FillReducingOrdering(const Mesh& mesh) {
+  const NodeGraph g = BuildNodeGraph(mesh);
+  const int n = mesh.num_nodes();
+  EMB_THROW_IF(g.adj.size() > static_cast<size_t>(std::numeric_limits<int>::max()),
+               "model too large: " << g.adj.size() << " node-graph edges exceed 32-bit indices");
+  // METIS wants the graph without self loops.
+  std::vector<int> offset(n + 1, 0), adj;
+  adj.reserve(g.adj.size() - n);
+  for (int v = 0; v < n; ++v) {
+    for (long long k = g.offset[v]; k < g.offset[v + 1]; ++k)
+      if (g.adj[k] != v) adj.push_back(g.adj[k]);
+    offset[v + 1] = static_cast<int>(adj.size());
+  }
+  return NestedDissectionOrdering(std::move(offset), std::move(adj), 3);
 }
 
 }  // namespace emb

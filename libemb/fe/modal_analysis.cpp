@@ -1,5 +1,6 @@
 #include "libemb/fe/modal_analysis.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -18,6 +19,51 @@ double LambdaFromHz(double f_hz) {
   return std::copysign(w * w, f_hz);
 }
 
+namespace {
+
+// The combinations of the columns of R (the null space of K) that vanish on the fixed
+// unknowns, on the free ones: R_free · null(R_fixed), from the eigenvectors of the Gram matrix
+// G = R̂_fixedᵀ R̂_fixed of the normalised columns. An exact zero of G is computed to ~ε·tr G;
+// a combination that any held unknown moves is ≳ 1/(r·nodes held) of tr G (1e-12 of it is a
+// combination moved by a held node only ~1e-6 of the part's size from its axis — and then the
+// solver's check of K·z sends it back to the search).
+Eigen::MatrixXd NullSpaceLeft(const Eigen::MatrixXd& R, const std::vector<int>& fixed,
+                              const std::vector<int>& free) {
+  constexpr double kHeld = 1e-12;
+  const Eigen::VectorXd norms = R.colwise().norm().transpose().cwiseMax(1e-300);
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(R.cols(), R.cols());
+  for (int d : fixed) {
+    const Eigen::RowVectorXd row = R.row(d).cwiseQuotient(norms.transpose());
+    G.noalias() += row.transpose() * row;
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(G);
+  std::vector<int> keep;
+  for (int j = 0; j < G.cols(); ++j)
+    if (es.eigenvalues()[j] <= kHeld * G.trace()) keep.push_back(j);
+  Eigen::MatrixXd N(R.cols(), keep.size());
+  for (size_t j = 0; j < keep.size(); ++j)
+    N.col(j) = es.eigenvectors().col(keep[j]).cwiseQuotient(norms);
+  Eigen::MatrixXd Rf(free.size(), R.cols());
+  for (size_t k = 0; k < free.size(); ++k) Rf.row(k) = R.row(free[k]);
+  return Rf * N;
+}
+
+// The unknowns `free` (ascending) in the order `ordering` puts them, numbered among
+// themselves: eliminating the fixed unknowns from a nested-dissection ordering leaves one for
+// the free ones that is at least as good (the separators only shrink).
+std::vector<int> RestrictOrdering(const std::vector<int>& ordering, const std::vector<int>& free,
+                                  int num_dofs) {
+  std::vector<int> index(num_dofs, -1);
+  for (size_t k = 0; k < free.size(); ++k) index[free[k]] = static_cast<int>(k);
+  std::vector<int> restricted;
+  restricted.reserve(free.size());
+  for (int d : ordering)
+    if (d >= 0 && d < num_dofs && index[d] >= 0) restricted.push_back(index[d]);
+  return restricted;
+}
+
+}  // namespace
+
 ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
                          const ProgressFn& progress) {
   EigenSolverOptions so = options.solver;
@@ -27,6 +73,12 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
   EMB_THROW_IF(use_basis && options.basis.rows() != sys.num_dofs(),
                "modal analysis: constraint basis has " << options.basis.rows()
                                                        << " rows, expected " << sys.num_dofs());
+  EMB_THROW_IF(options.rigid_motions.cols() > 0 && options.rigid_motions.rows() != sys.num_dofs(),
+               "modal analysis: rigid motions have " << options.rigid_motions.rows()
+                                                      << " rows, expected " << sys.num_dofs());
+  EMB_THROW_IF(!options.ordering.empty() && static_cast<int>(options.ordering.size()) != sys.num_dofs(),
+               "modal analysis: an ordering of " << options.ordering.size() << " unknowns, expected "
+                                                 << sys.num_dofs());
   // Unknowns fixed twice (a node in two clamped groups) count once.
   std::vector<int> fixed = options.fixed_dofs;
   std::sort(fixed.begin(), fixed.end());
@@ -58,12 +110,18 @@ ModalResult ComputeModes(const SystemMatrices& sys, const ModalOptions& options,
     r.basis_coordinates = std::move(r.eig.vectors);
     r.eig.vectors = T * r.basis_coordinates;
   } else if (fixed.empty()) {
+    so.null_space = options.rigid_motions;
+    so.ordering = options.ordering;
     r.eig = solve(sys.K, sys.M);
     scale = NormOne(sys.K) / NormOne(sys.M);
   } else {
     EMB_THROW_IF(fixed.front() < 0 || fixed.back() >= sys.num_dofs(),
                  "fixed unknowns: expected indices in [0, " << sys.num_dofs() << ")");
     const std::vector<int> free = Complement(fixed, sys.num_dofs());
+    if (options.rigid_motions.cols() > 0)
+      so.null_space = NullSpaceLeft(options.rigid_motions, fixed, free);
+    if (!options.ordering.empty())
+      so.ordering = RestrictOrdering(options.ordering, free, sys.num_dofs());
     const SparseMatrix Kff = ExtractSubmatrix(sys.K, free, free);
     const SparseMatrix Mff = ExtractSubmatrix(sys.M, free, free);
     r.eig = solve(Kff, Mff);

@@ -29,6 +29,15 @@ struct ModalOptions {
   /// The rigid-body modes the supports leave (e.g. from the rank of the held rigid motions), or
   /// −1 if unknown: reported beside the count found in the spectrum.
   int expected_rigid_modes{-1};
+  /// The null space of K before the supports, if known (num_dofs × r, e.g. the part's
+  /// PieceRigidBodyModes): the combinations of it that the fixed unknowns leave free are
+  /// handed to the eigen-solver (EigenSolverOptions::null_space), which locks them instead of
+  /// searching for them. Not used with a constraint basis. Empty = searched for.
+  Eigen::MatrixXd rigid_motions;
+  /// A fill-reducing ordering of all num_dofs unknowns (FillReducingOrdering), e.g. computed
+  /// while K and M were assembled; restricted to the free unknowns for the factorisation.
+  /// Not used with a constraint basis. Empty = METIS on the matrix to factorise.
+  std::vector<int> ordering;
   /// Solves the pencil left after the supports (K, M of the free unknowns or Tᵀ K T, Tᵀ M T)
   /// instead of SolveGeneralizedEigen, e.g. the distributed SLEPc backend
   /// (libemb/distributed/slepc_eigen_solver.h). Empty = SolveGeneralizedEigen. It may return

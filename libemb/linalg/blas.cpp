@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "libemb/common/error.h"
+#include "libemb/common/parallel.h"
 
 extern "C" void dgemm_(const char* transa, const char* transb, const int* m, const int* n,
                        const int* k, const double* alpha, const double* a, const int* lda,
@@ -42,6 +43,19 @@ class BlasThreads {
   int current_ = -1;
 };
 
+// The tall products are cut into a fixed number of row chunks that run concurrently.
+constexpr int kRowChunks = 2;
+
+template <typename F>
+void ForRowChunks(Eigen::Index n, F&& f) {
+  UseOneBlasThread();  // the chunks call the BLAS concurrently
+  const Eigen::Index per = (n + kRowChunks - 1) / kRowChunks;
+  ParallelFor(kRowChunks, [&](int c) {
+    const Eigen::Index first = c * per, rows = std::min(n, first + per) - first;
+    if (rows > 0) f(c, first, rows);
+  });
+}
+
 }  // namespace
 
 void UseAllBlasThreads() { BlasThreads::Get().Set(BlasThreads::Get().max()); }
@@ -67,6 +81,33 @@ void Gemm(bool transpose_a, double alpha, const Eigen::Ref<const Eigen::MatrixXd
   const int ldc = static_cast<int>(std::max<Eigen::Index>(C.outerStride(), 1));
   dgemm_(transpose_a ? "T" : "N", "N", &mi, &ni, &ki, &alpha, A.data(), &lda, B.data(), &ldb,
          &beta, C.data(), &ldc);
+}
+
+Eigen::MatrixXd TallTransposeTimes(const Eigen::Ref<const Eigen::MatrixXd>& P,
+                                   const Eigen::Ref<const Eigen::MatrixXd>& W) {
+  Eigen::MatrixXd part[kRowChunks];
+  for (auto& p : part) p = Eigen::MatrixXd::Zero(P.cols(), W.cols());
+  ForRowChunks(P.rows(), [&](int c, Eigen::Index first, Eigen::Index rows) {
+    Gemm(true, 1.0, P.middleRows(first, rows), W.middleRows(first, rows), 0.0, part[c]);
+  });
+  Eigen::MatrixXd sum = part[0];
+  for (int c = 1; c < kRowChunks; ++c) sum += part[c];
+  return sum;
+}
+
+void TallTimes(const Eigen::Ref<const Eigen::MatrixXd>& P, const Eigen::MatrixXd& X,
+               Eigen::MatrixXd& Y) {
+  Y.resize(P.rows(), X.cols());
+  ForRowChunks(P.rows(), [&](int, Eigen::Index first, Eigen::Index rows) {
+    Gemm(false, 1.0, P.middleRows(first, rows), X, 0.0, Y.middleRows(first, rows));
+  });
+}
+
+void TallSubtractTimes(const Eigen::Ref<const Eigen::MatrixXd>& P, const Eigen::MatrixXd& X,
+                       Eigen::MatrixXd& W) {
+  ForRowChunks(P.rows(), [&](int, Eigen::Index first, Eigen::Index rows) {
+    Gemm(false, -1.0, P.middleRows(first, rows), X, 1.0, W.middleRows(first, rows));
+  });
 }
 
 }  // namespace emb

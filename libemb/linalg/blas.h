@@ -34,4 +34,16 @@ void UseOneBlasThread();
 void Gemm(bool transpose_a, double alpha, const Eigen::Ref<const Eigen::MatrixXd>& A,
           const Eigen::Ref<const Eigen::MatrixXd>& B, double beta, Eigen::Ref<Eigen::MatrixXd> C);
 
+/// Pᵀ W for tall P (n × k) and W (n × b): a fixed number of row chunks run concurrently (each
+/// by the BLAS on one thread) and their partial sums are added in chunk order, so the numbers
+/// do not depend on the thread count. Switches the BLAS to one thread (UseOneBlasThread).
+Eigen::MatrixXd TallTransposeTimes(const Eigen::Ref<const Eigen::MatrixXd>& P,
+                                   const Eigen::Ref<const Eigen::MatrixXd>& W);
+/// Y = P X for tall P (n × k), by the same row chunks.
+void TallTimes(const Eigen::Ref<const Eigen::MatrixXd>& P, const Eigen::MatrixXd& X,
+               Eigen::MatrixXd& Y);
+/// W −= P X for tall P (n × k), by the same row chunks.
+void TallSubtractTimes(const Eigen::Ref<const Eigen::MatrixXd>& P, const Eigen::MatrixXd& X,
+                       Eigen::MatrixXd& W);
+
 }  // namespace emb

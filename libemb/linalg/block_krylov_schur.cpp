@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "libemb/common/error.h"
-#include "libemb/common/parallel.h"
 #include "libemb/common/timer.h"
 #include "libemb/linalg/blas.h"
 
@@ -28,51 +27,6 @@ void FillRandom(Eigen::Ref<Eigen::MatrixXd> X, std::mt19937_64& rng) {
 }
 
 Eigen::MatrixXd Symmetric(const Eigen::MatrixXd& A) { return 0.5 * (A + A.transpose()); }
-
-// The tall products of the process (n × k by k × b, and their transposes) cut into a fixed
-// number of row chunks that run concurrently, each by the BLAS (blas.h); the partial
-// sums of Pᵀ W are added in chunk order, so the numbers do not depend on the thread count.
-constexpr int kRowChunks = 2;
-
-template <typename F>
-void ForRowChunks(Eigen::Index n, F&& f) {
-  UseOneBlasThread();  // the chunks call the BLAS concurrently
-  const Eigen::Index per = (n + kRowChunks - 1) / kRowChunks;
-  ParallelFor(kRowChunks, [&](int c) {
-    const Eigen::Index first = c * per, rows = std::min(n, first + per) - first;
-    if (rows > 0) f(c, first, rows);
-  });
-}
-
-// Pᵀ W.
-Eigen::MatrixXd TransposeTimes(const Eigen::Ref<const Eigen::MatrixXd>& P,
-                               const Eigen::Ref<const Eigen::MatrixXd>& W) {
-  Eigen::MatrixXd part[kRowChunks];
-  for (auto& p : part) p = Eigen::MatrixXd::Zero(P.cols(), W.cols());
-  ForRowChunks(P.rows(), [&](int c, Eigen::Index first, Eigen::Index rows) {
-    Gemm(true, 1.0, P.middleRows(first, rows), W.middleRows(first, rows), 0.0, part[c]);
-  });
-  Eigen::MatrixXd sum = part[0];
-  for (int c = 1; c < kRowChunks; ++c) sum += part[c];
-  return sum;
-}
-
-// Y = P X.
-void Times(const Eigen::Ref<const Eigen::MatrixXd>& P, const Eigen::MatrixXd& X,
-           Eigen::MatrixXd& Y) {
-  Y.resize(P.rows(), X.cols());
-  ForRowChunks(P.rows(), [&](int, Eigen::Index first, Eigen::Index rows) {
-    Gemm(false, 1.0, P.middleRows(first, rows), X, 0.0, Y.middleRows(first, rows));
-  });
-}
-
-// W −= P X.
-void SubtractTimes(const Eigen::Ref<const Eigen::MatrixXd>& P, const Eigen::MatrixXd& X,
-                   Eigen::MatrixXd& W) {
-  ForRowChunks(P.rows(), [&](int, Eigen::Index first, Eigen::Index rows) {
-    Gemm(false, -1.0, P.middleRows(first, rows), X, 1.0, W.middleRows(first, rows));
-  });
-}
 
 // X ← the columns X(:, order[0]), X(:, order[1]), … in place, by column swaps (no workspace).
 void PermuteColumns(const std::vector<int>& order, Eigen::MatrixXd& X) {
@@ -171,9 +125,9 @@ class Process {
     const Eigen::MatrixXd Yk = Y.leftCols(keep);
     const Eigen::MatrixXd next = U_.middleCols(k_, b_), Bnext = BU_.middleCols(k_, b_);
     Eigen::MatrixXd T;
-    Times(U_.middleCols(nlock_, na), Yk, T);
+    TallTimes(U_.middleCols(nlock_, na), Yk, T);
     U_.middleCols(nlock_, keep) = T;
-    Times(BU_.middleCols(nlock_, na), Yk, T);
+    TallTimes(BU_.middleCols(nlock_, na), Yk, T);
     BU_.middleCols(nlock_, keep) = T;
     U_.middleCols(p, b_) = next;
     BU_.middleCols(p, b_) = Bnext;
@@ -226,8 +180,8 @@ class Process {
     const int b = static_cast<int>(W.cols());
     C = Eigen::MatrixXd::Zero(kk, b);
     for (int pass = 0; pass < 2 && kk > 0; ++pass) {
-      const Eigen::MatrixXd Cp = TransposeTimes(BU_.leftCols(kk), W);
-      SubtractTimes(U_.leftCols(kk), Cp, W);
+      const Eigen::MatrixXd Cp = TallTransposeTimes(BU_.leftCols(kk), W);
+      TallSubtractTimes(U_.leftCols(kk), Cp, W);
       C += Cp;
     }
     Eigen::MatrixXd BW;
@@ -239,7 +193,7 @@ class Process {
     Eigen::MatrixXd Rg = Eigen::MatrixXd::Identity(b, b);  // W_in⊥ = V Rg (rows: kept)
     for (int pass = 0; pass < 2 && W.cols() > 0; ++pass) {
       const int cols = static_cast<int>(W.cols());
-      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Symmetric(TransposeTimes(W, BW)));
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(Symmetric(TallTransposeTimes(W, BW)));
       EMB_CHECK(es.info() == Eigen::Success);
       const Eigen::VectorXd d = es.eigenvalues();
       const Eigen::MatrixXd& Q = es.eigenvectors();
@@ -256,9 +210,9 @@ class Process {
         Rp.row(g) = std::sqrt(d[good[g]]) * Q.col(good[g]).transpose();
       }
       Eigen::MatrixXd T;
-      Times(W, Qs, T);
+      TallTimes(W, Qs, T);
       W.swap(T);
-      Times(BW, Qs, T);
+      TallTimes(BW, Qs, T);
       BW.swap(T);
       Rg = (Rp * Rg).eval();
     }
@@ -326,10 +280,11 @@ BlockKrylovResult SolveBlockKrylovSchur(const BlockOperators& op, const BlockKry
                "block Krylov-Schur: expected a tolerance in (0, 1), got " << o.tolerance);
   // The block shrinks on small problems so that the basis plus one block fits the range.
   int b = std::min(o.block_size, std::max(1, (range - nev) / 3));
-  // Basis: the wanted pairs, room for a few blocks beyond them (what converges them without
-  // restarting on the crankshaft), at most the range less one block. (Six blocks took 8–10 %
-  // fewer solves on the crankshaft but 150 MB more memory at 293k DOF, where memory binds.)
-  int m = o.max_basis > 0 ? o.max_basis : std::max(2 * nev, nev + 4 * b);
+  // Basis: the wanted pairs and room for a few blocks beyond them, at most the range less one
+  // block (spare_blocks: see EigenSolverOptions::spare_blocks).
+  EMB_THROW_IF(o.spare_blocks < 2, "block Krylov-Schur: expected at least 2 spare blocks, got "
+                                       << o.spare_blocks);
+  int m = o.max_basis > 0 ? o.max_basis : std::max(2 * nev, nev + o.spare_blocks * b);
   m = std::min(m, range - b);
   EMB_THROW_IF(m < nev + b, "block Krylov-Schur: " << nev << " wanted eigenvalues and blocks of "
                                                    << b << " do not fit a space of dimension "

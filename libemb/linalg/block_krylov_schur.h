@@ -56,6 +56,8 @@ struct BlockKrylovOptions {
   int num_wanted{10};        ///< nev: how many of the largest |θ| are wanted
   int block_size{16};        ///< b: right-hand sides per solve
   int max_basis{0};          ///< m: basis size before a restart; 0 = automatic (see .cpp)
+  /// With max_basis 0: m = max(2·nev, nev + spare_blocks·block_size) (before the range bound).
+  int spare_blocks{4};
   double tolerance{1e-10};   ///< ‖OP x − θ x‖_B ≤ tolerance · |θ|
   int max_restarts{1000};
   std::uint64_t seed{20240601};  ///< of the random start block (deterministic runs)

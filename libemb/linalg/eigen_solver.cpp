@@ -15,6 +15,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
+#include "libemb/linalg/blas.h"
 #include "libemb/linalg/block_krylov_schur.h"
 #include "libemb/linalg/dense_eigen.h"
 #include "libemb/linalg/kronecker_matrix.h"
@@ -115,21 +116,22 @@ void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, const Sp
   Eigen::MatrixXd& Phi = r.vectors;
   Eigen::MatrixXd KPhi = MultiplySymmetric(K, Phi);
   Eigen::MatrixXd MPhi = MultiplySymmetric(M, Phi);
-  const DenseEigenpairs ritz =
-      SolveDenseEigenpairs(Phi.transpose() * KPhi, Phi.transpose() * MPhi, /*check=*/false);
-  if (ritz.ok) {  // else keep Spectra's pairs; the checks will judge
-    const Eigen::MatrixXd& Q = ritz.vectors;
-    Phi = Phi * Q;
-    KPhi = KPhi * Q;
-    MPhi = MPhi * Q;
+  const DenseEigenpairs ritz = SolveDenseEigenpairs(TallTransposeTimes(Phi, KPhi),
+                                                    TallTransposeTimes(Phi, MPhi), /*check=*/false);
+  // The rotation of Φ: the Ritz vectors (else Spectra's pairs are kept, and the checks judge),
+  // then canonical signs and degenerate rotations (issue 12); K Φ and M Φ follow in one product.
+  Eigen::MatrixXd rotation = Eigen::MatrixXd::Identity(Phi.cols(), Phi.cols()), T;
+  if (ritz.ok) {
+    TallTimes(Phi, ritz.vectors, T);
+    Phi.swap(T);
     r.eigenvalues = ritz.eigenvalues;
+    rotation = ritz.vectors;
   }
-  // Signs and degenerate rotations canonical (issue 12); K Φ and M Φ follow.
-  {
-    const Eigen::MatrixXd R = CanonicalizeEigenvectors(Phi, r.eigenvalues);
-    KPhi = (KPhi * R).eval();
-    MPhi = (MPhi * R).eval();
-  }
+  rotation = (rotation * CanonicalizeEigenvectors(Phi, r.eigenvalues)).eval();
+  TallTimes(KPhi, rotation, T);
+  KPhi.swap(T);
+  TallTimes(MPhi, rotation, T);
+  MPhi.swap(T);
   Eigen::LLT<Eigen::MatrixXd> cct;
   ResidualProjection outside_constraints;
   if (C.rows() > 0) {
@@ -328,6 +330,36 @@ Deflation FindNullSpace(const ShiftInvertSolver& solver, const BlockOperators& o
   }
 }
 
+// The caller's null space o.null_space as a deflation, B-orthonormalised, if K annihilates
+// every column of it to round-off: ‖K z‖∞ ≤ kGivenNullResidual·‖K‖₁·‖z‖∞. Exact rigid motions
+// give ~1e-16 (the round-off of the sums in K z); a vector with an elastic component at least
+// λ₁/λ_max of it (~1e-7 on the crankshaft, falling as h² under refinement). None if it does not
+// pass, if it does not fit the wanted count, or with constraints (their null space is smaller).
+Deflation GivenNullSpace(const ShiftInvertSolver& solver, const BlockOperators& op,
+                         const EigenSolverOptions& o, double sigma) {
+  constexpr double kGivenNullResidual = 1e-12;
+  constexpr double kOrthonormal = 1e-10;  // a basis of dependent columns does not pass
+  const int r = static_cast<int>(o.null_space.cols());
+  Deflation d;
+  if (r == 0 || r >= o.num_modes || solver.num_constraints() > 0) return d;
+  EMB_THROW_IF(o.null_space.rows() != op.rows, "null space: expected " << op.rows
+                                                   << " rows, got " << o.null_space.rows());
+  Eigen::MatrixXd Z = o.null_space, BZ;
+  OrthonormalizeInner(op, Z, BZ);
+  const Eigen::MatrixXd gram = Z.transpose() * BZ;
+  if (!((gram - Eigen::MatrixXd::Identity(r, r)).cwiseAbs().maxCoeff() <= kOrthonormal)) return d;
+  const Eigen::MatrixXd KZ = MultiplySymmetric(solver.K(), Z);
+  const double k1 = NormOne(solver.K());
+  for (int j = 0; j < r; ++j)
+    if (!(KZ.col(j).lpNorm<Eigen::Infinity>() <=
+          kGivenNullResidual * k1 * Z.col(j).lpNorm<Eigen::Infinity>()))
+      return d;
+  d.vectors = std::move(Z);
+  d.inner_vectors = std::move(BZ);
+  d.theta = Eigen::VectorXd::Constant(r, -1.0 / sigma);
+  return d;
+}
+
 // The pairs of o.known_vectors as a deflation (θ = 1/(λ − σ)), B-orthonormalised again in
 // double: none if there are none, if they do not fit the wanted count with a block to spare, if
 // one lies at or below σ, or if all of them lie in the null space of K (then the null space
@@ -376,14 +408,19 @@ void SolveBlock(ShiftInvertSolver& shift_solver, const EigenSolverOptions& o,
   bo.block_size = o.block_size > 0 ? o.block_size : AutomaticBlockSize(o.num_modes);
   // --ncv is a minimum here: the block basis needs the wanted pairs and two blocks.
   bo.max_basis = o.subspace > 0 ? std::max(o.subspace, o.num_modes + 2 * bo.block_size) : 0;
+  bo.spare_blocks = o.spare_blocks;
   bo.tolerance = o.tolerance;
   bo.max_restarts = o.max_restarts;
   Stopwatch sw;
   int null_solves = 0;
   Deflation locked = KnownPairs(shift_solver, op, o, r.shift);
   const int num_known = static_cast<int>(locked.vectors.cols());
-  if (num_known == 0 && r.shift < 0.0)
-    locked = FindNullSpace(shift_solver, op, r.shift, o.num_modes - 1, null_solves);
+  if (num_known == 0 && r.shift < 0.0) {
+    locked = GivenNullSpace(shift_solver, op, o, r.shift);
+    r.null_space_given = locked.vectors.cols() > 0;
+    if (!r.null_space_given)
+      locked = FindNullSpace(shift_solver, op, r.shift, o.num_modes - 1, null_solves);
+  }
   const double null_seconds = sw.seconds();
   const int num_locked = static_cast<int>(locked.vectors.cols());
   const BlockKrylovResult b = SolveBlockKrylovSchur(op, bo, progress, std::move(locked));
@@ -458,8 +495,7 @@ EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
 
 int CountEigenvaluesBelow(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
                           double sigma) {
-  SparseMatrix A = K - sigma * M;
-  A.makeCompressed();
+  const SparseMatrix A = ShiftedMatrix(K, M, sigma);
   SparseCholesky ldlt(CholeskyBackend::kCholmodLDLT, 3);
   const FactorInfo fi = ldlt.Factorize(A);
   if (!fi.ok()) return -1;
@@ -478,6 +514,7 @@ EigenResult SolveGeneralizedEigen(const SparseMatrix& K, const SparseMatrix& M,
                                   const SparseMatrix& C, const EigenSolverOptions& o,
                                   const ProgressFn& progress) {
   ShiftInvertSolver solver(K, M, C, o.backend);
+  solver.SetOrdering(o.ordering);
   return SolveGeneralizedEigen(solver, o, progress);
 }
 

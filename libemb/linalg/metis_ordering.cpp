@@ -20,8 +20,8 @@ std::vector<int> NestedDissectionOrdering(const SparseMatrix& A, int block) {
     return id;
   }
   // Adjacency of the block graph, without self loops (METIS requirement).
-  std::vector<idx_t> xadj(nv + 1, 0);
-  std::vector<idx_t> adj;
+  std::vector<int> xadj(nv + 1, 0);
+  std::vector<int> adj;
   adj.reserve(static_cast<size_t>(A.nonZeros() / (block * block) + nv));
   std::vector<int> mark(nv, -1);
   for (int v = 0; v < nv; ++v) {
@@ -35,20 +35,32 @@ std::vector<int> NestedDissectionOrdering(const SparseMatrix& A, int block) {
         }
       }
     }
-    xadj[v + 1] = static_cast<idx_t>(adj.size());
+    xadj[v + 1] = static_cast<int>(adj.size());
   }
-  idx_t nvtxs = nv;
-  std::vector<idx_t> perm(nv), iperm(nv);
+  return NestedDissectionOrdering(std::move(xadj), std::move(adj), block);
+}
+
+std::vector<int> NestedDissectionOrdering(std::vector<int> offset, std::vector<int> adj,
+                                          int block) {
+  static_assert(sizeof(idx_t) == sizeof(int), "METIS built with 32-bit indices expected");
+  EMB_CHECK(block >= 1 && !offset.empty() && offset.back() == static_cast<int>(adj.size()));
+  idx_t nvtxs = static_cast<idx_t>(offset.size() - 1);
+  if (nvtxs <= 1) {
+    std::vector<int> id(static_cast<size_t>(nvtxs) * block);
+    std::iota(id.begin(), id.end(), 0);
+    return id;
+  }
+  std::vector<idx_t> perm(nvtxs), iperm(nvtxs);
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_NUMBERING] = 0;
   const int status =
-      METIS_NodeND(&nvtxs, xadj.data(), adj.data(), nullptr, options, perm.data(), iperm.data());
+      METIS_NodeND(&nvtxs, offset.data(), adj.data(), nullptr, options, perm.data(), iperm.data());
   if (status != METIS_OK)
     EMB_THROW(NumericalError, "METIS_NodeND failed with status " << status << " on a graph of "
-                                                                 << nv << " vertices");
-  std::vector<int> dof_perm(n);
-  for (int k = 0; k < nv; ++k)
+                                                                 << nvtxs << " vertices");
+  std::vector<int> dof_perm(static_cast<size_t>(nvtxs) * block);
+  for (idx_t k = 0; k < nvtxs; ++k)
     for (int c = 0; c < block; ++c) dof_perm[k * block + c] = static_cast<int>(perm[k]) * block + c;
   return dof_perm;
 }

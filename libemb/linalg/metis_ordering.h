@@ -14,4 +14,11 @@ namespace emb {
 /// together. @throws NumericalError if METIS fails.
 std::vector<int> NestedDissectionOrdering(const SparseMatrix& A, int block);
 
+/// The same for a graph in CSR form — the neighbours of vertex v are adj[offset[v] …
+/// offset[v+1]), without v itself — whose vertex v stands for the `block` unknowns
+/// block·v … block·v + block − 1 (e.g. a mesh's node graph and 3 unknowns per node).
+/// @throws NumericalError if METIS fails.
+std::vector<int> NestedDissectionOrdering(std::vector<int> offset, std::vector<int> adj,
+                                          int block);
+
 }  // namespace emb

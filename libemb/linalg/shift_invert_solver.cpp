@@ -1,13 +1,53 @@
 #include "libemb/linalg/shift_invert_solver.h"
 
+#include <atomic>
 #include <limits>
 #include <sstream>
 
 #include "libemb/common/error.h"
+#include "libemb/common/parallel.h"
 #include "libemb/common/timer.h"
 #include "libemb/linalg/eigen_solver.h"
 
 namespace emb {
+
+SparseMatrix ShiftedMatrix(const SparseMatrix& K, const SparseMatrix& M, double sigma) {
+  EMB_CHECK(K.rows() == M.rows() && K.cols() == M.cols());
+  const auto general = [&] {
+    SparseMatrix S = K - sigma * M;
+    S.makeCompressed();
+    return S;
+  };
+  if (!K.isCompressed() || !M.isCompressed()) return general();
+  // A takes K's structure; each column of M is merged into it (both sorted), in a fixed
+  // number of column chunks that run concurrently.
+  SparseMatrix A = K;
+  const int n = static_cast<int>(K.cols());
+  constexpr int kChunks = 16;
+  std::atomic<bool> inside{true};
+  ParallelFor(kChunks, [&](int c) {
+    const int first = static_cast<int>(static_cast<long long>(n) * c / kChunks);
+    const int last = static_cast<int>(static_cast<long long>(n) * (c + 1) / kChunks);
+    const int* kp = K.outerIndexPtr();
+    const int* ki = K.innerIndexPtr();
+    const int* mp = M.outerIndexPtr();
+    const int* mi = M.innerIndexPtr();
+    const double* mv = M.valuePtr();
+    double* av = A.valuePtr();
+    for (int j = first; j < last; ++j) {
+      int p = kp[j];
+      for (int q = mp[j]; q < mp[j + 1]; ++q) {
+        while (p < kp[j + 1] && ki[p] < mi[q]) ++p;
+        if (p == kp[j + 1] || ki[p] != mi[q]) {
+          inside = false;
+          return;
+        }
+        av[p] -= sigma * mv[q];
+      }
+    }
+  });
+  return inside ? A : general();  // general: M has an entry outside K's pattern
+}
 
 ShiftInvertSolver::ShiftInvertSolver(const SparseMatrix& K, const SparseMatrix& M,
                                      const SparseMatrix& C, CholeskyBackend backend)
@@ -48,8 +88,7 @@ bool ShiftInvertSolver::Prepare(double sigma) {
     ok_ = true;
     return true;
   }
-  SparseMatrix A = K_ - sigma * M_;
-  A.makeCompressed();
+  const SparseMatrix A = ShiftedMatrix(K_, M_, sigma);
   const FactorInfo& info = chol_.Factorize(A);
   if (!info.ok()) {
     message_ = info.message;

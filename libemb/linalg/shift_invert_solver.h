@@ -35,6 +35,10 @@
 
 namespace emb {
 
+/// A = K − σM, compressed, with K's structure when M's entries all lie in K's pattern (FE
+/// matrices: M's pattern is K's), formed column-concurrently; else Eigen's general sum.
+SparseMatrix ShiftedMatrix(const SparseMatrix& K, const SparseMatrix& M, double sigma);
+
 class ShiftInvertSolver {
  public:
   /// K, M: n × n symmetric (full storage), C: m × n (m may be 0). The matrices are referenced,
@@ -51,6 +55,10 @@ class ShiftInvertSolver {
   void PinRigidMotions(Eigen::MatrixXd R, std::vector<int> pins);
   /// The pinned solver (pinned mode, after Prepare), else nullptr.
   const PinnedConstrainedSolver* pinned() const { return pinned_.get(); }
+
+  /// The fill-reducing ordering for the factorisation of K − σM (SparseCholesky::SetOrdering);
+  /// empty = METIS on its pattern.
+  void SetOrdering(std::vector<int> perm) { chol_.SetOrdering(std::move(perm)); }
 
   /// Factorises K − σM and, with constraints, forms Y and S. Returns false (see message())
   /// if the factorisation failed, is inaccurate (backward error of a test solve > 1e-10) or if

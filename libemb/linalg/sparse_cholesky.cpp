@@ -46,6 +46,16 @@ cholmod_dense ViewDense(const double* data, int rows, int cols) {
   return d;
 }
 
+bool IsPermutation(const std::vector<int>& perm, int n) {
+  if (static_cast<int>(perm.size()) != n) return false;
+  std::vector<char> seen(n, 0);
+  for (int p : perm) {
+    if (p < 0 || p >= n || seen[p]) return false;
+    seen[p] = 1;
+  }
+  return true;
+}
+
 using EigenLdlt = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>>;
 
 }  // namespace
@@ -89,7 +99,15 @@ class SparseCholesky::Impl {
                                            << A.rows() << "x" << A.cols());
     Stopwatch sw;
     n_ = static_cast<int>(A.rows());
-    perm_ = NestedDissectionOrdering(A, dofs_per_node_);
+    if (given_perm_.empty()) {
+      perm_ = NestedDissectionOrdering(A, dofs_per_node_);
+    } else {
+      EMB_THROW_IF(!IsPermutation(given_perm_, n_),
+                   "sparse factorisation: the given ordering (" << given_perm_.size()
+                       << " entries) is not a permutation of the " << n_ << " unknowns");
+      perm_ = std::move(given_perm_);
+      given_perm_.clear();
+    }
     factorized_ = false;
     if (backend_ == CholeskyBackend::kEigenLDLT) {
       Eigen::VectorXi iperm(n_);
@@ -230,6 +248,7 @@ class SparseCholesky::Impl {
   bool factorized_{false};
   double analyze_seconds_{0.0};
   std::vector<int> perm_;
+  std::vector<int> given_perm_;  // SetOrdering's, for the next Analyze
   FactorInfo info_;
   mutable cholmod_common common_{};
   cholmod_factor* factor_{nullptr};
@@ -244,6 +263,7 @@ SparseCholesky::SparseCholesky(SparseCholesky&&) noexcept = default;
 SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
 
 void SparseCholesky::Analyze(const SparseMatrix& A) { impl_->Analyze(A); }
+void SparseCholesky::SetOrdering(std::vector<int> perm) { impl_->given_perm_ = std::move(perm); }
 FactorInfo SparseCholesky::Factorize(const SparseMatrix& A) { return impl_->Factorize(A); }
 
 Eigen::MatrixXd SparseCholesky::Solve(const Eigen::Ref<const Eigen::MatrixXd>& B) const {

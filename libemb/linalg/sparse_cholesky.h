@@ -15,6 +15,7 @@
 /// Solve(B) as often as needed. Not thread-safe (solves reuse workspace).
 
 #include <memory>
+#include <vector>
 #include <string>
 
 #include "libemb/linalg/sparse_types.h"
@@ -59,6 +60,12 @@ class SparseCholesky {
   /// symmetric storage; only the upper triangle is read). Cost: METIS + O(nnz(L)).
   /// @throws InputError if A is not square; NumericalError if the backend fails.
   void Analyze(const SparseMatrix& A);
+
+  /// A fill-reducing ordering for the next Analyze instead of METIS on A's pattern (as
+  /// NestedDissectionOrdering returns it: row k of the permuted matrix is row perm[k]), e.g.
+  /// one computed from the mesh while the matrix was being assembled. Empty = METIS again.
+  /// @throws InputError if perm is not a permutation of 0 … n−1 for the matrix analysed next.
+  void SetOrdering(std::vector<int> perm);
 
   /// Numeric factorisation of `A`, which must have the pattern given to Analyze (Analyze is
   /// called automatically on first use or if the size changed).

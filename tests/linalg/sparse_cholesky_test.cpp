@@ -112,6 +112,37 @@ TEST(SparseCholesky, LdltInertiaCountsEigenvaluesBelowTheShift) {
   EXPECT_EQ(eig.info().num_negative_pivots, 12);
 }
 
+// The mesh's ordering (FillReducingOrdering: METIS on the node graph, while assembling) is
+// the ordering METIS finds on K's pattern: the same graph, so the same factor size.
+TEST(SparseCholesky, MeshOrderingEqualsTheMatrixOrdering) {
+  const Mesh mesh = MakeBoxMesh({0.3, 0.1, 0.1}, {6, 2, 2}, CellType::kTet10);
+  const SystemMatrices sys = AssembleSystem(mesh, IsotropicMaterial{});
+  SparseMatrix A = sys.K + 1e3 * sys.M;
+  A.makeCompressed();
+  SparseCholesky own, given;
+  given.SetOrdering(FillReducingOrdering(mesh));
+  const FactorInfo a = own.Factorize(A), b = given.Factorize(A);
+  ASSERT_TRUE(a.ok() && b.ok()) << a.message << b.message;
+  EXPECT_EQ(a.nnz_factor, b.nnz_factor);
+  const Eigen::MatrixXd B = Eigen::MatrixXd::Ones(A.rows(), 2);
+  EXPECT_LE(BackwardError(A, given.Solve(B), B), kBackwardTol);
+}
+
+TEST(SparseCholesky, GivenOrderingMustBeAPermutation) {
+  const SystemMatrices sys = SmallSystem();
+  SparseMatrix A = sys.K + 1e3 * sys.M;
+  A.makeCompressed();
+  SparseCholesky chol;
+  std::vector<int> twice(A.rows(), 0);  // every row is unknown 0
+  chol.SetOrdering(twice);
+  try {
+    chol.Factorize(A);
+    FAIL() << "a non-permutation was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a permutation"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SparseCholesky, RejectsNonSquare) {
   SparseMatrix A(3, 4);
   SparseCholesky chol;

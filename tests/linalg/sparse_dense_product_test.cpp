@@ -36,17 +36,22 @@ TEST(MultiplySymmetric, EveryPanelWidthAndNodeBlocksEqualTheSparseProduct) {
   const SystemMatrices sys = AssembleSystem(mesh, IsotropicMaterial{});
   const auto kron = KroneckerIdentityMatrix::Detect(sys.M, 3);
   ASSERT_TRUE(kron.has_value());
-  // 63 columns: panels of 32, 16, 8, 4, 2 and 1 (of 16, ... with three rows per node).
-  const Eigen::MatrixXd X = Eigen::MatrixXd::Random(sys.num_dofs(), 63);
-  for (const SparseMatrix* A : {&sys.K, &sys.M}) {
-    const Eigen::MatrixXd scale = A->cwiseAbs() * X.cwiseAbs();
-    EXPECT_LE((MultiplySymmetric(*A, X) - (*A) * X).cwiseAbs().maxCoeff(),
-              kRoundOff * scale.maxCoeff());
+  // Column counts that take every panel width (32, 16, 8, 4, 2, 1; 16 … 1 with three rows per
+  // node) and the zero-padded remainders (17 … 31 to 32, 9 … 15 to 16).
+  Eigen::MatrixXd X, Y;
+  for (int cols : {1, 2, 3, 5, 7, 8, 9, 15, 16, 17, 31, 33, 63}) {
+    X = Eigen::MatrixXd::Random(sys.num_dofs(), cols);
+    for (const SparseMatrix* A : {&sys.K, &sys.M}) {
+      const Eigen::MatrixXd scale = A->cwiseAbs() * X.cwiseAbs();
+      EXPECT_LE((MultiplySymmetric(*A, X) - (*A) * X).cwiseAbs().maxCoeff(),
+                kRoundOff * scale.maxCoeff())
+          << cols << " columns";
+    }
+    MultiplySymmetric(kron->scalar(), 3, X, Y);
+    const Eigen::MatrixXd scale = sys.M.cwiseAbs() * X.cwiseAbs();
+    EXPECT_LE((Y - sys.M * X).cwiseAbs().maxCoeff(), kRoundOff * scale.maxCoeff())
+        << cols << " columns, node blocks";
   }
-  Eigen::MatrixXd Y;
-  MultiplySymmetric(kron->scalar(), 3, X, Y);
-  const Eigen::MatrixXd scale = sys.M.cwiseAbs() * X.cwiseAbs();
-  EXPECT_LE((Y - sys.M * X).cwiseAbs().maxCoeff(), kRoundOff * scale.maxCoeff());
   EXPECT_THROW(MultiplySymmetric(kron->scalar(), 2, X, Y), InputError);
   EXPECT_THROW(MultiplySymmetric(kron->scalar(), 3, X.topRows(9), Y), InputError);
 }
