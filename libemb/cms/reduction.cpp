@@ -79,7 +79,7 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
                               [&](const Interface& i) { return i.name == name; }),
                  "stiffening supports: '" << name << "' is not an interface of the body");
   // A wrong stress group fails before the expensive part.
-  const SparseMatrix stress_operator =
+  SparseMatrix stress_operator =
       job.stress_groups.empty()
           ? SparseMatrix()
           : BuildGroupStressOperator(mesh, material, job.stress_groups);
@@ -115,15 +115,17 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   // from cancelling large terms. The blocks with the fixed-interface modes (Ψᵀ K Φ = 0 and
   // Φᵀ K Φ = Λ in exact arithmetic) carry no such cancellation and are formed in double.
   const int nb = basis.num_boundary, nr = static_cast<int>(basis.T.cols());
-  const auto Tb = basis.T.leftCols(nb);
-  const auto Tm = basis.T.rightCols(nr - nb);
-  const Eigen::MatrixXd KTb = MultiplyExtended(sys.K, Tb, Symmetry::kSymmetric);
-  const Eigen::MatrixXd KTm = MultiplySymmetric(sys.K, Tm);
-  body.K.resize(nr, nr);
-  body.K.topLeftCorner(nb, nb) = TransposeProductExtended(Tb, KTb);
-  body.K.topRightCorner(nb, nr - nb) = Tb.transpose() * KTm;
-  body.K.bottomLeftCorner(nr - nb, nb) = body.K.topRightCorner(nb, nr - nb).transpose();
-  body.K.bottomRightCorner(nr - nb, nr - nb) = Tm.transpose() * KTm;
+  {  // K T (N × nr) only while K̂ is formed
+    const auto Tb = basis.T.leftCols(nb);
+    const auto Tm = basis.T.rightCols(nr - nb);
+    const Eigen::MatrixXd KTb = MultiplyExtended(sys.K, Tb, Symmetry::kSymmetric);
+    const Eigen::MatrixXd KTm = MultiplySymmetric(sys.K, Tm);
+    body.K.resize(nr, nr);
+    body.K.topLeftCorner(nb, nb) = TransposeProductExtended(Tb, KTb);
+    body.K.topRightCorner(nb, nr - nb) = Tb.transpose() * KTm;
+    body.K.bottomLeftCorner(nr - nb, nb) = body.K.topRightCorner(nb, nr - nb).transpose();
+    body.K.bottomRightCorner(nr - nb, nr - nb) = Tm.transpose() * KTm;
+  }
   body.M = basis.T.transpose() * MultiplySymmetric(sys.M, basis.T);
   body.K = 0.5 * (body.K + body.K.transpose()).eval();
   body.M = 0.5 * (body.M + body.M.transpose()).eval();
@@ -143,6 +145,20 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   body.invariants = CalcInertiaInvariants(mesh.nodes, sys.M, Phi);
   body.times.Add("invariants", sw.seconds());
 
+  // The last use of T (N × nr): interfaces free in service take their static response in the
+  // inertial load cases. T is released before the certificate, whose factorisations set the
+  // reduction's peak memory (a 293k-DOF crankshaft: 173 MB of ~3.9 GB).
+  double release_seconds = 0.0;
+  std::string stiffening_support = basis.static_support;
+  if (job.geometric_stiffness && !job.stiffening_supports.empty()) {
+    sw.Restart();
+    stiffening_support =
+        ReleaseFreeInterfaces(body, basis, inertial_loads, job.stiffening_supports);
+    release_seconds = sw.seconds();
+  }
+  basis.T = Eigen::MatrixXd();
+  inertial_loads = Eigen::MatrixXd();
+
   // Damping in z: modal D = M̂ X diag(2 ζ ω) Xᵀ M̂ (as XᵀM̂X = I), or Rayleigh α M̂ + β K̂.
   body.damping = job.damping;
   const Eigen::VectorXd omega = body.modes.eigenvalues.cwiseMax(0.0).cwiseSqrt();
@@ -158,7 +174,7 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
 
   sw.Restart();
   CertificateOptions certificate_options = job.certificate;
-  certificate_options.stress_operator = stress_operator;
+  certificate_options.stress_operator.swap(stress_operator);  // not copied (Eigen 3.4 has no move)
   body.certificate = CertifyReduction(mesh, sys, material.density, basis, body.K, body.M,
                                       body.modes, Phi, certificate_options, progress);
   body.times.Add("certificate", sw.seconds());
@@ -186,14 +202,11 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   if (job.geometric_stiffness) {
     sw.Restart();
     if (progress) progress("geometric stiffness", 0.0);
-    std::string support = basis.static_support;
-    if (!job.stiffening_supports.empty())
-      support = ReleaseFreeInterfaces(body, basis, inertial_loads, job.stiffening_supports);
     body.geometric_stiffness =
         ReduceGeometricStiffness(mesh, material, sys.K, basis.static_responses, Phi);
     body.geometric_stiffness.reference_point = centre;
-    body.geometric_stiffness.support = support;
-    body.times.Add("geometric stiffness", load_seconds + sw.seconds());
+    body.geometric_stiffness.support = stiffening_support;
+    body.times.Add("geometric stiffness", load_seconds + release_seconds + sw.seconds());
   }
   if (job.keep_mesh_shapes) body.mesh_shapes = std::move(Phi);
   return body;

@@ -55,6 +55,7 @@ StaticExactness CheckStaticExactness(const Mesh& mesh, const CoupledModel& model
     pins = PinUnknowns(mesh, part);
   const SparseMatrix Gs = G.sparseView();
   const PinnedConstrainedSolver solver(Ky, Ry, pins, Gs);
+  ReturnFreedMemory();  // the factorisation's temporaries (K_ff, CHOLMOD's workspace)
   if (!solver.ok()) {
     out.note = "not run: " + solver.message();
     return out;

@@ -28,6 +28,22 @@ void FillRandom(Eigen::Ref<Eigen::MatrixXd> X, std::mt19937_64& rng) {
 
 Eigen::MatrixXd Symmetric(const Eigen::MatrixXd& A) { return 0.5 * (A + A.transpose()); }
 
+// X ← the columns X(:, order[0]), X(:, order[1]), … in place, by column swaps (no workspace).
+void PermuteColumns(const std::vector<int>& order, Eigen::MatrixXd& X) {
+  const int n = static_cast<int>(order.size());
+  std::vector<int> at(n), where(n);  // old column at a position; position of an old column
+  for (int i = 0; i < n; ++i) at[i] = where[i] = i;
+  for (int i = 0; i < n; ++i) {
+    const int j = where[order[i]];
+    if (j == i) continue;
+    X.col(i).swap(X.col(j));
+    where[at[i]] = j;
+    at[j] = at[i];
+    at[i] = order[i];
+    where[order[i]] = i;
+  }
+}
+
 // The Krylov–Schur workspace: basis U, its B-products, H and the coupling B_c.
 class Process {
  public:
@@ -325,34 +341,36 @@ BlockKrylovResult SolveBlockKrylovSchur(const BlockOperators& op, const BlockKry
     r.num_converged = process.nlock() + converged;
     if (progress) progress("eigen-solve", std::min(0.99, double(r.num_converged) / nev));
     if (converged == wanted && theta.size() >= wanted) {
-      // The locked pairs, then the active wanted ones; all sorted by θ descending.
+      // The locked pairs, then the active wanted ones, formed in the result and then sorted by
+      // θ descending in place (at the end of the solve U and BU are still held: no copies).
       const int nl = process.nlock();
-      Eigen::MatrixXd X(op.rows, nev), BX(op.rows, nev);
-      Eigen::VectorXd th(nev), res(nev);
-      X.leftCols(nl) = process.U().leftCols(nl);
-      BX.leftCols(nl) = process.BU().leftCols(nl);
-      for (int i = 0; i < nl; ++i) {
-        th[i] = process.locked_theta()[i];
-        res[i] = 0.0;  // below the tolerance when locked; dropped from the relation since
-      }
       const int na = process.k() - nl;
-      X.rightCols(wanted) = process.U().middleCols(nl, na) * Y.leftCols(wanted);
-      BX.rightCols(wanted) = process.BU().middleCols(nl, na) * Y.leftCols(wanted);
-      th.tail(wanted) = theta.head(wanted);
-      res.tail(wanted) = residual.head(wanted).cwiseQuotient(theta.head(wanted).cwiseAbs());
-      std::vector<int> order(nev);
-      for (int i = 0; i < nev; ++i) order[i] = i;
-      std::stable_sort(order.begin(), order.end(),
-                       [&](int a, int c) { return std::abs(th[a]) > std::abs(th[c]); });
       r.theta.resize(nev);
       r.residuals.resize(nev);
       r.vectors.resize(op.rows, nev);
       r.inner_vectors.resize(op.rows, nev);
+      r.vectors.leftCols(nl) = process.U().leftCols(nl);
+      r.inner_vectors.leftCols(nl) = process.BU().leftCols(nl);
+      for (int i = 0; i < nl; ++i) {
+        r.theta[i] = process.locked_theta()[i];
+        r.residuals[i] = 0.0;  // below the tolerance when locked; dropped from the relation since
+      }
+      r.vectors.rightCols(wanted).noalias() = process.U().middleCols(nl, na) * Y.leftCols(wanted);
+      r.inner_vectors.rightCols(wanted).noalias() =
+          process.BU().middleCols(nl, na) * Y.leftCols(wanted);
+      r.theta.tail(wanted) = theta.head(wanted);
+      r.residuals.tail(wanted) = residual.head(wanted).cwiseQuotient(theta.head(wanted).cwiseAbs());
+      std::vector<int> order(nev);
+      for (int i = 0; i < nev; ++i) order[i] = i;
+      std::stable_sort(order.begin(), order.end(), [&](int a, int c) {
+        return std::abs(r.theta[a]) > std::abs(r.theta[c]);
+      });
+      PermuteColumns(order, r.vectors);
+      PermuteColumns(order, r.inner_vectors);
+      const Eigen::VectorXd th = r.theta, res = r.residuals;
       for (int i = 0; i < nev; ++i) {
         r.theta[i] = th[order[i]];
         r.residuals[i] = res[order[i]];
-        r.vectors.col(i) = X.col(order[i]);
-        r.inner_vectors.col(i) = BX.col(order[i]);
       }
       r.num_converged = nev;
       return finish(BlockKrylovStatus::kSuccessful);
