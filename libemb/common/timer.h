@@ -40,10 +40,12 @@ struct PhaseTimes {
 long long PeakResidentBytes();
 
 /// Gives the pages malloc holds free back to the system (glibc's malloc_trim; nothing
-/// elsewhere). Called after a phase that freed a factorisation: blocks freed by the worker
-/// threads' arenas otherwise stay resident, and the next phase's peak stacks on them (a
-/// 293k-DOF reduction held ~1.5 GB of freed memory into its certificate, measured while
-/// writing this). Cost: a walk over the heap, milliseconds.
+/// elsewhere). Called after a phase that freed a factorisation: freed blocks otherwise stay
+/// resident, and the next phase's peak stacks on them (a 293k-DOF reduction held ~1.5 GB of
+/// freed memory into its certificate, measured while writing this). Even blocks of a GB do:
+/// libsuperlu_dist, loaded with PETSc, switches mmap off for the whole process when it loads
+/// (mallopt(M_MMAP_MAX, 0), seen in a debugger), so every allocation comes from the heaps.
+/// Cost: a walk over the heap, milliseconds.
 void ReturnFreedMemory();
 
 }  // namespace emb
