@@ -111,9 +111,9 @@ struct ModesCommand {
     times.Add("supports", sw.seconds());
 
     sw.Restart();
-    // The factorisation's ordering needs only the mesh: METIS runs beside the assembly (whose
-    // cell-order additions leave a core free), not after it. Its own time is part of one
-    // factorisation's cost; only what is left of it when the assembly ends is a phase.
+    // The factorisation's ordering needs only the mesh: METIS runs on its own thread beside
+    // the assembly, not after it. Its own time is part of one factorisation's cost; only what
+    // is left of it when the assembly ends is a phase.
     std::future<std::vector<int>> ordering;
     double ordering_seconds = 0.0;
     if (!distributed)
