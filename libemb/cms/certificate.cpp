@@ -136,8 +136,7 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
     // Blocks of kReferenceBlockSize unless the options say: the Krylov basis (about the wanted
     // pairs plus four blocks, block_krylov_schur.h) is held with the full model's factorisation
     // and the reduced body's shapes, where a reduction's memory peaks. On the 293k-DOF
-    // crankshaft (21 pairs) blocks of 8 held 61 basis columns instead of 101 (−190 MB) and
-    // took 128 solves instead of 176.
+    // crankshaft (21 pairs) blocks of 8 hold 61 basis columns instead of 101 (−190 MB).
     constexpr int kReferenceBlockSize = 8;
     if (so.block_size == 0) so.block_size = kReferenceBlockSize;
     const SparseMatrix none(0, model.size());

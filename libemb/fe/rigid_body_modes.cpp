@@ -3,6 +3,8 @@
 #include <numeric>
 #include <vector>
 
+#include "libemb/common/skew.h"
+
 namespace emb {
 namespace {
 
@@ -65,8 +67,7 @@ Eigen::MatrixXd PieceRigidBodyModes(const Mesh& mesh, int max_pieces) {
     const Eigen::Vector3d r = mesh.nodes.col(i) - centroid[p] / count[p];
     auto block = R.block<3, 6>(3 * i, 6 * p);
     block.leftCols<3>().setIdentity();
-    // θ × r = −[r]× θ
-    block.rightCols<3>() << 0.0, r.z(), -r.y(), -r.z(), 0.0, r.x(), r.y(), -r.x(), 0.0;
+    block.rightCols<3>() = -Skew(r);  // θ × r = −[r]× θ
   }
   return R;
 }

@@ -283,21 +283,25 @@ void OrthonormalizeInner(const BlockOperators& op, Eigen::MatrixXd& Z, Eigen::Ma
   op.inner(Z, BZ);
 }
 
+// The eigenvalue below which a pair of the solver's pencil lies in the null space of K:
+// 1e-10·‖K‖₁/‖M‖₁, the round-off of the stiffness scale.
+double NullLevel(const ShiftInvertSolver& solver) {
+  return 1e-10 * NormOne(solver.K()) / std::max(NormOne(solver.M()), 1e-300);
+}
+
 // The null space of K on the solver's subspace (λ = 0: the rigid motions of a free part),
 // for a shift σ < 0. Why: its θ = 1/|σ| is 10⁵–10⁸ times the elastic ones, and a Krylov
 // relation is only accurate to ε·max θ — left in the process, the cluster caps the elastic
 // pairs' accuracy (backward errors 1e-7 measured on a beam, with 465 restarts). Found by
 // inverse iteration at σ (null vectors grow by (λ − σ)/|σ| ≥ 10⁵ per step against the rest:
 // two block solves leave them accurate to the solves' round-off), identified by
-// Rayleigh–Ritz with K (λ < kNullRoundOff·‖K‖₁/‖M‖₁, the round-off of the stiffness scale),
-// and locked from the start. A residual correction z ← z − A⁻¹(K z) in extended precision
+// Rayleigh–Ritz with K (λ below NullLevel) and locked from the start. A residual correction z ← z − A⁻¹(K z) in extended precision
 // was tried and changed no backward error (beam 2.3e-12, crankshaft 1.0e-13): not kept.
 Deflation FindNullSpace(const ShiftInvertSolver& solver, const BlockOperators& op, double sigma,
                         int max_vectors, int& solved) {
-  constexpr double kNullRoundOff = 1e-10;
   constexpr int kInverseSteps = 1;
   const SparseMatrix& K = solver.K();
-  const double scale = NormOne(K) / std::max(NormOne(solver.M()), 1e-300);
+  const double null_level = NullLevel(solver);
   Deflation d;
   if (max_vectors < 1) return d;
   for (int bz = std::min(8, max_vectors);; bz = std::min(2 * bz, max_vectors)) {
@@ -318,7 +322,7 @@ Deflation FindNullSpace(const ShiftInvertSolver& solver, const BlockOperators& o
     const DenseEigenpairs rr = SolveDenseEigenpairs(Z.transpose() * KZ, Z.transpose() * BZ, false);
     if (!rr.ok) return d;
     int nulls = 0;
-    while (nulls < bz && std::abs(rr.eigenvalues[nulls]) < kNullRoundOff * scale) ++nulls;
+    while (nulls < bz && std::abs(rr.eigenvalues[nulls]) < null_level) ++nulls;
     if (nulls == 0) return d;
     if (nulls == bz && bz < max_vectors) continue;  // the null space may be larger
     Eigen::MatrixXd N = Z * rr.vectors.leftCols(nulls), BN;
@@ -374,7 +378,7 @@ Deflation KnownPairs(const ShiftInvertSolver& solver, const BlockOperators& op,
   EMB_THROW_IF(Z.rows() != op.rows || lambda.size() != r,
                "known eigenpairs: expected " << op.rows << " x " << lambda.size()
                                              << " vectors, got " << Z.rows() << " x " << r);
-  const double null_level = 1e-10 * NormOne(solver.K()) / std::max(NormOne(solver.M()), 1e-300);
+  const double null_level = NullLevel(solver);
   if (!((lambda.array() - sigma).minCoeff() > 0.0) || !(lambda.maxCoeff() > null_level)) return d;
   d.vectors = Z;
   OrthonormalizeInner(op, d.vectors, d.inner_vectors);

@@ -39,6 +39,15 @@ Mesh TwoBeams() {
   return a;
 }
 
+// The block method for the lowest `modes` at a shift below the spectrum.
+EigenSolverOptions BlockOptions(int modes) {
+  EigenSolverOptions o;
+  o.num_modes = modes;
+  o.shift = -1e2;
+  o.method = EigenMethod::kBlock;
+  return o;
+}
+
 double NullResidual(const SparseMatrix& K, const Eigen::MatrixXd& R) {
   double worst = 0.0, k1 = NormOne(K);
   for (int j = 0; j < R.cols(); ++j)
@@ -87,10 +96,7 @@ TEST(PieceRigidBodyModes, OneCellIsOnePieceWhateverItsNodeOrder) {
 TEST(PieceRigidBodyModes, LockedNullSpaceGivesTheSearchedModesWithFewerSolves) {
   const Mesh mesh = TwoBeams();
   const SystemMatrices sys = AssembleSystem(mesh, IsotropicMaterial{});
-  EigenSolverOptions o;
-  o.num_modes = 20;
-  o.shift = -1e2;
-  o.method = EigenMethod::kBlock;
+  EigenSolverOptions o = BlockOptions(20);
   const EigenResult searched = SolveGeneralizedEigen(sys.K, sys.M, o);
   o.null_space = PieceRigidBodyModes(mesh, 2);
   const EigenResult locked = SolveGeneralizedEigen(sys.K, sys.M, o);
@@ -110,10 +116,7 @@ TEST(PieceRigidBodyModes, LockedNullSpaceGivesTheSearchedModesWithFewerSolves) {
 TEST(PieceRigidBodyModes, NotANullSpaceIsSearchedForInstead) {
   const Mesh mesh = Beam();
   const SystemMatrices sys = AssembleSystem(mesh, IsotropicMaterial{});
-  EigenSolverOptions o;
-  o.num_modes = 12;
-  o.shift = -1e2;
-  o.method = EigenMethod::kBlock;
+  EigenSolverOptions o = BlockOptions(12);
   Eigen::MatrixXd R = PieceRigidBodyModes(mesh, 1);
   // A stretch u_x = x in place of the x translation: K does not annihilate it.
   for (int i = 0; i < mesh.num_nodes(); ++i) R(3 * i, 0) = mesh.nodes(0, i);
