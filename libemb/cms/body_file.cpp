@@ -174,7 +174,9 @@ void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const 
   AtomicFile out(path);
   const bool shapes = mesh != nullptr && body.mesh_shapes.size() > 0;
   {
-    H5File h5(out.temp_path(), H5File::Mode::kCreate);
+    std::optional<H5File> file;
+    out.Create([&](const std::string& temp) { file.emplace(temp, H5File::Mode::kCreate); });
+    H5File& h5 = *file;
     h5.SetAttribute("/", "format", std::string(kBodyFormat));
     h5.SetAttribute("/", "format_version", static_cast<long long>(kBodyFormatVersion));
     h5.SetAttribute("/", "emb_version", std::string(EMB_VERSION));

@@ -25,13 +25,18 @@ OutputLock::OutputLock(const std::string& output) : lock_path_(LockPath(output))
   // Retry when the lock file was removed between our open and our flock by the process
   // that held it: then we hold a lock on a file nobody else will open.
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const int fd = ::open(lock_path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    // Registered before it is made, made under the registry's lock (signal_cleanup.h): a
+    // termination finds it either absent or registered.
+    CleanupOnSignal cleanup(lock_path_);
+    const int fd = cleanup.Create(
+        [&] { return ::open(lock_path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644); });
     EMB_THROW_IF(fd < 0, "output '" << output << "': cannot create the lock file '" << lock_path_
                                     << "': " << std::strerror(errno));
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       char pid[32] = {0};
       const ssize_t n = ::read(fd, pid, sizeof pid - 1);
       ::close(fd);
+      cleanup.Release();  // the file is the other process's
       EMB_THROW(InputError, "output '" << output << "' is being written by another emb process"
                                        << (n > 0 ? " (pid " + std::string(pid, n) + ")" : "")
                                        << "; wait for it to finish or choose another output");
@@ -44,10 +49,11 @@ OutputLock::OutputLock(const std::string& output) : lock_path_(LockPath(output))
         // The pid is only a courtesy for the message of a second process.
       }
       fd_ = fd;
-      cleanup_ = CleanupOnSignal(lock_path_);
+      cleanup_ = std::move(cleanup);
       return;
     }
     ::close(fd);
+    cleanup.Release();  // a name the previous holder removed: not ours
   }
   EMB_THROW(InputError, "output '" << output << "': could not lock '" << lock_path_ << "'");
 }
@@ -74,8 +80,7 @@ void OutputLock::Unlock() {
   if (fd_ < 0) return;
   // Remove the name while still holding the lock: a process that opened it meanwhile sees
   // the inode change and retries on a fresh file.
-  ::unlink(lock_path_.c_str());
-  cleanup_.Release();
+  cleanup_.Release([&] { ::unlink(lock_path_.c_str()); });
   ::close(fd_);
   fd_ = -1;
 }

@@ -1,6 +1,7 @@
 #include "libemb/results/stress_field_file.h"
 
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -118,7 +119,9 @@ void WriteStressFields(const std::string& h5_path, const std::string& xdmf_path,
   x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n";
   const std::string h5_name = std::filesystem::path(h5_path).filename().string();
   {
-    H5File h5(h5_out.temp_path(), H5File::Mode::kCreate);
+    std::optional<H5File> file;
+    h5_out.Create([&](const std::string& temp) { file.emplace(temp, H5File::Mode::kCreate); });
+    H5File& h5 = *file;
     h5.SetAttribute("/", "format", std::string("emb.stress_fields"));
     h5.SetAttribute("/", "units", std::string("SI: m, s, Pa; stress in Voigt order xx, yy, zz, "
                                               "xy, yz, zx, mesh axes"));

@@ -276,6 +276,11 @@ def run_case(case, ctx):
             if proc.poll() is None:
                 sent = SIGNALS[sig["sig"]]
                 proc.send_signal(sent)
+                # A signal case is timing-dependent: where the signal lands depends on the
+                # machine's speed. Its report says when it was sent (the systematic sweep over
+                # every moment is tests/tools/signal_timing_test.py).
+                env["how"] = (f"timing-dependent: SIG{sig['sig']} sent "
+                              f"{time.monotonic() - start:.2f} s after the start")
                 if sig.get("again"):
                     time.sleep(float(sig["again"]))
                     if proc.poll() is None:
@@ -293,7 +298,9 @@ def run_case(case, ctx):
         expected = case["exit"]
         if sig and isinstance(expected, str) and expected == "signal":
             if sent is None:
-                problems.append("the command ended before the signal could be sent")
+                problems.append(f"the command ended after {time.monotonic() - start:.2f} s, "
+                                "before the signal could be sent (timing-dependent: this "
+                                "machine ran it faster than the case assumes)")
             elif rc != -sent:
                 problems.append(f"expected death by {sig['sig']}, got exit {rc}")
         elif rc < 0 and (sent is None or rc != -sent):

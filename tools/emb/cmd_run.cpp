@@ -121,6 +121,10 @@ struct RunCommand {
     ReportProgress(progress, "assembly", 0.0);
     const mbs::PreparedRun run = mbs::PrepareRun(sc.system, st);
     const double t_prepare = sw.seconds();
+    // From the results file's creation to its close, the first SIGINT/SIGTERM stops the run
+    // at the next sample (interrupt.h), so the file always ends with its status; a signal that
+    // comes after the last sample ends the process once the files are complete.
+    std::optional<GracefulStop> graceful(std::in_place);
     std::optional<scene::ResultsWriter> writer;
     std::optional<scene::CsvWriter> csv_writer;
     if (!h5.empty()) {
@@ -139,8 +143,6 @@ struct RunCommand {
     sw.Restart();
     mbs::RunResult r;
     {
-      // The first SIGINT/SIGTERM stops the run at the next sample (interrupt.h).
-      const GracefulStop graceful;
       try {
         r = mbs::RunAnalysis(
             run, st,
@@ -183,6 +185,10 @@ struct RunCommand {
     }
     if (csv_writer) csv_writer->Close();
     if (!fields_h5.empty()) stress.WriteFields(fields_h5, fields_xdmf);
+    graceful.reset();
+    if (const int sig = StopSignal())
+      throw Interrupted(sig, std::string("interrupted by ") + SignalName(sig) +
+                                 " after the run finished; its results are complete");
     FinishProgressLine();
     for (const auto& w : run.warnings) std::cerr << "emb: warning: " << w << "\n";
     for (const auto& w : r.warnings) std::cerr << "emb: warning: " << w << "\n";
