@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/flexible/output_points.h"
+#include "libemb/mbs/parts/output_points.h"
 #include "libemb/scene/yaml_reader.h"
 
 namespace emb::scene {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/flexible/stress_probe.h"
+#include "libemb/mbs/parts/stress_probe.h"
 #include "libemb/scene/yaml_reader.h"
 
 namespace emb::scene {

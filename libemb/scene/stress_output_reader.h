@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "libemb/mbs/core/system.h"
-#include "libemb/mbs/flexible/flexible_body.h"
+#include "libemb/mbs/parts/flexible_body.h"
 #include "libemb/scene/scene.h"
 
 namespace emb::scene {

@@ -23,7 +23,7 @@
 #include <Eigen/Core>
 
 #include "libemb/mbs/analysis/analysis.h"
-#include "libemb/mbs/flexible/stress_probe.h"
+#include "libemb/mbs/parts/stress_probe.h"
 #include "libemb/scene/scene.h"
 
 namespace emb::scene {

@@ -18,8 +18,8 @@ with tempfile.TemporaryDirectory() as tmp:
     t = pathlib.Path(tmp)
     (t / "libemb/mbs/core").mkdir(parents=True)
     (t / "libemb/mbs/analysis").mkdir(parents=True)
-    (t / "libemb/mbs/analysis/ggl_dae.h").write_text('#include "libemb/mbs/core/system.h"\n')
-    (t / "libemb/mbs/core/system.h").write_text('#pragma once\n#include "libemb/mbs/analysis/ggl_dae.h"\n')
+    (t / "libemb/mbs/dae/ggl_dae.h").write_text('#include "libemb/mbs/core/system.h"\n')
+    (t / "libemb/mbs/core/system.h").write_text('#pragma once\n#include "libemb/mbs/dae/ggl_dae.h"\n')
     bad = subprocess.run([sys.executable, str(checker), str(t)], capture_output=True, text=True)
     if bad.returncode != 1 or "libemb/mbs/core/system.h:2" not in bad.stdout:
         print(bad.stdout, bad.stderr)

@@ -10,11 +10,11 @@
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/analysis/analysis_internal.h"
-#include "libemb/mbs/analysis/event_handling.h"
+#include "libemb/mbs/dae/event_handling.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
 #include "libemb/mbs/constraints/out_of_plane.h"
 #include "libemb/integrators/generalized_alpha.h"
-#include "libemb/mbs/analysis/ggl_dae.h"
+#include "libemb/mbs/dae/ggl_dae.h"
 #include "libemb/mbs/analysis/joint_coordinates.h"
 #include "libemb/mbs/constraints/reactions.h"
 #include "libemb/mbs/core/rotation.h"
