@@ -55,11 +55,13 @@ Eigen::VectorXd CalcElementForces(const System& system, const std::vector<BodyKi
 
 void AddElementForces(const System& system, const std::vector<BodyKinematics>& bodies,
                       const std::vector<MarkerKinematics>& markers, double t,
-                      ConstraintWorkspace* workspace, Eigen::Ref<Eigen::VectorXd> f) {
+                      ConstraintWorkspace* workspace, Eigen::Ref<Eigen::VectorXd> f,
+                      DomainFailure* failure) {
   const auto& forces = system.force_elements();
   for (std::size_t k = 0; k < forces.size(); ++k) {
     ForceContext ctx{&system, &bodies, t, workspace, system.force_angle_slot(static_cast<int>(k))};
     ctx.markers = &markers;
+    ctx.failure = failure;
     forces[k]->AddForces(ctx, f);
   }
 }

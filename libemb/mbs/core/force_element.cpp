@@ -5,6 +5,14 @@
 
 namespace emb::mbs {
 
+void ForceContext::Fail(const std::string& message) const {
+  if (failure == nullptr) throw NumericalError(message);
+  if (!failure->failed) {
+    failure->failed = true;
+    failure->message = message;
+  }
+}
+
 const MarkerKinematics& ForceContext::Marker(int m, MarkerKinematics* scratch) const {
   if (markers != nullptr) return (*markers)[m];
   CalcMarkerKinematics(*system, *bodies, m, scratch);

@@ -17,6 +17,14 @@ namespace emb::mbs {
 class ConstraintWorkspace;
 class ForceJacobianSink;  // forces/force_jacobian.h
 
+/// Where force elements report that they cannot be evaluated at a state (ForceContext::Fail):
+/// the first report is kept. The caller owns it and decides what a failure means (the GGL DAE:
+/// a recoverable failure, the integrator retries with a smaller step).
+struct DomainFailure {
+  bool failed{false};
+  std::string message;
+};
+
 /// What a force element may read: all body kinematics at (q, v), the time, and (for
 /// elements that follow a joint angle across turns) the run's workspace with the first of
 /// its angle slots.
@@ -33,6 +41,13 @@ struct ForceContext {
   const std::vector<MarkerKinematics>* markers{nullptr};
   /// Event functions only (may be null elsewhere): the accelerations v' (size nv).
   const Eigen::VectorXd* vdot{nullptr};
+  /// The caller's failure channel (may be null).
+  DomainFailure* failure{nullptr};
+
+  /// An element cannot be evaluated at this state (a journal at its shell, an angle at its
+  /// singularity): recorded in `failure` if the caller gave one (the element then returns
+  /// without adding anything), otherwise thrown as NumericalError.
+  void Fail(const std::string& message) const;
 
   /// Marker m at this state: the shared one, or evaluated into `scratch` (and returned).
   const MarkerKinematics& Marker(int m, MarkerKinematics* scratch) const;

@@ -1,5 +1,6 @@
 #include "libemb/mbs/dae/ggl_dae.h"
 
+#include <functional>
 #include <vector>
 
 #include "libemb/common/error.h"
@@ -11,18 +12,30 @@
 
 namespace emb::mbs {
 
-GglDae::GglDae(const System& system)
+GglDae::GglDae(const System& system) : GglDae(system, nullptr) {}
+
+GglDae::GglDae(const System& system, GglWorkspace* workspace)
     : system_(system),
       layout_(system.layout().nq(), system.layout().nv(), system.num_equations(),
               system.layout().num_moving()),
-      ws_(std::make_unique<GglWorkspace>(system)) {
+      own_(workspace ? nullptr : std::make_unique<GglWorkspace>(system)),
+      ws_(workspace ? workspace : own_.get()) {
+  EMB_CHECK(ws_->body_maps.size() == static_cast<std::size_t>(system.num_bodies()));
   InitRoots();
 }
 
 GglDae::~GglDae() = default;
 
 GglWorkspace::GglWorkspace(const System& system)
-    : constraint(system), flexible(static_cast<std::size_t>(system.num_bodies())) {}
+    : constraint(system),
+      flexible(static_cast<std::size_t>(system.num_bodies())),
+      body_maps(static_cast<std::size_t>(system.num_bodies())) {
+  int ne_max = 0;
+  for (int b = 1; b < system.num_bodies(); ++b)
+    ne_max = std::max(ne_max, system.layout().num_elastic(b));
+  accel.setZero(6 + ne_max);
+  Ma.setZero(6 + ne_max);
+}
 
 bool GglDae::UpdateKinematics(const Eigen::Ref<const Eigen::VectorXd>& y) const {
   const StateLayout& L = system_.layout();
@@ -67,41 +80,55 @@ Eigen::Matrix4d RateMatrixDerivative(const Eigen::Vector3d& w) {
 class BodyBlockEmitter {
  public:
   BodyBlockEmitter(const StateLayout& L, const GglLayout& G, const std::vector<Matrix67>& X,
-                   MatrixAssembler* A)
-      : L_(L), G_(G), X_(X), A_(A) {}
+                   MatrixAssembler* A, ScratchMatrices* scratch)
+      : L_(L), G_(G), X_(X), A_(A), scratch_(scratch) {}
 
-  // Rows of body a (q-space if `q_rows`, else v-space) x columns of body b (q or v).
-  void Block(int a, bool q_rows, int b, bool q_cols, const Eigen::MatrixXd& K) const {
+  // Rows of body a (q-space if `q_rows`, else v-space) x columns of body b (q or v). Blocks
+  // are read in place; the products with X go through fixed-size temporaries or the
+  // workspace's scratch (buffers 8, 9): nothing is allocated.
+  void Block(int a, bool q_rows, int b, bool q_cols,
+             const Eigen::Ref<const Eigen::MatrixXd>& K) const {
     ForEachBodySubBlock(L_, a, b, [&](int r, int c, int i0, int j0, int nr, int nc) {
-      const Eigen::MatrixXd sub = K.block(i0, j0, nr, nc);
+      const auto sub = K.block(i0, j0, nr, nc);
       const bool rigid_row = i0 == 0, rigid_col = j0 == 0;
       const int row = q_rows ? (rigid_row ? G_.q() + L_.position(a) : G_.q() + L_.elastic_q(a))
                              : G_.v() + r;
       const int col = q_cols ? (rigid_col ? G_.q() + L_.position(b) : G_.q() + L_.elastic_q(b))
                              : G_.v() + c;
-      if (q_rows && rigid_row && q_cols && rigid_col)
-        A_->AddBlock(row, col, X_[a].transpose() * sub * X_[b]);
-      else if (q_rows && rigid_row)
-        A_->AddBlock(row, col, X_[a].transpose() * sub);
-      else if (q_cols && rigid_col)
-        A_->AddBlock(row, col, sub * X_[b]);
-      else
+      if (q_rows && rigid_row && q_cols && rigid_col) {
+        const Matrix6d s6 = sub;
+        A_->AddBlock(row, col, Eigen::Matrix<double, 7, 7>(X_[a].transpose() * s6 * X_[b]));
+      } else if (q_rows && rigid_row) {
+        Eigen::Map<Eigen::MatrixXd> out = scratch_->View(8, 7, nc);
+        out.noalias() = X_[a].transpose() * sub;
+        A_->AddBlock(row, col, out);
+      } else if (q_cols && rigid_col) {
+        Eigen::Map<Eigen::MatrixXd> out = scratch_->View(9, nr, 7);
+        out.noalias() = sub * X_[b];
+        A_->AddBlock(row, col, out);
+      } else {
         A_->AddBlock(row, col, sub);
+      }
     });
   }
-  // A single row `row` x columns of body b.
-  void Row(int row, int b, bool q_cols, const Eigen::RowVectorXd& g) const {
-    A_->AddBlock(row, q_cols ? G_.q() + L_.position(b) : G_.v() + L_.velocity(b),
-                 q_cols ? Eigen::RowVectorXd(g.head<6>() * X_[b]) : Eigen::RowVectorXd(g.head<6>()));
+  // A single row `row` x columns of body b (g: 6 + ne entries).
+  void Row(int row, int b, bool q_cols, const Eigen::Ref<const Eigen::RowVectorXd>& g) const {
+    const Eigen::Matrix<double, 1, 6> g6 = g.head<6>();
+    if (q_cols)
+      A_->AddBlock(row, G_.q() + L_.position(b), Eigen::Matrix<double, 1, 7>(g6 * X_[b]));
+    else
+      A_->AddBlock(row, G_.v() + L_.velocity(b), g6);
     const int ne = L_.num_elastic(b);
     if (ne)
       A_->AddBlock(row, q_cols ? G_.q() + L_.elastic_q(b) : G_.v() + L_.elastic_v(b), g.tail(ne));
   }
-  // Rows of body b x a single column `col`.
-  void Column(int b, bool q_rows, int col, const Eigen::VectorXd& g) const {
-    A_->AddBlock(q_rows ? G_.q() + L_.position(b) : G_.v() + L_.velocity(b), col,
-                 q_rows ? Eigen::VectorXd(X_[b].transpose() * g.head<6>())
-                        : Eigen::VectorXd(g.head<6>()));
+  // Rows of body b x a single column `col` (g: 6 + ne entries).
+  void Column(int b, bool q_rows, int col, const Eigen::Ref<const Eigen::VectorXd>& g) const {
+    const Eigen::Matrix<double, 6, 1> g6 = g.head<6>();
+    if (q_rows)
+      A_->AddBlock(G_.q() + L_.position(b), col, Eigen::Matrix<double, 7, 1>(X_[b].transpose() * g6));
+    else
+      A_->AddBlock(G_.v() + L_.velocity(b), col, g6);
     const int ne = L_.num_elastic(b);
     if (ne)
       A_->AddBlock(q_rows ? G_.q() + L_.elastic_q(b) : G_.v() + L_.elastic_v(b), col, g.tail(ne));
@@ -112,21 +139,30 @@ class BodyBlockEmitter {
   const GglLayout& G_;
   const std::vector<Matrix67>& X_;
   MatrixAssembler* A_;
+  ScratchMatrices* scratch_;
 };
 
 // Force elements' blocks into the dynamic rows: -K_ab (q columns of b) and -D_ab (v columns).
 class GglForceSink final : public ForceJacobianSink {
  public:
-  explicit GglForceSink(const BodyBlockEmitter& emit) : emit_(emit) {}
-  void AddStiffness(int a, int b, const Eigen::MatrixXd& K) override {
-    emit_.Block(a, false, b, true, -K);
+  GglForceSink(const BodyBlockEmitter& emit, ScratchMatrices* scratch)
+      : emit_(emit), scratch_(scratch) {
+    UseScratch(scratch);
   }
-  void AddDamping(int a, int b, const Eigen::MatrixXd& D) override {
-    emit_.Block(a, false, b, false, -D);
+  void AddStiffness(int a, int b, const Eigen::Ref<const Eigen::MatrixXd>& K) override {
+    Eigen::Map<Eigen::MatrixXd> minus = scratch_->View(10, K.rows(), K.cols());
+    minus = -K;
+    emit_.Block(a, false, b, true, minus);
+  }
+  void AddDamping(int a, int b, const Eigen::Ref<const Eigen::MatrixXd>& D) override {
+    Eigen::Map<Eigen::MatrixXd> minus = scratch_->View(10, D.rows(), D.cols());
+    minus = -D;
+    emit_.Block(a, false, b, false, minus);
   }
 
  private:
   const BodyBlockEmitter& emit_;
+  ScratchMatrices* scratch_;
 };
 
 
@@ -167,7 +203,12 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
     W.f.segment<3>(L.velocity(b)) += body.mass * system_.gravity();
     W.f.segment<3>(L.angular_velocity(b)) -= k.omega_B.cross(body.inertia_B * k.omega_B);
   }
-  AddElementForces(system_, W.bodies, W.markers, t, &W.constraint, W.f);
+  W.failure.failed = false;
+  AddElementForces(system_, W.bodies, W.markers, t, &W.constraint, W.f, &W.failure);
+  if (W.failure.failed) {  // an element outside its domain: the integrator cuts the step
+    ReportRecoverableFailure(W.failure.message);
+    return false;
+  }
 
   // Kinematic rows: q' - H v + B^T mu, B^T mu = X_b^T (C^T mu)_b + [0; e_b mu_b].
   W.w.noalias() = c.jacobian.transpose() * mu.head(G.m());
@@ -189,12 +230,13 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
       r.segment(G.q() + L.elastic_q(b), ne) = yp.segment(G.q() + L.elastic_q(b), ne) -
                                               v.segment(L.elastic_v(b), ne) +
                                               W.w.segment(L.elastic_v(b), ne);
-      W.accel.resize(6 + ne);
-      W.accel << vdot.segment<6>(L.velocity(b)), vdot.segment(L.elastic_v(b), ne);
-      W.Ma.noalias() = W.flexible[b].mass * W.accel;
+      auto accel = W.accel.head(6 + ne);
+      auto Ma = W.Ma.head(6 + ne);
+      accel << vdot.segment<6>(L.velocity(b)), vdot.segment(L.elastic_v(b), ne);
+      Ma.noalias() = W.flexible[b].mass * accel;
       r.segment<6>(G.v() + L.velocity(b)) =
-          W.Ma.head<6>() - W.f.segment<6>(L.velocity(b)) + W.reaction.segment<6>(L.velocity(b));
-      r.segment(G.v() + L.elastic_v(b), ne) = W.Ma.tail(ne) - W.f.segment(L.elastic_v(b), ne) +
+          Ma.head<6>() - W.f.segment<6>(L.velocity(b)) + W.reaction.segment<6>(L.velocity(b));
+      r.segment(G.v() + L.elastic_v(b), ne) = Ma.tail(ne) - W.f.segment(L.elastic_v(b), ne) +
                                               W.reaction.segment(L.elastic_v(b), ne);
       continue;
     }
@@ -214,29 +256,32 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
   return r.allFinite();
 }
 
-void GglDae::DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+bool GglDae::DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                             const Eigen::Ref<const Eigen::VectorXd>& yp,
                             Eigen::Ref<Eigen::MatrixXd> J) const {
   ws_->assembler.BeginDense(J);
-  AssembleJacobian(t, cj, y, yp, &ws_->assembler);
+  return AssembleJacobian(t, cj, y, yp, &ws_->assembler);
 }
 
-void GglDae::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+bool GglDae::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                                   const Eigen::Ref<const Eigen::VectorXd>& yp,
                                   SparseMatrixd* J) const {
   ws_->assembler.BeginSparse(J, layout_.size(), layout_.size());
-  AssembleJacobian(t, cj, y, yp, &ws_->assembler);
+  return AssembleJacobian(t, cj, y, yp, &ws_->assembler);
 }
 
-void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+bool GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                               const Eigen::Ref<const Eigen::VectorXd>& yp,
                               MatrixAssembler* A) const {
   const StateLayout& L = system_.layout();
   const GglLayout& G = layout_;
   GglWorkspace& W = *ws_;
   const int m = G.m();
-  const bool evaluable = UpdateKinematics(y);
-  EMB_CHECK(evaluable);
+  if (!UpdateKinematics(y)) {  // a state the residual cannot be evaluated at either
+    A->Abandon();
+    ReportRecoverableFailure("the iteration matrix at a vanishing quaternion or non-finite state");
+    return false;
+  }
   const auto q = y.segment(G.q(), G.nq());
   const auto v = y.segment(G.v(), G.nv());
   const auto lambda = y.segment(G.lambda(), m);
@@ -244,9 +289,10 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
   CalcConstraints(system_, W.markers, t, &W.constraint, &W.constraints);
   W.w.noalias() = W.constraints.jacobian.transpose() * mu.head(m);
   const Eigen::VectorXd& w_all = W.w;
-  std::vector<Matrix67> X(system_.num_bodies());
+  std::vector<Matrix67>& X = W.body_maps;
   for (int b = 1; b < system_.num_bodies(); ++b) X[b] = MakeBodyMap(q.segment<4>(L.quaternion(b)));
-  const BodyBlockEmitter emit(L, G, X, A);
+  ScratchMatrices& scratch = W.scratch;
+  const BodyBlockEmitter emit(L, G, X, A, &scratch);
 
   // Per body: cj I and the derivative of the maps in the kinematic rows, H, the
   // unit-quaternion multiplier, cj M and the gyroscopic term (flexible bodies: cj M(eta)
@@ -278,17 +324,21 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
         A->Add(eq + j, eq + j, cj);
         A->Add(eq + j, ev + j, -1.0);
       }
-      W.accel.resize(6 + ne);
-      W.accel << yp.segment<6>(G.v() + L.velocity(b)), yp.segment(G.v() + L.elastic_v(b), ne);
+      auto accel_b = W.accel.head(6 + ne);
+      accel_b << yp.segment<6>(G.v() + L.velocity(b)), yp.segment(G.v() + L.elastic_v(b), ne);
+      const Eigen::Ref<const Eigen::VectorXd> accel(accel_b);
       const BodyKinematics& k = W.bodies[b];
       const Eigen::Vector3d a_B =
           k.R_WB.transpose() * (vdot.segment<3>(L.velocity(b)) - system_.gravity());
       FlexibleTerms& ft = W.flexible[b];
       CalcFlexibleTerms(*system_.body(b).elastic, k.p_WB, k.R_WB, k.v_WB, k.omega_B, k.eta,
-                        k.eta_dot, system_.gravity(), a_B, kFlexibleDerivatives, &W.accel, &ft);
+                        k.eta_dot, system_.gravity(), a_B, kFlexibleDerivatives, &accel, &ft);
       // Residual rows M(eta) a - f: d/da = M - df/da, d/dv = -df/dv, d/dx = d(M a)/dx - df/dx.
-      emit.Block(b, false, b, false, cj * (ft.mass - ft.force_accel) - ft.damping);
-      emit.Block(b, false, b, true, ft.inertia_stiffness - ft.stiffness);
+      Eigen::Map<Eigen::MatrixXd> block = scratch.View(12, 6 + ne, 6 + ne);
+      block = cj * (ft.mass - ft.force_accel) - ft.damping;
+      emit.Block(b, false, b, false, block);
+      block = ft.inertia_stiffness - ft.stiffness;
+      emit.Block(b, false, b, true, block);
       continue;
     }
     // d(omega x J omega)/d omega = [omega x] J - [(J omega) x]; f has its negative.
@@ -321,12 +371,26 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
     Vector6 g_lambda[2]{Vector6::Zero(), Vector6::Zero()}, g_mu[2]{Vector6::Zero(), Vector6::Zero()};
     bool open() const { return body[0] >= 0; }
   } run;
-  auto side_map = [](const MarkerKinematics* M, const Eigen::Matrix<double, 6, 6>& H_left,
-                     const MarkerKinematics* Mu) {
-    // map_s^T H map_u with the identity for a rigid side.
-    Eigen::MatrixXd out = H_left;
-    if (Mu) out = out * Mu->map;
-    if (M) out = M->map.transpose() * out;
+  // map_s^T H map_u with the identity for a rigid side, in the scratch (buffers 13, 14).
+  auto side_map = [&scratch](const MarkerKinematics* M, const Eigen::Matrix<double, 6, 6>& H,
+                             const MarkerKinematics* Mu) -> Eigen::Map<Eigen::MatrixXd> {
+    const Eigen::Index nu = Mu ? Mu->map.cols() : 6;
+    Eigen::Map<Eigen::MatrixXd> right = scratch.View(13, 6, nu);
+    if (Mu)
+      right.noalias() = H * Mu->map;
+    else
+      right = H;
+    if (!M) return right;
+    Eigen::Map<Eigen::MatrixXd> out = scratch.View(14, M->map.cols(), nu);
+    out.noalias() = M->map.transpose() * right;
+    return out;
+  };
+  // CalcMarkerCurvature(M, g) in the scratch (buffer 15).
+  auto curvature = [&scratch](const MarkerKinematics& M, const Vector6& g) {
+    const Eigen::Index n = M.map.cols();
+    Eigen::Map<Eigen::MatrixXd> out = scratch.View(15, n, n);
+    out.setZero();
+    AddMarkerCurvature(M, g, out, &scratch);
     return out;
   };
   auto flush = [&] {
@@ -342,14 +406,13 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
       }
       if (run.marker[s]) {
         emit.Block(run.body[s], false, run.body[s], true,
-                   CalcMarkerCurvature(*run.marker[s], run.g_lambda[s]));
-        emit.Block(run.body[s], true, run.body[s], true,
-                   CalcMarkerCurvature(*run.marker[s], run.g_mu[s]));
+                   curvature(*run.marker[s], run.g_lambda[s]));
+        emit.Block(run.body[s], true, run.body[s], true, curvature(*run.marker[s], run.g_mu[s]));
       }
     }
     run = Run{};
   };
-  VisitKernelTerms(system_, W.markers, [&](const KernelTerm& term) {
+  const auto visit = [&](const KernelTerm& term) {
     const int k = term.equation;
     const int body[2] = {term.body_i, term.body_j};
     const bool same = run.open() && body[0] == run.body[0] && body[1] == run.body[1] &&
@@ -380,30 +443,48 @@ void GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
       if (L.is_ground(body[s])) continue;
       const MarkerKinematics* M = term.marker[s];
       const Eigen::Matrix<double, 1, 6> gs = term.gradient.segment<6>(6 * s);
-      const Eigen::RowVectorXd g = M ? Eigen::RowVectorXd(gs * M->map) : Eigen::RowVectorXd(gs);
-      Eigen::RowVectorXd dv_x =
-          M ? Eigen::RowVectorXd(v_H.segment<6>(6 * s) * M->map) : Eigen::RowVectorXd(v_H.segment<6>(6 * s));
-      // The velocity constraint g map V also moves with the map: g d(map V)/dx.
-      if (M) dv_x += gs * M->map_rate;
+      // The gradient through the map (and its velocity term) in the scratch (buffers 16, 17).
+      const Eigen::Index n = M ? M->map.cols() : 6;
+      Eigen::Map<Eigen::RowVectorXd> g(scratch.View(16, 1, n).data(), n);
+      Eigen::Map<Eigen::RowVectorXd> dv_x(scratch.View(17, 1, n).data(), n);
+      if (M) {
+        g.noalias() = gs * M->map;
+        dv_x.noalias() = v_H.segment<6>(6 * s) * M->map;
+        // The velocity constraint g map V also moves with the map: g d(map V)/dx.
+        dv_x.noalias() += gs * M->map_rate;
+      } else {
+        g = gs;
+        dv_x = v_H.segment<6>(6 * s);
+      }
       emit.Row(G.lambda() + k, body[s], true, dv_x);
       emit.Row(G.lambda() + k, body[s], false, g);
       emit.Row(G.mu() + k, body[s], true, g);
       emit.Column(body[s], true, G.mu() + k, g.transpose());
       emit.Column(body[s], false, G.lambda() + k, g.transpose());
     }
-  });
+  };
+  // Through a reference: the closure is larger than std::function's local storage.
+  VisitKernelTerms(system_, W.markers, std::cref(visit));
   flush();
 
   // Force elements: analytic stiffness and damping.
-  GglForceSink sink(emit);
+  GglForceSink sink(emit, &scratch);
   const auto& forces = system_.force_elements();
+  W.failure.failed = false;
   for (std::size_t k = 0; k < forces.size(); ++k) {
     ForceContext ctx{&system_, &W.bodies, t, &W.constraint,
                      system_.force_angle_slot(static_cast<int>(k))};
     ctx.markers = &W.markers;
+    ctx.failure = &W.failure;
     forces[k]->AddForceJacobian(ctx, &sink);
   }
+  if (W.failure.failed) {  // its blocks are missing: this matrix cannot be used
+    A->Abandon();
+    ReportRecoverableFailure(W.failure.message);
+    return false;
+  }
   A->Finish();
+  return true;
 }
 
 Eigen::VectorXd GglDae::DoDifferentialMask() const {

@@ -61,12 +61,21 @@ class GglLayout {
   int nq_{0}, nv_{0}, m_{0}, nb_{0};
 };
 
-/// The GGL DAE of a finalized System. Owns its evaluation scratch (ggl_workspace.h), with the
-/// continuous joint angles, so one instance serves one integration at a time.
+/// The GGL DAE of a finalized System (the model, immutable) evaluated into a GglWorkspace (the
+/// data: every evaluation's scratch and the continuous joint angles; Pinocchio's
+/// Model/Data). The workspace is the caller's or the DAE's own; one workspace serves one
+/// integration at a time.
 class GglDae final : public DaeProblem {
  public:
+  /// With a workspace of its own.
   explicit GglDae(const System& system);
+  /// With the caller's workspace, built from the same System (not owned; must outlive the
+  /// DAE).
+  GglDae(const System& system, GglWorkspace* workspace);
   ~GglDae() override;
+
+  /// The workspace the evaluations fill (the caller's or the DAE's own).
+  GglWorkspace& data() const { return *ws_; }
 
   const GglLayout& ggl_layout() const { return layout_; }
 
@@ -88,7 +97,7 @@ class GglDae final : public DaeProblem {
                       const Eigen::Ref<const Eigen::VectorXd>& yp,
                       Eigen::Ref<Eigen::VectorXd> r) const override;
   bool DoHasJacobian() const override { return true; }
-  void DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+  bool DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                       const Eigen::Ref<const Eigen::VectorXd>& yp,
                       Eigen::Ref<Eigen::MatrixXd> jacobian) const override;
   Eigen::VectorXd DoDifferentialMask() const override;
@@ -101,13 +110,14 @@ class GglDae final : public DaeProblem {
                    const Eigen::Ref<const Eigen::VectorXd>& yp,
                    Eigen::Ref<Eigen::VectorXd> g) const override;
   bool DoHasSparseJacobian() const override { return true; }
-  void DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+  bool DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                             const Eigen::Ref<const Eigen::VectorXd>& yp,
                             SparseMatrixd* jacobian) const override;
 
  private:
-  // The iteration matrix through `assembler` (begun by the caller; finished here).
-  void AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+  // The iteration matrix through `assembler` (begun by the caller; finished here, or
+  // abandoned and false on a failure reported by a force element).
+  bool AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                         const Eigen::Ref<const Eigen::VectorXd>& yp,
                         MatrixAssembler* assembler) const;
   // Body and marker kinematics at y into the workspace; false for a state the residual
@@ -116,8 +126,10 @@ class GglDae final : public DaeProblem {
 
   const System& system_;
   GglLayout layout_;
-  // The evaluation scratch (the System stays immutable; const evaluations fill it).
-  std::unique_ptr<GglWorkspace> ws_;
+  // The evaluation scratch (the System stays immutable; const evaluations fill it): the
+  // caller's, or own_.
+  std::unique_ptr<GglWorkspace> own_;
+  GglWorkspace* ws_;
   std::vector<int> root_offset_;  // per force element (ggl_dae_events.cpp)
   int num_roots_{0};
   void InitRoots();

@@ -12,9 +12,11 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "libemb/common/scratch_matrices.h"
 #include "libemb/integrators/matrix_assembler.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
 #include "libemb/mbs/core/elastic_model.h"
+#include "libemb/mbs/core/force_element.h"
 #include "libemb/mbs/core/kinematics.h"
 
 namespace emb::mbs {
@@ -32,9 +34,15 @@ struct GglWorkspace {
   Eigen::VectorXd f;                     ///< generalised forces (nv)
   Eigen::VectorXd w;                     ///< C^T mu (nv)
   Eigen::VectorXd reaction;              ///< C^T lambda (nv)
-  Eigen::VectorXd accel;                 ///< one body's [v'_WB, omega'_B, eta''] (6 + ne)
-  Eigen::VectorXd Ma;                    ///< one body's M(eta) accel
+  Eigen::VectorXd accel;                 ///< one body's [v'_WB, omega'_B, eta''] (head 6 + ne)
+  Eigen::VectorXd Ma;                    ///< one body's M(eta) accel (head 6 + ne)
   MatrixAssembler assembler;             ///< keeps the sparse structure between matrices
+  /// Per body, the map from q-space to [delta p, delta pi]: X_b = d x / d q (7 -> 6).
+  std::vector<Eigen::Matrix<double, 6, 7>> body_maps;
+  /// Temporaries of the iteration matrix of dynamic size (flexible bodies' blocks).
+  ScratchMatrices scratch;
+  /// The force elements' failure channel of the current evaluation (ForceContext::Fail).
+  DomainFailure failure;
 };
 
 }  // namespace emb::mbs

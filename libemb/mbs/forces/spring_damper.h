@@ -50,7 +50,8 @@ class TranslationalSpringDamper final : public ForceElement {
 ///   df/dx = -(da/dx)^T (k da/dx + c v^T H) - tau H,   df/dv = -c (da/dx)^T (da/dx),
 /// H = d^2 a/dx^2 (EvalKernelHessian). k [N m/rad], c [N m s/rad], a0 [rad].
 /// Precondition: x_I not along z_J, where a is undefined; within kMinProjection of it
-/// (|x_I x z_J|^2 < 1e-8, i.e. 1e-4 rad) the element throws NumericalError naming itself.
+/// (|x_I x z_J|^2 < 1e-8, i.e. 1e-4 rad) the element reports a failure naming itself through
+/// its context (ForceContext::Fail: a NumericalError where the caller has no channel).
 class RotationalSpringDamper final : public ForceElement {
  public:
   RotationalSpringDamper(std::string name, int marker_i, int marker_j, double stiffness,
@@ -73,7 +74,10 @@ class RotationalSpringDamper final : public ForceElement {
     Eigen::Matrix<double, 1, 12> gradient;  ///< da/dx = [d_i, d_j]
     Eigen::Matrix<double, 12, 1> velocity;  ///< [v_i, omega_Bi, v_j, omega_Bj]
     int body_i, body_j;
+    bool defined{true};  ///< false: the angle is undefined here (reported by Calc)
   };
+  /// The angle and its derivatives; `defined` false (reported through the context) where
+  /// x_I is along z_J.
   State Calc(const ForceContext& ctx) const;
   int i_, j_;
   double k_, c_, a0_;
