@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+"""Checks of the documentation's pages that need no build (the ctest docs_paths_test):
+
+- every repository path a page names in a code span (`libemb/...`, `tools/...`, `tests/...`,
+  `benchmarks/...`, `meshes/...`, `examples/...`, `cmake/...`, `docs/...`) exists, and every
+  relative link of README.md leads to a file; in the theory manual (docs/theory.md) every
+  code span that names a source file must be such a path: a file that moved or was renamed
+  fails here, naming the page and line;
+- the theory manual covers every seed equation (1.18)-(1.30);
+- no heading carries an issue number;
+- README.md holds the two set-up commands (`.ci/run` calls the second).
+
+Usage (stdlib only): check_pages.py [--root .]
+"""
+import argparse
+import os
+import re
+import sys
+
+PATH = re.compile(r"^(libemb|tools|tests|benchmarks|meshes|examples|cmake|docs)/[\w./+-]*[\w/]$")
+SPAN = re.compile(r"`([^`\n]+)`")
+SOURCE_FILE = re.compile(r"[\w/-]+\.(h|cpp|py|sh|geo|yaml|cmake|txt)$")
+LINK = re.compile(r"\]\(([^)#\s]+)(#[^)]*)?\)")
+EQUATIONS = [f"(1.{n})" for n in range(18, 31)]
+SETUP = ["bash tools/setup.sh run", "bash tools/setup.sh test"]
+
+
+def pages(root):
+    out = ["README.md", "benchmarks/README.md"]
+    for d, _, files in sorted(os.walk(os.path.join(root, "docs"))):
+        for f in sorted(files):
+            path = os.path.join(d, f)
+            if f.endswith(".md") and not os.path.islink(path):
+                out.append(os.path.relpath(path, root))
+    return out
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+    a = p.parse_args()
+    problems, named = [], 0
+    for rel in pages(a.root):
+        with open(os.path.join(a.root, rel), encoding="utf-8") as f:
+            text = f.read()
+        theory = rel == "docs/theory.md"
+        fence = False
+        for n, line in enumerate(text.split("\n"), 1):
+            if line.startswith("```"):
+                fence = not fence
+                continue
+            if fence:
+                continue
+            if re.match(r"^#+ .*\bissues? \d", line):
+                problems.append(f"{rel}:{n}: a heading with an issue number: {line}")
+            for span in SPAN.findall(line):
+                span = span.strip()
+                if PATH.match(span):
+                    named += 1
+                    if not os.path.exists(os.path.join(a.root, span)):
+                        problems.append(f"{rel}:{n}: `{span}` does not exist")
+                elif theory and SOURCE_FILE.search(span) and " " not in span:
+                    problems.append(f"{rel}:{n}: `{span}`: give the path from the repository root")
+            if rel == "README.md":
+                for target, _ in LINK.findall(line):
+                    if not re.match(r"^[a-z]+:", target) and not os.path.exists(os.path.join(a.root, target)):
+                        problems.append(f"{rel}:{n}: link to '{target}', which does not exist")
+        if theory:
+            missing = [e for e in EQUATIONS if e not in text]
+            if missing:
+                problems.append(f"{rel}: the seed equations {', '.join(missing)} are not mapped")
+    with open(os.path.join(a.root, "README.md"), encoding="utf-8") as f:
+        readme = f.read()
+    problems += [f"README.md: the set-up command `{c}` is missing" for c in SETUP if c not in readme]
+    if not os.path.exists(os.path.join(a.root, "docs/theory.md")):
+        problems.append("docs/theory.md is missing")
+    for msg in problems:
+        print(msg, file=sys.stderr)
+    if problems:
+        return 1
+    print(f"documentation: {named} repository paths exist, theory manual complete, headings clean")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
