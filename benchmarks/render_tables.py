@@ -781,6 +781,9 @@ def validation_status(res):
     benchmark measured, the results file and the page that has the whole table."""
     rows, docs = [], []
 
+    def by_name(name):
+        return {r["name"]: r for r in res(name)["data"]["runs"]}
+
     def row(what, against, measured, name, page):
         doc = res(name)
         docs.append(doc)
@@ -812,12 +815,12 @@ def validation_status(res):
     row("Beam and CMS crank, free-free", "the full FE model",
         f"CMS (40 modes) {num(cms['max_abs_error_pct'], '.2f')} %, elastic-web beam "
         f"{num(beam['max_abs_error_pct'], '.0f')} %", "beam_vs_cms_crank", "validation.md#beam-vs-cms")
-    d = {r["name"]: r for r in res("inline4_basis")["data"]["runs"]}
+    d = by_name("inline4_basis")
     row("Inline-4 engine, installed basis (2 kHz)", "the full basis at rtol 1e-7",
         f"{num(d['default']['max_error_pct'], '.2f')} % (lowest 20 free-free modes: "
         f"{num(d['lowest20']['max_error_pct'], '.0f')} %)", "inline4_basis",
         "validation.md#inline-4-engine-installed-basis")
-    d = {r["name"]: r for r in res("slepc_modes")["data"]["runs"]}
+    d = by_name("slepc_modes")
     worst = max(r["max_rel_diff_vs_cholmod"] for n, r in d.items() if n != "cholmod")
     row("Distributed eigen-solve (SLEPc, 1 and 2 ranks)", "the default CHOLMOD path",
         f"max \\|Δf\\|/f {num(worst, '.1e')}", "slepc_modes", "validation.md#distributed-runs")
@@ -827,12 +830,12 @@ def validation_status(res):
         f"within {num(max(errs), '.1f')} % in speed (orders "
         f"{', '.join(num(o['order'], 'g') for o in d['orders'])})", "order_cuts_inline4",
         "validation.md#campbell-diagram-against-the-running-engine")
-    d = {r["name"]: r for r in res("driveline_clonk")["data"]["runs"]}
+    d = by_name("driveline_clonk")
     row("Driveline clonk, CMS tube on its installed basis (5 kHz)", "the same model at rtol 1e-8",
         f"gear torque {num(d['inst5k']['gear_torque_rms_error_pct'], '.2f')} % RMS, tube "
         f"acceleration {num(d['inst5k']['tube_accel_rms_error_pct'], '.1f')} % RMS", "driveline_clonk",
         "validation.md#driveline-clonk")
-    d = {r["name"]: r for r in res("stress_recovery_1cyl")["data"]["runs"]}
+    d = by_name("stress_recovery_1cyl")
     row("Fillet stresses from modal coordinates", "full FE static solves, same mesh",
         f"{num(d['reduce_with']['summary']['stress_check_error'], '.1e')} of the peak",
         "stress_recovery_1cyl", "validation.md#stress-recovery")

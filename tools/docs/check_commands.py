@@ -20,6 +20,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from doc_blocks import fenced_blocks  # noqa: E402
+from doc_pages import documents, report, repository_root  # noqa: E402
 from generated_pages import subcommands  # noqa: E402
 
 SHELL_INFO = {"", "sh", "bash", "console", "shell"}
@@ -83,15 +84,12 @@ def emb_commands(text):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--emb", required=True)
-    p.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+    p.add_argument("--root", default=repository_root())
     a = p.parse_args()
     top_help, top_options = help_options(a.emb, [])
     options = {sub: help_options(a.emb, [sub])[1] for sub in subcommands(top_help)}
-    pages = ["README.md", "benchmarks/README.md"]
-    for d, _, files in sorted(os.walk(os.path.join(a.root, "docs"))):
-        pages += sorted(os.path.relpath(os.path.join(d, f), a.root) for f in files if f.endswith(".md"))
     problems, checked = [], 0
-    for rel in pages:
+    for rel in documents(a.root):
         with open(os.path.join(a.root, rel), encoding="utf-8") as f:
             text = f.read()
         for first, info, body, _ in fenced_blocks(text):
@@ -114,12 +112,8 @@ def main():
                             continue
                         if t.split("=")[0] not in options[sub]:
                             problems.append(f"{where}: emb {sub}: unknown option '{t}'")
-    for msg in problems:
-        print(msg, file=sys.stderr)
-    if problems:
-        return 1
-    print(f"{checked} emb command lines in the documentation: subcommands and options exist")
-    return 0
+    return report(problems, f"{checked} emb command lines in the documentation: subcommands and "
+                            "options exist")
 
 
 if __name__ == "__main__":

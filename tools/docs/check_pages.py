@@ -17,7 +17,10 @@ import os
 import re
 import sys
 
+from doc_pages import documents, report, repository_root
+
 PATH = re.compile(r"^(libemb|tools|tests|benchmarks|meshes|examples|cmake|docs)/[\w./+-]*[\w/]$")
+OUTPUT = re.compile(r"\.(h5|csv|xdmf)$")  # what a command writes, e.g. tools/scenes/pendulum.h5
 SPAN = re.compile(r"`([^`\n]+)`")
 SOURCE_FILE = re.compile(r"[\w/-]+\.(h|cpp|py|sh|geo|yaml|cmake|txt)$")
 LINK = re.compile(r"\]\(([^)#\s]+)(#[^)]*)?\)")
@@ -25,22 +28,12 @@ EQUATIONS = [f"(1.{n})" for n in range(18, 31)]
 SETUP = ["bash tools/setup.sh run", "bash tools/setup.sh test"]
 
 
-def pages(root):
-    out = ["README.md", "benchmarks/README.md"]
-    for d, _, files in sorted(os.walk(os.path.join(root, "docs"))):
-        for f in sorted(files):
-            path = os.path.join(d, f)
-            if f.endswith(".md") and not os.path.islink(path):
-                out.append(os.path.relpath(path, root))
-    return out
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+    p.add_argument("--root", default=repository_root())
     a = p.parse_args()
     problems, named = [], 0
-    for rel in pages(a.root):
+    for rel in documents(a.root):
         with open(os.path.join(a.root, rel), encoding="utf-8") as f:
             text = f.read()
         theory = rel == "docs/theory.md"
@@ -55,7 +48,7 @@ def main():
                 problems.append(f"{rel}:{n}: a heading with an issue number: {line}")
             for span in SPAN.findall(line):
                 span = span.strip()
-                if PATH.match(span):
+                if PATH.match(span) and not OUTPUT.search(span):
                     named += 1
                     if not os.path.exists(os.path.join(a.root, span)):
                         problems.append(f"{rel}:{n}: `{span}` does not exist")
@@ -74,12 +67,8 @@ def main():
     problems += [f"README.md: the set-up command `{c}` is missing" for c in SETUP if c not in readme]
     if not os.path.exists(os.path.join(a.root, "docs/theory.md")):
         problems.append("docs/theory.md is missing")
-    for msg in problems:
-        print(msg, file=sys.stderr)
-    if problems:
-        return 1
-    print(f"documentation: {named} repository paths exist, theory manual complete, headings clean")
-    return 0
+    return report(problems, f"documentation: {named} repository paths exist, theory manual "
+                            "complete, headings clean")
 
 
 if __name__ == "__main__":

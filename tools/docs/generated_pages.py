@@ -17,6 +17,8 @@ import re
 import subprocess
 import sys
 
+from doc_pages import report, repository_root
+
 CLI_PAGE = "docs/reference/cli.md"
 KEYS_PAGE = "docs/reference/scene-keys.md"
 
@@ -64,7 +66,7 @@ def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--emb", required=True)
     p.add_argument("--scene-keys", required=True)
-    p.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+    p.add_argument("--root", default=repository_root())
     p.add_argument("--check", action="store_true")
     a = p.parse_args()
     pages = {CLI_PAGE: cli_page(a.emb), KEYS_PAGE: run([a.scene_keys])}
@@ -81,13 +83,9 @@ def main():
                 f.write(text)
             os.replace(path + ".tmp", path)
             print(f"updated {rel}")
-    if stale:
-        print("generated_pages.py: stale, regenerate with `cmake --build build --target docs_pages`: "
-              + ", ".join(stale), file=sys.stderr)
-        return 1
-    if a.check:
-        print("generated pages: up to date")
-    return 0
+    problems = [f"generated_pages.py: {rel} is stale; regenerate it: cmake --build build --target "
+                "docs_pages" for rel in stale]
+    return report(problems, "generated pages: up to date" if a.check else "generated pages: written")
 
 
 if __name__ == "__main__":
