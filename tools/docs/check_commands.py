@@ -28,7 +28,7 @@ CONTROL = {"&&", "||", ";", "|", "&", "(", ")"}
 
 
 def help_options(emb, args):
-    r = subprocess.run([emb, *args, "--help"], capture_output=True, text=True)
+    r = subprocess.run(["emb", *args, "--help"], executable=emb, capture_output=True, text=True)
     if r.returncode != 0:
         sys.exit(f"check_commands.py: {emb} {' '.join(args)} --help failed: {r.stderr}")
     names = set()

@@ -24,17 +24,20 @@ KEYS_PAGE = "docs/reference/scene-keys.md"
 
 
 def run(cmd):
-    r = subprocess.run(cmd, capture_output=True, text=True, env=dict(os.environ, COLUMNS="100"))
+    """Runs cmd with argv[0] the bare program name, so that the help's usage lines do not
+    depend on where the program was built."""
+    r = subprocess.run([os.path.basename(cmd[0])] + cmd[1:], executable=cmd[0], capture_output=True,
+                       text=True, env=dict(os.environ, COLUMNS="100"))
     if r.returncode != 0:
         sys.exit(f"generated_pages.py: {' '.join(cmd)} failed ({r.returncode}): {r.stderr}")
     return r.stdout
 
 
 def subcommands(top_help):
-    """The subcommand names of `emb --help` (CLI11's SUBCOMMANDS section)."""
+    """The subcommand names of `emb --help` (CLI11's Subcommands section)."""
     names, inside = [], False
     for line in top_help.splitlines():
-        if line.strip() == "SUBCOMMANDS:":
+        if line.strip().lower() == "subcommands:":
             inside = True
             continue
         if inside:
@@ -44,7 +47,7 @@ def subcommands(top_help):
             elif line.strip() and not line.startswith(" "):
                 inside = False
     if not names:
-        sys.exit("generated_pages.py: no SUBCOMMANDS section in `emb --help`")
+        sys.exit("generated_pages.py: no Subcommands section in `emb --help`")
     return names
 
 
