@@ -109,7 +109,7 @@ constexpr SceneKey kModelKeys[] = {
     {"bodies: beam", "orientation", T::kMap, "", "", "—", "Section *orientation*, of the part frame."},
     {"bodies: beam", "angular_velocity", T::kVector3, "rad/s", "", "[0, 0, 0]", "In W."},
     {"bodies: beam", "body_file", T::kString, "", "", "—", "The 3-D part's body file: the mesh its output points use."},
-    {"bodies: beam material", "E", T::kNumber, "Pa", "", "210000000000", "Young's modulus."},
+    {"bodies: beam material", "E", T::kNumber, "Pa", "", "2.1e11", "Young's modulus."},
     {"bodies: beam material", "nu", T::kNumber, "", "", "0.3", "Poisson's ratio."},
     {"bodies: beam material", "rho", T::kNumber, "kg/m^3", "", "7850", "Density."},
     // orientation
@@ -165,7 +165,7 @@ constexpr SceneKey kModelKeys[] = {
     {"function: cylinder_pressure", "stroke", T::kNumber, "m", "", "0.086", "Stroke."},
     {"function: cylinder_pressure", "rod", T::kNumber, "m", "", "0.1435", "Connecting-rod centre distance."},
     {"function: cylinder_pressure", "compression_ratio", T::kNumber, "", "", "10.5", "Compression ratio."},
-    {"function: cylinder_pressure", "intake_pressure", T::kNumber, "Pa", "", "100000", "Manifold pressure (full load)."},
+    {"function: cylinder_pressure", "intake_pressure", T::kNumber, "Pa", "", "1e5", "Manifold pressure (full load)."},
     {"function: cylinder_pressure", "exhaust_pressure", T::kNumber, "Pa", "", "110000", "Exhaust pressure."},
     {"function: cylinder_pressure", "polytropic_exponent", T::kNumber, "", "", "1.32", "n of p V^n = const."},
     {"function: cylinder_pressure", "fired", T::kBool, "", "", "true", "`false`: motored, p = p_intake (V_max/V)^n."},
@@ -178,7 +178,7 @@ constexpr SceneKey kModelKeys[] = {
     {"function: cylinder_pressure", "exhaust_opening_deg", T::kNumber, "deg", "", "130", "Blowdown starts here ..."},
     {"function: cylinder_pressure", "blowdown_deg", T::kNumber, "deg", "", "90", "... and reaches the exhaust pressure over this angle."},
     {"function: cylinder_pressure", "step_deg", T::kNumber, "deg", "in [0.001, 10]", "0.5", "Spline step (720 / step an integer)."},
-    {"function: cylinder_pressure", "crankcase_pressure", T::kNumber, "Pa", ">= 0", "100000", "Under the piston."},
+    {"function: cylinder_pressure", "crankcase_pressure", T::kNumber, "Pa", ">= 0", "1e5", "Under the piston."},
     {"function: cylinder_pressure", "output", T::kString, "", "force | pressure", "force", "`force`: (p − p_crankcase) π bore²/4 [N]; `pressure`: p [Pa]."},
 };
 
@@ -205,7 +205,7 @@ std::string_view Name(KeyType t) {
     case KeyType::kNumber: return "number";
     case KeyType::kInteger: return "integer";
     case KeyType::kBool: return "true/false";
-    case KeyType::kString: return "name";
+    case KeyType::kString: return "text";
     case KeyType::kVector3: return "[x, y, z]";
     case KeyType::kNumbers: return "list of numbers";
     case KeyType::kList: return "list";

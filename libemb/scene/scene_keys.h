@@ -28,7 +28,7 @@ enum class KeyType {
   kAny,      ///< a value parsed by its own reader (the meaning says which forms)
 };
 
-/// "number", "integer", "true/false", "name", "[x, y, z]", "list of numbers", "list", "map",
+/// "number", "integer", "true/false", "text", "[x, y, z]", "list of numbers", "list", "map",
 /// "see meaning".
 std::string_view Name(KeyType t);
 

@@ -44,7 +44,7 @@ constexpr SceneKey kForceKeys[] = {
     {"forces: torsional-damper rubber", "static_stiffness", T::kNumber, "N m/rad", ">= 0", "required", "k∞ (with `arms`)."},
     {"forces: torsional-damper rubber", "arms", T::kList, "", "", "required", "Maxwell arms (with `static_stiffness`), a non-empty list."},
     {"forces: torsional-damper rubber", "dynamic_stiffness", T::kNumber, "N m/rad", "> 0", "required", "|k*| at `frequency_hz` (the supplier form)."},
-    {"forces: torsional-damper rubber", "loss_factor", T::kNumber, "", "in [0, 1]", "required", "η = Im k*/Re k* at its peak, > 0 (the supplier form)."},
+    {"forces: torsional-damper rubber", "loss_factor", T::kNumber, "(Im k*/Re k*)", "in [0, 1]", "required", "η = Im k*/Re k* at its peak, > 0 (the supplier form)."},
     {"forces: torsional-damper rubber", "frequency_hz", T::kNumber, "Hz", "> 0", "required", "Where the loss factor peaks (the supplier form)."},
     {"forces: torsional-damper rubber", "band_hz", T::kNumber, "Hz", "> 0", "5000", "Up to where the junction rings keep k*(ω) within `junction_error`."},
     {"forces: torsional-damper rubber", "junction_error", T::kNumber, "", "in [1e-12, 0.1]", "0.001", "Bound on the relative error of k*(ω) up to `band_hz`."},
