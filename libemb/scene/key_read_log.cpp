@@ -40,13 +40,17 @@ std::string FormatDefault(double v) {
 
 std::string FormatDefault(bool v) { return v ? "true" : "false"; }
 
+// Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "[" + string&&.
 std::string FormatDefault(const double (&v)[3]) {
-  return "[" + FormatDefault(v[0]) + ", " + FormatDefault(v[1]) + ", " + FormatDefault(v[2]) + "]";
+  std::string out("[");
+  for (int i = 0; i < 3; ++i) out.append(i ? ", " : "").append(FormatDefault(v[i]));
+  return out.append("]");
 }
 
 std::string FormatIntegerRange(long long lo, long long hi) {
   if (lo <= std::numeric_limits<int>::min() && hi >= std::numeric_limits<int>::max()) return "";
-  return "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  std::string out("[");
+  return out.append(std::to_string(lo)).append(", ").append(std::to_string(hi)).append("]");
 }
 
 }  // namespace emb::scene

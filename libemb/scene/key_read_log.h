@@ -29,6 +29,8 @@ struct KeyRead {
   /// The value used because the key was absent, formatted as FormatDefault does; empty when
   /// the key was present or the getter has no fallback.
   std::optional<std::string> default_used;
+  /// The word a text getter read (empty otherwise), held against the table's choices.
+  std::string value;
   /// Accepted and not used: a key of another `model:` in a body entry (one-word switch).
   bool ignored{false};
   std::string where;  ///< "scene.yaml:12"

@@ -51,8 +51,9 @@ struct SceneKey {
 
 /// A section: a map of keys in the scene file.
 struct SceneSection {
-  std::string_view id;     ///< e.g. "forces: bushing"
-  std::string_view where;  ///< where the map sits in the file, e.g. "an entry of `forces:` with `type: bushing`"
+  std::string_view id;  ///< e.g. "forces: bushing"
+  /// Where the map sits in the file, e.g. "an entry of `forces:` with `type: bushing`".
+  std::string_view where;
   std::string_view about;  ///< one or two sentences
 };
 

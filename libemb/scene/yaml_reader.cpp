@@ -24,8 +24,8 @@ void RethrowWithPlace(const InputError& e, const std::string& file, const YAML::
   const std::string msg = e.what();
   if (msg.rfind(file, 0) == 0) throw e;  // a YAML reader's message: file:line already
   const bool named = msg.find("'" + name + "'") != std::string::npos;
-  EMB_THROW(InputError,
-            Where(file, node) << ": " << (named ? "" : kind + " '" + name + "': ") << msg);
+  EMB_THROW(InputError, Where(file, node)
+                            << ": " << (named ? "" : kind + " '" + name + "': ") << msg);
 }
 
 MapReader::MapReader(const YAML::Node& node, std::string file, std::string what,
@@ -48,7 +48,7 @@ bool MapReader::Has(const std::string& key) const { return static_cast<bool>(Loo
 
 void MapReader::Note(const std::string& key, KeyType type, const YAML::Node& n,
                      const NumberRange* range, const std::string* fallback,
-                     const std::string* integer_range) const {
+                     const std::string* integer_range, const std::string* value) const {
   if (!KeyReadLogActive()) return;
   KeyRead read;
   read.section = section_;
@@ -65,6 +65,7 @@ void MapReader::Note(const std::string& key, KeyType type, const YAML::Node& n,
     read.range = *integer_range;
   }
   if (!n && fallback) read.default_used = *fallback;
+  if (value) read.value = *value;
   read.where = n ? Where(file_, n) : Where(file_, node_);
   NoteKeyRead(std::move(read));
 }
@@ -221,7 +222,8 @@ bool MapReader::GetBool(const std::string& key, bool fallback) {
 }
 std::string MapReader::GetString(const std::string& key) {
   const YAML::Node n = RequireNode(key);
-  Note(key, KeyType::kString, n);
+  const std::string word = n.IsScalar() ? n.Scalar() : std::string();
+  Note(key, KeyType::kString, n, nullptr, nullptr, nullptr, &word);
   EMB_THROW_IF(!n.IsScalar(), Where(file_, n)
                                   << ": " << what_ << " '" << key << "': expected a name or word");
   return n.Scalar();

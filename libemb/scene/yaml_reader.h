@@ -77,10 +77,10 @@ class MapReader {
   // Records the read in this thread's KeyReadLog, if one is alive. `n` is the key's value
   // (undefined if absent), `range` the getter's check (or nullptr), `fallback` the default
   // text used when the key is absent (or nullptr: the getter has none), `integer_range` the
-  // range text of an integer getter.
+  // range text of an integer getter, `value` the word a text getter read.
   void Note(const std::string& key, KeyType type, const YAML::Node& n,
             const NumberRange* range = nullptr, const std::string* fallback = nullptr,
-            const std::string* integer_range = nullptr) const;
+            const std::string* integer_range = nullptr, const std::string* value = nullptr) const;
 
   YAML::Node node_;
   std::string file_, what_, section_;

@@ -9,6 +9,8 @@
 // scene is loaded again with its body-file parts switched to `model: beam` (the one-word
 // switch the scenes keep), which reads the rest of it.
 
+#include "libemb/scene/scene_keys.h"
+
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -16,16 +18,15 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
-#include <utility>
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "libemb/common/error.h"
 #include "libemb/scene/key_read_log.h"
 #include "libemb/scene/scene.h"
-#include "libemb/scene/scene_keys.h"
 
 namespace emb::scene {
 namespace {
@@ -35,8 +36,8 @@ namespace fs = std::filesystem;
 std::vector<fs::path> SceneFiles() {
   std::vector<fs::path> files;
   const fs::path root(EMB_SOURCE_DIR);
-  for (const char* dir : {"tools/scenes", "tests/scene/data", "tests/scene/data/keys",
-                          "tests/sweep/data"}) {
+  for (const char* dir :
+       {"tools/scenes", "tests/scene/data", "tests/scene/data/keys", "tests/sweep/data"}) {
     if (!fs::is_directory(root / dir)) continue;
     for (const auto& e : fs::directory_iterator(root / dir))
       if (e.path().extension() == ".yaml") files.push_back(e.path());
@@ -76,10 +77,6 @@ std::vector<KeyRead> ReadKeys(const std::string& text, const fs::path& path, std
   return log.reads();
 }
 
-std::string Describe(const KeyRead& r) {
-  return r.where + ": " + r.section + " / " + r.key;
-}
-
 TEST(SceneKeys, TableHoldsEveryKeyTheReadersRead) {
   std::vector<KeyRead> reads;
   const std::vector<fs::path> files = SceneFiles();
@@ -91,7 +88,8 @@ TEST(SceneKeys, TableHoldsEveryKeyTheReadersRead) {
     if (const std::string beam = BeamVariant(text); !beam.empty()) {
       std::string beam_stop;
       for (KeyRead& r : ReadKeys(beam, f, &beam_stop)) reads.push_back(std::move(r));
-      if (!beam_stop.empty()) std::cout << f.filename() << " as beam: stopped at " << beam_stop << "\n";
+      if (!beam_stop.empty())
+        std::cout << f.filename() << " as beam: stopped at " << beam_stop << "\n";
     }
     if (!stop.empty()) std::cout << f.filename() << ": stopped at " << stop << "\n";
   }
@@ -108,9 +106,10 @@ TEST(SceneKeys, TableHoldsEveryKeyTheReadersRead) {
   for (const KeyRead& r : reads) {
     if (r.ignored) {
       // A key of another model of a body entry: it must be a key of some body section.
-      const bool known = std::any_of(SceneKeys().begin(), SceneKeys().end(), [&](const SceneKey& k) {
-        return k.section.starts_with("bodies") && k.section != r.section && k.key == r.key;
-      });
+      const bool known =
+          std::any_of(SceneKeys().begin(), SceneKeys().end(), [&](const SceneKey& k) {
+            return k.section.starts_with("bodies") && k.section != r.section && k.key == r.key;
+          });
       if (!known) problem(r, "ignored, but no other body section has it");
       continue;
     }
@@ -129,6 +128,15 @@ TEST(SceneKeys, TableHoldsEveryKeyTheReadersRead) {
                      "], reader '" + r.range + "' [" + r.unit + "]");
     if (!r.range_checked && r.type == KeyType::kNumber && !k->range.empty())
       problem(r, "range: the reader checks none, the table says '" + std::string(k->range) + "'");
+    // A word the readers accepted, or used by default, is one of the table's choices (text
+    // keys with a range).
+    if (r.type == KeyType::kString && !k->range.empty()) {
+      const std::string choices = " " + std::string(k->range) + " ";
+      for (const std::string& word : {r.value, r.default_used.value_or("")})
+        if (!word.empty() && choices.find(" " + word + " ") == std::string::npos)
+          problem(
+              r, "'" + word + "' is not among the table's choices '" + std::string(k->range) + "'");
+    }
     if (r.default_used) {
       defaults_seen.insert({r.section, r.key});
       if (k->default_value != *r.default_used)
@@ -152,7 +160,8 @@ TEST(SceneKeys, TableHoldsEveryKeyTheReadersRead) {
   // Each section's keys once.
   std::set<std::pair<std::string_view, std::string_view>> unique;
   for (const SceneKey& k : SceneKeys())
-    EXPECT_TRUE(unique.insert({k.section, k.key}).second) << k.section << " / " << k.key << ": twice";
+    EXPECT_TRUE(unique.insert({k.section, k.key}).second)
+        << k.section << " / " << k.key << ": twice";
 }
 
 TEST(SceneKeys, FormatDefaultIsShortAndExact) {

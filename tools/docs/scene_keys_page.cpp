@@ -54,7 +54,8 @@ int main() {
                "docs_pages -->\n\n"
             << "Every key a scene file may hold, section by section: the kind of value, its SI "
                "unit, the range the reader checks (a number outside it is refused with the "
-               "file, line, key and unit), the value used when the key is absent (*required*: "
+               "file, line, key and unit; for a word, the words it accepts), the value used when "
+               "the key is absent (*required*: "
                "it must be given; *—*: absent means not used, the meaning says what then) and "
                "what it does. Unknown keys are errors with `file:line` and a did-you-mean, and "
                "a key given twice is an error. The page is printed from the readers' own key "
@@ -64,7 +65,8 @@ int main() {
   for (const SceneSection& s : SceneSections())
     std::cout << "| [" << s.id << "](#" << Anchor(s.id) << ") | " << Cell(s.where) << " |\n";
   for (const SceneSection& s : SceneSections()) {
-    std::cout << "\n## " << s.id << "\n\n" << "In " << s.where << ". " << s.about << "\n\n"
+    std::cout << "\n## " << s.id << "\n\n"
+              << "In " << s.where << ". " << s.about << "\n\n"
               << "| key | type | unit | range | default | meaning |\n"
               << "|---|---|---|---|---|---|\n";
     for (const SceneKey& k : SceneKeys()) {
