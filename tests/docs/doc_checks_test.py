@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The documentation's checks catch what they are for (so that a passing check means
 something): on a copy of the pages, check_pages.py fails on a path that does not exist, an
-issue number in a heading and a README without the set-up command; check_commands.py on an
+issue number in a heading, an equation left out of the theory manual, a page missing from
+the navigation and a README without the set-up command; check_commands.py on an
 unknown option and subcommand; doc_blocks.py on a runnable block that fails, and runs only
 the marked blocks.
 
@@ -33,6 +34,7 @@ with tempfile.TemporaryDirectory() as tmp:
     t = pathlib.Path(tmp)
     (t / "benchmarks").mkdir()
     shutil.copy(root / "README.md", t / "README.md")
+    shutil.copy(root / "mkdocs.yml", t / "mkdocs.yml")
     shutil.copy(root / "benchmarks" / "README.md", t / "benchmarks" / "README.md")
     shutil.copytree(root / "docs", t / "docs", symlinks=True)
     for d in ("libemb", "tools", "tests", "meshes", "examples", "cmake"):
@@ -56,6 +58,12 @@ with tempfile.TemporaryDirectory() as tmp:
     expect(run(tools / "check_pages.py", "--root", t), 1, ["bash tools/setup.sh test"],
            "a README without the test command")
     (t / "README.md").write_text(readme)
+
+    orphan = t / "docs" / "tasks" / "orphan.md"
+    orphan.write_text("# A page no one links\n")
+    expect(run(tools / "check_pages.py", "--root", t), 1, ["orphan.md: not in the navigation"],
+           "a page missing from the navigation")
+    orphan.unlink()
 
     expect(run(tools / "check_commands.py", "--root", t, "--emb", emb), 0, ["options exist"],
            "the commands as they are")

@@ -1,6 +1,6 @@
 // The key table (libemb/scene/scene_keys.h) against the readers: every shipped scene, the
-// scenes of the tests and a few scenes that give the rarer keys
-// (tests/scene/data/keys/) are loaded with a KeyReadLog; every key the readers read must be
+// scene files of the tests and the scene fuzzer's seeds, and a few scenes that give the rarer
+// keys (tests/scene/data/keys/) are loaded with a KeyReadLog; every key the readers read must be
 // in the table under its section, with the table's kind of value, range and unit, and the
 // fallback the reader used when a key was absent must be the table's default. Every table
 // entry must be read by some scene, and every default the table states must have been used.

