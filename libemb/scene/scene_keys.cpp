@@ -1,6 +1,6 @@
-// The sections of the key table and the keys of the model: the scene's top level, bodies,
-// markers, joints, motions, couplers, orientations and functions. Forces are in
-// scene_keys_forces.cpp, outputs and the analysis in scene_keys_run.cpp.
+// The key table of the scene readers: its sections and the keys of the model (the top level,
+// bodies, markers, joints, motions, couplers, orientations, functions); the keys of the force
+// elements, the outputs and the analysis are in scene_keys_run.cpp.
 #include "libemb/scene/scene_keys.h"
 
 #include <algorithm>
@@ -13,6 +13,8 @@ namespace {
 
 using T = KeyType;
 
+// One entry a line, as the table it is (clang-format would spread each over three lines).
+// clang-format off
 constexpr SceneSection kSections[] = {
     {"scene", "the top level of the file", "What the model is made of, what to run and what to write."},
     {"bodies", "every entry of `bodies:`", "A part. `model:` says which kind; the keys of the other kinds may stay in a body-file or beam entry (ignored), so that one word switches a part between rigid, cms and beam."},
@@ -53,7 +55,10 @@ constexpr SceneSection kSections[] = {
     {"planar", "`planar:` as a map", "`planar: true` is a mechanism in the world xy plane; the map gives another plane."},
     {"output", "`output:`", "Where the results go; relative paths are relative to the scene file's directory."},
 };
+// clang-format on
 
+// One entry a line, as the table it is (clang-format would spread each over three lines).
+// clang-format off
 constexpr SceneKey kModelKeys[] = {
     // scene
     {"scene", "name", T::kString, "", "", "scene", "The model's name in the results."},
@@ -181,6 +186,7 @@ constexpr SceneKey kModelKeys[] = {
     {"function: cylinder_pressure", "crankcase_pressure", T::kNumber, "Pa", ">= 0", "1e5", "Under the piston."},
     {"function: cylinder_pressure", "output", T::kString, "", "force | pressure", "force", "`force`: (p − p_crankcase) π bore²/4 [N]; `pressure`: p [Pa]."},
 };
+// clang-format on
 
 std::vector<SceneKey> AllKeys() {
   std::vector<SceneKey> keys(std::begin(kModelKeys), std::end(kModelKeys));
@@ -202,15 +208,24 @@ std::vector<SceneKey> AllKeys() {
 
 std::string_view Name(KeyType t) {
   switch (t) {
-    case KeyType::kNumber: return "number";
-    case KeyType::kInteger: return "integer";
-    case KeyType::kBool: return "true/false";
-    case KeyType::kString: return "text";
-    case KeyType::kVector3: return "[x, y, z]";
-    case KeyType::kNumbers: return "list of numbers";
-    case KeyType::kList: return "list";
-    case KeyType::kMap: return "map";
-    case KeyType::kAny: return "see meaning";
+    case KeyType::kNumber:
+      return "number";
+    case KeyType::kInteger:
+      return "integer";
+    case KeyType::kBool:
+      return "true/false";
+    case KeyType::kString:
+      return "text";
+    case KeyType::kVector3:
+      return "[x, y, z]";
+    case KeyType::kNumbers:
+      return "list of numbers";
+    case KeyType::kList:
+      return "list";
+    case KeyType::kMap:
+      return "map";
+    case KeyType::kAny:
+      return "see meaning";
   }
   return "?";
 }

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Internal to the key table (scene_keys.h): its parts, one per file.
+/// Internal to the key table (scene_keys.h): the half of it in scene_keys_run.cpp.
 
 #include <span>
 
@@ -8,10 +8,9 @@
 
 namespace emb::scene::internal {
 
-/// The keys of `forces:` (scene_keys_forces.cpp).
+/// The keys of `forces:`.
 std::span<const SceneKey> ForceKeys();
-/// The keys of sensors, output points, stress outputs, the analysis and the output
-/// (scene_keys_run.cpp).
+/// The keys of sensors, output points, stress outputs, the analysis and the output.
 std::span<const SceneKey> RunKeys();
 
 }  // namespace emb::scene::internal

@@ -116,7 +116,7 @@ TEST(SceneKeys, TableHoldsEveryKeyTheReadersRead) {
     if (!sections.count(r.section)) problem(r, "the section is not in the table");
     const SceneKey* k = FindSceneKey(r.section, r.key);
     if (!k) {
-      problem(r, "read, but not in the key table (scene_keys*.cpp)");
+      problem(r, "read, but not in the key table (libemb/scene/scene_keys*.cpp)");
       continue;
     }
     seen.insert({r.section, r.key});
