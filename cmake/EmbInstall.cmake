@@ -42,7 +42,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/libemb/ DESTINATION ${CMAKE_INSTALL_INCL
         PATTERN "output_point_reader.h" EXCLUDE
         PATTERN "stress_output_reader.h" EXCLUDE
         PATTERN "body_codec.h" EXCLUDE
-        PATTERN "scene_parts.h" EXCLUDE)
+        PATTERN "scene_parts.h" EXCLUDE
+        PATTERN "scene_keys_parts.h" EXCLUDE)
 
 set(EMB_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/emb)
 install(EXPORT embTargets NAMESPACE emb:: DESTINATION ${EMB_CMAKE_DIR})

@@ -22,6 +22,7 @@ packages=(
   clang libclang-rt-14-dev
   calculix-ccx
   libslepc-real-dev petsc-dev libopenmpi-dev openmpi-bin   # optional: emb modes --backend slepc
+  mkdocs                                                   # the documentation site (docs/)
 )
 missing=()
 for p in "${packages[@]}"; do

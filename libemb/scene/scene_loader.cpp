@@ -107,6 +107,7 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   for (const char* key : {"mass", "inertia"})
     EMB_THROW_IF(rb.Has(key), what << ": '" << key << "' comes from the body file; remove it");
   const std::string name = rb.GetString("name");
+  rb.set_section("bodies: body file");
   const std::string path = ScenePath(file, rb.GetString("body_file"));
   inputs->push_back(path);
   mbs::FlexibleBodyOptions options = ReadFlexibleBodyOptions(rb, flexible);
@@ -139,7 +140,7 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   // The keys of `model: beam` (beam_part_reader.h) may stay in the entry: one-word switch.
   for (const char* key : {"geometry", "parameters", "webs", "web_width", "beam_nodes", "element_length",
                           "stiffness_damping", "material"})
-    rb.Optional(key);
+    rb.Ignore(key);
   // Initial modal coordinates eta(t0) and rates eta'(t0), one per kept mode (AsDouble refuses
   // non-finite numbers).
   std::vector<double> eta0, eta_dot0;
@@ -205,6 +206,7 @@ void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOpti
                                                        << ": model 'cms' needs a body_file (from "
                                                        << "emb reduce)");
         if (from_file) return ReadBodyFilePart(rb, file, model == "cms", sys, parts, notes, inputs);
+        rb.set_section("bodies: rigid");
         mbs::RigidBody b;
         b.name = name;
         b.p_WB = rb.GetVector3("position", Vector3d::Zero());
@@ -331,7 +333,7 @@ void ReadCouplers(const YAML::Node& list, const std::string& file, mbs::System* 
 }
 
 void ReadSteadyState(const YAML::Node& node, const std::string& file, SteadyStateSettings* s) {
-  MapReader r(node, file, "analysis steady_state");
+  MapReader r(node, file, "analysis steady_state", "analysis: steady_state");
   s->period = r.GetDouble("period", NumberRange::Positive("s"));
   const YAML::Node ch = r.Require("channels");
   EMB_THROW_IF(!ch.IsSequence(), Where(file, ch) << ": steady_state channels: expected a list");
@@ -344,7 +346,7 @@ void ReadSteadyState(const YAML::Node& node, const std::string& file, SteadyStat
 
 void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::AnalysisSettings* s,
                   SteadyStateSettings* steady) {
-  MapReader r(node, file, "analysis");
+  MapReader r(node, file, "analysis", "analysis");
   s->type = mbs::ParseAnalysisType(r.GetString("type", "dynamic"));
   using R = NumberRange;
   s->t_start = r.GetDouble("t_start", s->t_start, R::Finite("s"));
@@ -436,7 +438,7 @@ Vector3d ReadPlanar(const YAML::Node& node, const std::string& file) {
                                               << node.Scalar() << "'");
     }
   }
-  MapReader r(node, file, "planar");
+  MapReader r(node, file, "planar", "planar");
   const Vector3d n = r.GetVector3("normal");
   r.Finish();
   EMB_THROW_IF(!(n.norm() > 0.0), Where(file, node) << ": planar normal: expected a non-zero "
@@ -446,7 +448,7 @@ Vector3d ReadPlanar(const YAML::Node& node, const std::string& file) {
 }
 
 void ReadOutput(const YAML::Node& node, const std::string& file, OutputSpec* o) {
-  MapReader r(node, file, "output");
+  MapReader r(node, file, "output", "output");
   o->file = r.GetString("file", "");
   o->csv = r.GetString("csv", "");
   if (const YAML::Node ch = r.Optional("channels")) {
@@ -466,7 +468,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
     EMB_THROW(InputError, source << ":" << e.mark.line + 1 << ": YAML syntax error: " << e.msg);
   }
   CheckUniqueKeys(root, source);
-  MapReader r(root, source, "scene");
+  MapReader r(root, source, "scene", "scene");
   Scene scene;
   scene.source = source;
   scene.name = r.GetString("name", "scene");

@@ -91,7 +91,7 @@ std::vector<StressOutput> ReadStressOutputs(
         }
         spec.surface = !out.surface_field_times.empty();
         if (const YAML::Node f = r.Optional("fatigue")) {
-          MapReader fr(f, file, r.what() + " fatigue");
+          MapReader fr(f, file, r.what() + " fatigue", "stress_outputs: fatigue");
           out.fatigue = true;
           out.sn = ReadSn(fr, &out);
           fr.Finish();
