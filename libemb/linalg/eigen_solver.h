@@ -46,8 +46,10 @@ struct EigenSolverOptions {
   int spare_blocks{4};
   /// Relative tolerance on the Ritz residuals (‖r‖ ≤ tol·|θ|). `emb modes` uses 1e-9: its
   /// backward errors after Rayleigh–Ritz stay 1000× below residual_tolerance (6.7e-12 for 30
-  /// crankshaft modes) for ~10 % fewer solves. A reduction keeps 1e-10: at 1e-9 the tube's
-  /// certificate found its basis K-diagonal only to 8e-10 against a limit of 7.2e-10.
+  /// crankshaft modes) for ~10 % fewer solves. A reduction keeps 1e-10 (at 1e-9 the tube's
+  /// certificate once found its basis K-diagonal only to 8e-10 against 7.2e-10; that measure
+  /// then counted the canonical rotation of a near-equal pair, OrthonormalModes::
+  /// degenerate_coupling, which it no longer does: 1e-9 is not re-measured).
   double tolerance{1e-10};
   int max_restarts{1000};        ///< Spectra's restart limit
   double residual_tolerance{1e-8};  ///< largest accepted backward error η_i

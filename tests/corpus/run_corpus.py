@@ -14,7 +14,8 @@ case is also held to rules no case may break:
   - no hang: the command ends within the case's timeout (default 60 s);
   - no raw C++ failure text on stderr ("std::", "stod", "_M_range_check", "bad_alloc", ...);
   - the exact exit code expected (a bad input that exits 0 is a silent acceptance);
-  - no hidden temporaries (".*.tmp.*", ".emb-probe-*", ".*.lock") left by anything but SIGKILL.
+  - no hidden temporaries (".*.tmp.*", ".emb-probe-*") left by anything but SIGKILL, and no
+    lock file (".*.lock", which emb no longer makes) at all.
 Fixtures (a small part, its mesh, a body file, results files) are made once per run with
 the emb under test, into WORK/fix. Full-disk cases mount a small tmpfs when they can (root)
 and otherwise limit the file size with RLIMIT_FSIZE; read-only directories are a read-only
@@ -30,6 +31,7 @@ import json
 import os
 import shutil
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -217,13 +219,13 @@ def run_setup(step, ctx, case_dir, mounts, env):
                     f.flush()
         except OSError:
             pass
-    elif kind == "hold_lock":  # another emb process writing this output
-        lock = p(a[0])
-        fd = os.open(lock, os.O_RDWR | os.O_CREAT, 0o644)
-        import fcntl
-        fcntl.flock(fd, fcntl.LOCK_EX)
-        os.write(fd, b"424242")
-        env.setdefault("fds", []).append(fd)
+    elif kind == "hold_lock":  # another emb process writing this output: its lock's name
+        out = os.path.realpath(p(a[0]))  # (libemb/io/output_lock.h) bound by this process
+        st = os.stat(os.path.dirname(out))
+        holder = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        holder.bind(f"\0emb-output/{st.st_dev:x}/{st.st_ino:x}/{os.path.basename(out)}")
+        holder.listen(1)
+        env.setdefault("fds", []).append(holder)
     else:
         raise ValueError(f"unknown setup step {kind}")
 
@@ -367,8 +369,8 @@ def run_case(case, ctx):
         return {"name": name, "category": case["category"], "rc": None, "seconds": 0.0,
                 "problems": [f"runner: {type(e).__name__}: {e}"], "stderr": "", "how": ""}
     finally:
-        for fd in env.get("fds", []):
-            os.close(fd)
+        for holder in env.get("fds", []):
+            holder.close()
         mounts.release()
 
 

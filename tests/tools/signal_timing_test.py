@@ -41,6 +41,7 @@ TEMPORARIES = [".*.tmp.*", ".emb-probe-*", ".*.lock", ".*.tmp"]
 FORBIDDEN = ["Sanitizer", "Segmentation", "runtime error:", "core dumped", "Aborted",
              "terminate called", "std::", "HDF5-DIAG"]
 PREVIOUS = b"previous output, must survive an interrupted run\n"
+NUMBER = re.compile(rb"[-+]?[0-9][0-9.eE+-]*")
 PHASE_LINE = re.compile(r"^\[\s*([0-9.]+) s\] (.+?)\s*$")
 
 TUBE = ["{src}/meshes/tube.geo", "--size", "0.05", "--set", "n_circ=16"]
@@ -211,16 +212,17 @@ def schedule(phases, total, trials):
 def complete(path, reference):
     """True if `path` holds a whole output: an HDF5 file that opens (emb renames a finished
     temporary into place, so a file under the name is never half written), or a text file
-    that ends as the calibration run's does."""
+    with the calibration run's lines, each of the same shape (numbers aside: a report holds
+    its run's timings, which differ from run to run)."""
     if path.endswith(".h5"):
         try:
             with h5py.File(path, "r"):
                 return True
         except OSError:
             return False
-    last = lambda b: b.rstrip().rsplit(b"\n", 1)[-1]
+    shape = lambda b: [NUMBER.sub(b"#", line) for line in b.rstrip().split(b"\n")]
     with open(path, "rb") as f:
-        return reference is not None and last(f.read()) == last(reference)
+        return reference is not None and shape(f.read()) == shape(reference)
 
 
 def check_trial(name, run_dir, rc, err, sent, sig, pgid, reference):

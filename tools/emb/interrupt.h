@@ -11,7 +11,8 @@
 /// unblocks the signals itself only forwards them to that thread.
 ///
 /// What a signal does. By default it ends the process (Terminate()): the temporaries and
-/// lock files the library registered are removed (libemb/common/signal_cleanup.h; a file
+/// probe files the library registered are removed (libemb/common/signal_cleanup.h; output
+/// locks leave no file, libemb/io/output_lock.h; a file
 /// being made or moved into place finishes first, none is made afterwards), worker
 /// processes (`emb sweep -j`) get the same signal and are waited for (at most
 /// kWorkerGraceSeconds, then SIGKILL), and the process dies by the signal (the shell sees
