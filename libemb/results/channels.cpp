@@ -7,7 +7,7 @@
 #include "libemb/mbs/analysis/joint_coordinates.h"
 #include "libemb/mbs/core/rotation.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 int ElementIndex(const mbs::System& system, const std::string& name) {
@@ -199,4 +199,4 @@ double ChannelSet::Value(const mbs::Sample& s, int k) const {
   return 0.0;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

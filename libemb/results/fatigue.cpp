@@ -6,7 +6,7 @@
 
 #include "libemb/common/error.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 void SnCurve::Validate(const std::string& what) const {
   EMB_THROW_IF(!(std::isfinite(ultimate_strength) && ultimate_strength > 0.0),
@@ -74,4 +74,4 @@ FatigueDamage CalcMinerDamage(const std::vector<RainflowCycle>& cycles, const Sn
   return d;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -24,7 +24,7 @@
 
 #include "libemb/results/rainflow.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 /// One point of a tabulated S–N curve.
 struct SnPoint {
@@ -59,4 +59,4 @@ struct FatigueDamage {
 
 FatigueDamage CalcMinerDamage(const std::vector<RainflowCycle>& cycles, const SnCurve& curve);
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -7,7 +7,7 @@
 
 #include "libemb/common/error.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 constexpr double kCycleDeg = 720.0;
@@ -95,4 +95,4 @@ OrderSpectrum CalcOrderSpectrum(const std::vector<double>& angle_deg,
   return out;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace emb::scene {
+namespace emb::results {
 
 std::vector<double> Reversals(const std::vector<double>& history) {
   std::vector<double> r;
@@ -55,4 +55,4 @@ std::vector<RainflowCycle> CountRainflowPeriodic(const std::vector<double>& hist
   return cycles;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

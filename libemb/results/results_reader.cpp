@@ -11,7 +11,7 @@
 #include "libemb/io/hdf5_file.h"
 #include "libemb/mbs/core/state_layout.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 ResultsStatus ReadStatus(const H5File& h5, const std::string& path) {
@@ -341,4 +341,4 @@ ResultsSteadyState ReadResultsSteadyState(const std::string& path) {
   return s;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace emb::scene {
+namespace emb::results {
 
 /// One channel of a results file: the time samples and the values.
 struct ResultsChannel {
@@ -58,4 +58,4 @@ struct ResultsSteadyState {
 /// @throws InputError for a file that is not emb-mbs-results.
 ResultsSteadyState ReadResultsSteadyState(const std::string& path);
 
-}  // namespace emb::scene
+}  // namespace emb::results

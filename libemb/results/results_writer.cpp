@@ -6,7 +6,7 @@
 #include "libemb/mbs/analysis/joint_coordinates.h"
 #include "libemb/mbs/core/rotation.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 std::vector<std::string> ElementTypes(const mbs::System& s) {
@@ -336,4 +336,4 @@ void CsvWriter::Write(const mbs::Sample& s) {
   EMB_THROW_IF(!out_, "CSV file '" << path_ << "': write failed (disk full?)");
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -6,7 +6,7 @@
 
 #include "libemb/common/error.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 void CheckSteadyStateSettings(const SteadyStateSettings& s, double output_step,
                               const std::string& where) {
@@ -83,4 +83,4 @@ bool SteadyStateMonitor::Add(const mbs::Sample& sample) {
   return report_.converged;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

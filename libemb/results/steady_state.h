@@ -17,7 +17,7 @@
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/results/channels.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 struct SteadyStateSettings {
   double period{0.0};                 ///< P [s]; 0: off
@@ -65,4 +65,4 @@ class SteadyStateMonitor {
 void CheckSteadyStateSettings(const SteadyStateSettings& s, double output_step,
                               const std::string& where);
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -11,7 +11,7 @@
 #include "libemb/io/hdf5_file.h"
 #include "libemb/io/xdmf_writer.h"
 
-namespace emb {
+namespace emb::results {
 namespace {
 
 // The node attributes of step s of k of a field with m nodes: HyperSlabs of the (k, m[, 6])
@@ -136,4 +136,4 @@ void WriteStressFields(const std::string& h5_path, const std::string& xdmf_path,
   xdmf.Commit();
 }
 
-}  // namespace emb
+}  // namespace emb::results

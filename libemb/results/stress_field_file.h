@@ -2,7 +2,7 @@
 /// @file
 /// Stress fields at chosen times on sets of mesh nodes (stress groups, or the whole surface of
 /// a part), as HDF5 with an XDMF file beside it for ParaView (issue 17; written by `emb run`
-/// for a scene's stress_outputs, scene/stress_recorder.h).
+/// for a scene's stress_outputs, stress_recorder.h).
 ///
 /// HDF5 ("emb.stress_fields"), per field F (e.g. "/fillets/journal_fillet_2",
 /// "/fillets/surface") with m nodes and k times:
@@ -24,7 +24,7 @@
 
 #include "libemb/mesh/mesh.h"
 
-namespace emb {
+namespace emb::results {
 
 /// One field: where its nodes are and the stress at each of its times.
 struct NodalStressField {
@@ -44,4 +44,4 @@ struct NodalStressField {
 void WriteStressFields(const std::string& h5_path, const std::string& xdmf_path,
                        const std::vector<NodalStressField>& fields);
 
-}  // namespace emb
+}  // namespace emb::results

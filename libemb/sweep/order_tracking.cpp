@@ -42,7 +42,7 @@ std::vector<OperatingPoint> TrackOrders(const std::vector<double>& time,
   EMB_THROW_IF(windows < 1, "order tracking: the run covers "
                                 << angle_deg.back() - angle_deg.front()
                                 << " deg of crank angle, expected at least one 720-degree cycle");
-  scene::OrderSpectrumSettings os;
+  results::OrderSpectrumSettings os;
   os.cycles = 1;
   os.max_order = max_order;
   os.samples_per_cycle = settings.samples_per_cycle;
@@ -86,7 +86,7 @@ std::vector<OperatingPoint> TrackOrders(const std::vector<double>& time,
         y.back() = y[y.size() - 2] + f * (y.back() - y[y.size() - 2]);
         ac.back() = a1;
       }
-      const scene::OrderSpectrum sp = scene::CalcOrderSpectrum(ac, y, os);
+      const results::OrderSpectrum sp = results::CalcOrderSpectrum(ac, y, os);
       p.mean(c) = sp.mean;
       for (Eigen::Index k = 0; k < no; ++k) {
         const auto line =

@@ -12,7 +12,7 @@
 #include "libemb/common/error.h"
 #include "libemb/results/rainflow.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 constexpr double kRoundOff = 1e-12;  // relative, a handful of flops
@@ -157,4 +157,4 @@ TEST(Fatigue, BadSnCurveIsNamed) {
 }
 
 }  // namespace
-}  // namespace emb::scene
+}  // namespace emb::results

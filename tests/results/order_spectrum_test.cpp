@@ -11,7 +11,7 @@
 
 #include "libemb/common/error.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -89,4 +89,4 @@ TEST(OrderSpectrum, OneCycleOnRequestAndBadInput) {
 }
 
 }  // namespace
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -72,7 +72,7 @@ double CyclePhase(const std::vector<double>& x) {
 TEST(SteadyState, DrivenOscillatorReachesTheClosedFormResponse) {
   const mbs::System sys = DrivenOscillator();
   const double period = 2 * kPi / kForcing;
-  scene::SteadyStateSettings ss;
+  results::SteadyStateSettings ss;
   ss.period = period;
   ss.channels = {"mass.p.z", "mass.v.z"};
   ss.tolerance = 1e-4;
@@ -81,7 +81,7 @@ TEST(SteadyState, DrivenOscillatorReachesTheClosedFormResponse) {
   st.output_step = period / kSamplesPerCycle;
   st.ida.rtol = 1e-10;
   st.ida.atol = 1e-12;
-  scene::SteadyStateMonitor monitor(sys, ss, st.t_start, st.output_step);
+  results::SteadyStateMonitor monitor(sys, ss, st.t_start, st.output_step);
   st.t_end = monitor.t_end();
   const mbs::PreparedRun run = mbs::PrepareRun(sys, st);
   std::vector<double> z, t;
@@ -95,7 +95,7 @@ TEST(SteadyState, DrivenOscillatorReachesTheClosedFormResponse) {
       },
       {}, [&] { return steady; });
   ASSERT_TRUE(r.ok()) << r.message;
-  const scene::SteadyStateReport& rep = monitor.report();
+  const results::SteadyStateReport& rep = monitor.report();
   ASSERT_TRUE(rep.converged) << "cycles " << rep.cycles << " change " << rep.change << " in "
                              << rep.worst_channel << " t " << r.t_reached;
   EXPECT_TRUE(r.stopped);
@@ -158,12 +158,12 @@ TEST(SteadyState, DrivenOscillatorReachesTheClosedFormResponse) {
 // its own size the noise would never fall below the tolerance.
 TEST(SteadyState, ARoundOffChannelDoesNotHoldUpTheSteadyState) {
   const mbs::System sys = DrivenOscillator();
-  scene::SteadyStateSettings ss;
+  results::SteadyStateSettings ss;
   ss.period = 0.1;
   ss.channels = {"mass.p.x"};
   ss.tolerance = 1e-3;
   ss.min_cycles = 2;
-  scene::SteadyStateMonitor monitor(sys, ss, 0.0, 0.01);
+  results::SteadyStateMonitor monitor(sys, ss, 0.0, 0.01);
   mbs::Sample sample;
   sample.q = sys.InitialPositions();
   sample.v = Eigen::VectorXd::Zero(sys.layout().nv());
@@ -182,18 +182,18 @@ TEST(SteadyState, ARoundOffChannelDoesNotHoldUpTheSteadyState) {
 
 TEST(SteadyState, SettingsAreChecked) {
   const mbs::System sys = DrivenOscillator();
-  scene::SteadyStateSettings ss;
+  results::SteadyStateSettings ss;
   ss.period = 0.1;
   ss.channels = {"mass.p.z"};
-  EXPECT_THROW(scene::SteadyStateMonitor(sys, ss, 0.0, 0.03), InputError);  // not whole steps
+  EXPECT_THROW(results::SteadyStateMonitor(sys, ss, 0.0, 0.03), InputError);  // not whole steps
   ss.channels = {"mass.p.q"};
-  EXPECT_THROW(scene::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);  // unknown channel
+  EXPECT_THROW(results::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);  // unknown channel
   ss.channels = {"mass.p.z"};
   ss.min_cycles = 1;
-  EXPECT_THROW(scene::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);
+  EXPECT_THROW(results::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);
   ss.min_cycles = 2;
   ss.tolerance = 0.0;
-  EXPECT_THROW(scene::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);
+  EXPECT_THROW(results::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);
 }
 
 }  // namespace

@@ -143,7 +143,7 @@ TEST(EngineSceneKeys, JournalBearing) {
 // and flywheel started 5 % fast or slow (the dynamometer's motion holds 3000 rpm, so the
 // coupling rings and the speed error decays): the steady cycles agree, whatever the start.
 struct SteadyCycle {
-  SteadyStateReport report;
+  results::SteadyStateReport report;
   std::vector<std::vector<double>> first, last;  // [channel][sample]: first and steady cycle
 };
 
@@ -168,10 +168,10 @@ SteadyCycle RunToSteadyState(double speed_factor) {
   scale("-0.80472", speed_factor);
   Scene sc = ParseScene(yaml, ScenePath("engine_1cyl_rigid.yaml"));
   EXPECT_TRUE(sc.steady_state.enabled());
-  SteadyStateMonitor monitor(sc.system, sc.steady_state, sc.analysis.t_start,
+  results::SteadyStateMonitor monitor(sc.system, sc.steady_state, sc.analysis.t_start,
                              sc.analysis.output_step);
   sc.analysis.t_end = monitor.t_end();
-  const ChannelSet channels(sc.system, sc.steady_state.channels);
+  const results::ChannelSet channels(sc.system, sc.steady_state.channels);
   const int per_cycle = static_cast<int>(std::lround(sc.steady_state.period / sc.analysis.output_step));
   SteadyCycle out;
   out.first.assign(static_cast<std::size_t>(channels.size()), {});

@@ -37,10 +37,10 @@ struct RunUpCommand {
                                             << samples_per_cycle);
     if (output.empty()) output = std::filesystem::path(file).stem().string() + "_runup.h5";
     const PreparedOutputs outputs({{output, "-o"}}, {file});
-    const scene::ResultsChannel theta = scene::ReadBodyRotationAngle(file, angle, axis, 0.0);
+    const results::ResultsChannel theta = results::ReadBodyRotationAngle(file, angle, axis, 0.0);
     if (!theta.warning.empty()) std::cerr << "emb: warning: " << theta.warning << "\n";
     std::vector<std::vector<double>> values;
-    for (const std::string& c : channels) values.push_back(scene::ReadResultsChannel(file, c).values);
+    for (const std::string& c : channels) values.push_back(results::ReadResultsChannel(file, c).values);
     sweep::SweepData d;
     d.scene = file;
     d.settings = settings;

@@ -23,7 +23,7 @@ struct SpectrumCommand {
   std::string file, channel, angle_body, axis{"x"}, csv;
   std::optional<double> rpm;
   double angle_start{0.0};
-  scene::OrderSpectrumSettings settings;
+  results::OrderSpectrumSettings settings;
   OutputOptions out;
 
   void Run() const {
@@ -35,12 +35,12 @@ struct SpectrumCommand {
     CheckInteger("--cycles", settings.cycles, 0, 100000000);
     CheckNumber("--orders", settings.max_order, NumberRange::NonNegative());
     const PreparedOutputs outputs({{csv, "--csv"}}, {file});
-    const scene::ResultsChannel y = scene::ReadResultsChannel(file, channel);
+    const results::ResultsChannel y = results::ReadResultsChannel(file, channel);
     if (!y.warning.empty()) std::cerr << "emb: warning: " << y.warning << "\n";
     std::vector<double> angle;
     std::string angle_source;
     if (!angle_body.empty()) {
-      angle = scene::ReadBodyRotationAngle(file, angle_body, axis, angle_start).values;
+      angle = results::ReadBodyRotationAngle(file, angle_body, axis, angle_start).values;
       angle_source = "rotation of '" + angle_body + "' about world " + axis + " (or its angle, "
                      "for a joint)";
     } else {
@@ -49,8 +49,8 @@ struct SpectrumCommand {
     }
     // A run that searched for its periodic steady state ended with the steady cycle: by
     // default that cycle alone is analysed (the earlier ones hold the start-up).
-    const scene::ResultsSteadyState steady = scene::ReadResultsSteadyState(file);
-    scene::OrderSpectrumSettings used = settings;
+    const results::ResultsSteadyState steady = results::ReadResultsSteadyState(file);
+    results::OrderSpectrumSettings used = settings;
     std::string window = used.cycles > 0 ? "the last " + std::to_string(used.cycles) + " (--cycles)"
                                          : "every whole cycle the data cover";
     if (steady.present && used.cycles == 0) {
@@ -65,7 +65,7 @@ struct SpectrumCommand {
                   << steady.tolerance << "): the spectrum holds start-up transients\n";
       }
     }
-    const scene::OrderSpectrum sp = scene::CalcOrderSpectrum(angle, y.values, used);
+    const results::OrderSpectrum sp = results::CalcOrderSpectrum(angle, y.values, used);
 
     Table t("Engine-order spectrum of " + channel, {"order", "amplitude", "phase_deg"},
             {"order", "amplitude", "phase [deg]"});

@@ -131,10 +131,10 @@ analysis: {type: kinematic, t_end: 0.2, output_step: 0.01}
     EXPECT_TRUE(std::isnan(s.joints(guide, kJointAngle)));  // no rotation coordinate
   }
   // As channels: guide.travel and guide.travel_rate exist, guide.angle does not.
-  const scene::ChannelSet ch(sc.system, {"guide.travel", "guide.travel_rate"});
+  const results::ChannelSet ch(sc.system, {"guide.travel", "guide.travel_rate"});
   EXPECT_EQ(ch.size(), 2);
   try {
-    scene::ChannelSet(sc.system, {"guide.angle"});
+    results::ChannelSet(sc.system, {"guide.angle"});
     ADD_FAILURE() << "guide.angle accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("'guide' has guide.travel, guide.travel_rate"),

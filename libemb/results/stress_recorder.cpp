@@ -1,4 +1,4 @@
-#include "libemb/scene/stress_recorder.h"
+#include "libemb/results/stress_recorder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "libemb/results/rainflow.h"
 #include "libemb/results/stress_field_file.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 // A sample within this of a field time takes it (output times are sums of steps).
@@ -212,4 +212,4 @@ void StressRecorder::WriteFields(const std::string& h5_path, const std::string& 
   WriteStressFields(h5_path, xdmf_path, fields);
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -1,9 +1,10 @@
 #pragma once
 /// @file
-/// What `emb run` does with the stress outputs of a scene (stress_output_reader.h) besides
-/// their hot-spot channels (which the results file gets with the other probes, flushed every
-/// sample): it keeps the stress measure of every group node for the fatigue summary, and the
-/// groups' stress fields at the chosen field times for ParaView.
+/// What `emb run` does with the stress outputs of a scene (stress_output.h; the scene section
+/// is read by scene/stress_output_reader.h) besides their hot-spot channels (which the results
+/// file gets with the other probes, flushed every sample): it keeps the stress measure of every
+/// group node for the fatigue summary, and the groups' stress fields at the chosen field times
+/// for ParaView.
 ///
 /// Fatigue per group and node: the history of the measure (sigma_1 or signed von Mises,
 /// fe/stress_measures.h) over a window [t0, t1] is rainflow counted (periodically for one
@@ -11,12 +12,13 @@
 /// (fatigue.h); the row reports the node of the largest D. Life = 1 / D windows (engine
 /// cycles when the window is one steady cycle).
 ///
-/// Stress fields (results/stress_field_file.h, written atomically at the end of the run): per
+/// Stress fields (stress_field_file.h, written atomically at the end of the run): per
 /// output o the fields of its groups, /<o>/<g>, at its field_times, with the group's faces
 /// (the boundary faces of the body file's mesh whose nodes are all in the group), and the
 /// field on the whole surface, /<o>/surface, at its surface_field_times. A field time is
 /// taken by the first sample at or after it.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,9 +26,9 @@
 
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/parts/stress_probe.h"
-#include "libemb/scene/scene.h"
+#include "libemb/results/stress_output.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 /// One row of the fatigue summary.
 struct FatigueRow {
@@ -78,4 +80,4 @@ class StressRecorder {
   std::vector<Group> groups_;
 };
 
-}  // namespace emb::scene
+}  // namespace emb::results
