@@ -1,11 +1,16 @@
 #pragma once
 /// @file
 /// Generalized symmetric eigenproblem K φ = λ M φ (K symmetric positive semi-definite,
-/// M symmetric positive definite) for the modes nearest a shift σ, by Spectra's implicitly
-/// restarted Lanczos in shift-invert mode on our own symmetric factorisation of K − σM.
+/// M symmetric positive definite) for the modes nearest a shift σ, by shift-invert (block
+/// Krylov–Schur, or Spectra's implicitly restarted Lanczos) on our own symmetric factorisation
+/// of K − σM, or a dense solve for small problems.
 ///
 /// λ = ω² [rad²/s²] when K is in N/m and M in kg. For the *lowest* modes of a free-free
 /// (singular K) problem σ must be negative: a zero shift factors a singular matrix.
+///
+/// Back ends (EigenMethod), one file each: eigen_solver_dense.cpp, eigen_solver_lanczos.cpp,
+/// eigen_solver_block.cpp (eigen_solver_backends.h); eigen_solver.cpp chooses one, then runs
+/// the checks below on its pairs.
 ///
 /// Every eigenpair is checked, not hoped for: after a Rayleigh–Ritz clean-up on the
 /// converged subspace each pair's normwise backward error
