@@ -50,9 +50,7 @@ void RayleighRitzAndCheck(const SparseMatrix& K, const SparseMatrix& M, const Sp
   ResidualProjection outside_constraints;
   if (C.rows() > 0) {
     cct.compute(Eigen::MatrixXd(C * C.transpose()));
-    outside_constraints = [&](Eigen::VectorXd& res) {
-      res -= C.transpose() * cct.solve(C * res);
-    };
+    outside_constraints = [&](Eigen::VectorXd& res) { res -= C.transpose() * cct.solve(C * res); };
   }
   const EigenpairCheck check =
       CheckEigenpairs(Phi, KPhi, MPhi, r.eigenvalues, NormOne(K), NormOne(M), outside_constraints);
@@ -112,11 +110,16 @@ double NormOne(const SparseMatrix& A) {
 
 const char* Name(EigenStatus status) {
   switch (status) {
-    case EigenStatus::kSuccess: return "success";
-    case EigenStatus::kNotConverged: return "not converged";
-    case EigenStatus::kFactorizationFailed: return "factorisation failed";
-    case EigenStatus::kInaccurate: return "inaccurate";
-    case EigenStatus::kMissedModes: return "missed modes";
+    case EigenStatus::kSuccess:
+      return "success";
+    case EigenStatus::kNotConverged:
+      return "not converged";
+    case EigenStatus::kFactorizationFailed:
+      return "factorisation failed";
+    case EigenStatus::kInaccurate:
+      return "inaccurate";
+    case EigenStatus::kMissedModes:
+      return "missed modes";
   }
   return "?";
 }
@@ -168,13 +171,11 @@ EigenResult SolveGeneralizedEigen(ShiftInvertSolver& solver, const EigenSolverOp
   const SparseMatrix& M = solver.M();
   const SparseMatrix& C = solver.C();
   EMB_THROW_IF(K.rows() != K.cols() || M.rows() != M.cols() || K.rows() != M.rows(),
-               "eigenproblem: expected square K and M of one size, got K " << K.rows() << "x"
-                                                                           << K.cols() << ", M "
-                                                                           << M.rows() << "x"
-                                                                           << M.cols());
-  EMB_THROW_IF(C.rows() > 0 && C.cols() != K.cols(),
-               "eigenproblem: expected constraints with " << K.cols() << " columns, got "
-                                                          << C.cols());
+               "eigenproblem: expected square K and M of one size, got K "
+                   << K.rows() << "x" << K.cols() << ", M " << M.rows() << "x" << M.cols());
+  EMB_THROW_IF(C.rows() > 0 && C.cols() != K.cols(), "eigenproblem: expected constraints with "
+                                                         << K.cols() << " columns, got "
+                                                         << C.cols());
   // Unknowns left once the constraints are imposed.
   const int n = static_cast<int>(K.rows() - C.rows());
   EMB_THROW_IF(o.num_modes < 1, "number of modes: expected at least 1, got " << o.num_modes);
@@ -184,12 +185,14 @@ EigenResult SolveGeneralizedEigen(ShiftInvertSolver& solver, const EigenSolverOp
   CheckNumber("eigen-solver residual tolerance", o.residual_tolerance, NumberRange::Positive());
   CheckInteger("eigen-solver subspace", o.subspace, 0, std::numeric_limits<int>::max());
   CheckInteger("eigen-solver restarts", o.max_restarts, 1, std::numeric_limits<int>::max());
-  const bool dense = o.method == EigenMethod::kDense || (o.method == EigenMethod::kAuto && n <= 300);
+  const bool dense =
+      o.method == EigenMethod::kDense || (o.method == EigenMethod::kAuto && n <= 300);
   // The block method needs room for its basis beyond the wanted pairs; on a small problem
   // that asks for nearly all of its modes the single-vector Lanczos does.
-  const int block_size = o.block_size > 0 ? o.block_size : internal::AutomaticBlockSize(o.num_modes);
-  const bool block = !dense && o.method != EigenMethod::kLanczos &&
-                     n >= o.num_modes + 3 * std::min(block_size, 4);
+  const int block_size =
+      o.block_size > 0 ? o.block_size : internal::AutomaticBlockSize(o.num_modes);
+  const bool block =
+      !dense && o.method != EigenMethod::kLanczos && n >= o.num_modes + 3 * std::min(block_size, 4);
   CheckInteger("eigen-solver block size", o.block_size, 0, std::numeric_limits<int>::max());
 
   EMB_THROW_IF(o.num_modes > n || (!dense && o.num_modes >= n),

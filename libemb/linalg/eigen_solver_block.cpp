@@ -30,7 +30,8 @@ namespace {
 void OrthonormalizeInner(const BlockOperators& op, Eigen::MatrixXd& Z, Eigen::MatrixXd& BZ) {
   for (int pass = 0; pass < 2; ++pass) {
     op.inner(Z, BZ);
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (Z.transpose() * BZ + BZ.transpose() * Z));
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 *
+                                                      (Z.transpose() * BZ + BZ.transpose() * Z));
     const Eigen::VectorXd d = es.eigenvalues().cwiseMax(1e-300);
     Z = (Z * (es.eigenvectors() * d.cwiseSqrt().cwiseInverse().asDiagonal())).eval();
   }
@@ -58,8 +59,9 @@ Deflation NullDeflation(Eigen::MatrixXd Z, Eigen::MatrixXd BZ, double sigma) {
 // pairs' accuracy (backward errors 1e-7 measured on a beam, with 465 restarts). Found by
 // inverse iteration at σ (null vectors grow by (λ − σ)/|σ| ≥ 10⁵ per step against the rest:
 // two block solves leave them accurate to the solves' round-off), identified by
-// Rayleigh–Ritz with K (λ below NullLevel) and locked from the start. A residual correction z ← z − A⁻¹(K z) in extended precision
-// was tried and changed no backward error (beam 2.3e-12, crankshaft 1.0e-13): not kept.
+// Rayleigh–Ritz with K (λ below NullLevel) and locked from the start. A residual correction
+// z ← z − A⁻¹(K z) in extended precision was tried and changed no backward error (beam
+// 2.3e-12, crankshaft 1.0e-13): not kept.
 Deflation FindNullSpace(const ShiftInvertSolver& solver, const BlockOperators& op, double sigma,
                         int max_vectors, int& solved) {
   constexpr int kInverseSteps = 1;
@@ -106,8 +108,8 @@ Deflation GivenNullSpace(const ShiftInvertSolver& solver, const BlockOperators& 
   const int r = static_cast<int>(o.null_space.cols());
   Deflation d;
   if (r == 0 || r >= o.num_modes || solver.num_constraints() > 0) return d;
-  EMB_THROW_IF(o.null_space.rows() != op.rows, "null space: expected " << op.rows
-                                                   << " rows, got " << o.null_space.rows());
+  EMB_THROW_IF(o.null_space.rows() != op.rows,
+               "null space: expected " << op.rows << " rows, got " << o.null_space.rows());
   Eigen::MatrixXd Z = o.null_space, BZ;
   OrthonormalizeInner(op, Z, BZ);
   const Eigen::MatrixXd gram = Z.transpose() * BZ;
@@ -146,7 +148,7 @@ Deflation KnownPairs(const ShiftInvertSolver& solver, const BlockOperators& op,
 }  // namespace
 
 void SolveEigenBlock(ShiftInvertSolver& shift_solver, const EigenSolverOptions& o,
-                const ProgressFn& progress, EigenResult& r) {
+                     const ProgressFn& progress, EigenResult& r) {
   const SparseMatrix& M = shift_solver.M();
   const int n = static_cast<int>(shift_solver.rows() - shift_solver.num_constraints());
   if (!PrepareEigenShift(shift_solver, o, r)) return;

@@ -13,7 +13,7 @@ namespace emb::internal {
 
 // Dense solve; with constraints, on an orthonormal basis Z of null(C) (from a full QR of Cᵀ).
 void SolveEigenDense(const SparseMatrix& K, const SparseMatrix& M, const SparseMatrix& C,
-                const EigenSolverOptions& o, EigenResult& r) {
+                     const EigenSolverOptions& o, EigenResult& r) {
   Eigen::MatrixXd Kd = Eigen::MatrixXd(K), Md = Eigen::MatrixXd(M);
   Eigen::MatrixXd Z;
   if (C.rows() > 0) {
@@ -29,9 +29,10 @@ void SolveEigenDense(const SparseMatrix& K, const SparseMatrix& M, const SparseM
     Kd = (Z.transpose() * Kd * Z).eval();
     Md = (Z.transpose() * Md * Z).eval();
   }
-  EMB_THROW_IF(o.num_modes > Kd.rows(), "number of modes: " << o.num_modes
-                                            << " requested but the constrained model has only "
-                                            << Kd.rows() << " degrees of freedom");
+  EMB_THROW_IF(o.num_modes > Kd.rows(),
+               "number of modes: " << o.num_modes
+                                   << " requested but the constrained model has only " << Kd.rows()
+                                   << " degrees of freedom");
   // Checked below against K and M themselves (RayleighRitzAndCheck).
   const DenseEigenpairs dense = SolveDenseEigenpairs(Kd, Md, /*check=*/false);
   if (!dense.ok) {

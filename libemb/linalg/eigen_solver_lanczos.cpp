@@ -99,22 +99,22 @@ class CachedMassProduct {
 }  // namespace
 
 void SolveEigenLanczos(ShiftInvertSolver& shift_solver, const EigenSolverOptions& o,
-                  const ProgressFn& progress, EigenResult& r) {
+                       const ProgressFn& progress, EigenResult& r) {
   const SparseMatrix& M = shift_solver.M();
   const int n = static_cast<int>(shift_solver.rows() - shift_solver.num_constraints());
   const int nev = o.num_modes;
   int ncv = o.subspace > 0 ? o.subspace : std::max(2 * nev + 1, nev + 20);
   ncv = std::min(ncv, n);
-  EMB_THROW_IF(ncv <= nev, "eigen-solver subspace: expected more than " << nev
-                                                                        << " vectors, got " << ncv);
+  EMB_THROW_IF(ncv <= nev,
+               "eigen-solver subspace: expected more than " << nev << " vectors, got " << ncv);
   if (!PrepareEigenShift(shift_solver, o, r)) return;
   const double m1 = NormOne(M);
   const double scale = m1 > 0.0 ? std::max(1.0, NormOne(shift_solver.K()) / m1) : 1.0;
   ShiftInvertOp op(shift_solver, progress, 3 * ncv, scale);
   CachedMassProduct bop(M);
   Stopwatch sw;
-  using Solver =
-      Spectra::SymGEigsShiftSolver<ShiftInvertOp, CachedMassProduct, Spectra::GEigsMode::ShiftInvert>;
+  using Solver = Spectra::SymGEigsShiftSolver<ShiftInvertOp, CachedMassProduct,
+                                              Spectra::GEigsMode::ShiftInvert>;
   const double sigma = r.shift;
   Solver solver(op, bop, nev, ncv, sigma);  // the factorisation above is reused
   sw.Restart();

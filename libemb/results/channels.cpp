@@ -91,17 +91,19 @@ ChannelSet::ChannelSet(const mbs::System& system, const std::vector<std::string>
                                        "journal bearings)");
     if (it == valid.end() && c.find('.') == c.rfind('.') &&
         ElementIndex(system, c.substr(0, c.find('.'))) >= 0) {  // <joint>.<coordinate>
-      const mbs::ConstraintElement& e = system.elements()[ElementIndex(system, c.substr(0, c.find('.')))];
+      const mbs::ConstraintElement& e =
+          system.elements()[ElementIndex(system, c.substr(0, c.find('.')))];
       std::string has;
       for (const auto& v : valid)
         if (v.rfind(e.name + ".", 0) == 0 && v.find('.', e.name.size() + 1) == std::string::npos)
           has += (has.empty() ? "" : ", ") + v;
-      EMB_THROW(InputError, "output channel '" << c << "': '" << e.name << "' has "
-                                               << (has.empty() ? std::string("no coordinate "
-                                                                 "channels (only revolute, "
-                                                                 "cylindrical and translational "
-                                                                 "joints have them)")
-                                                               : has));
+      EMB_THROW(InputError, "output channel '"
+                                << c << "': '" << e.name << "' has "
+                                << (has.empty() ? std::string("no coordinate "
+                                                              "channels (only revolute, "
+                                                              "cylindrical and translational "
+                                                              "joints have them)")
+                                                : has));
     }
     EMB_THROW_IF(it == valid.end(), "output channel '" << c << "' is unknown"
                                                        << DidYouMean(c, valid)

@@ -10,8 +10,10 @@ std::vector<double> Reversals(const std::vector<double>& history) {
   for (double x : history) {
     if (!r.empty() && x == r.back()) continue;
     // Drop the middle point of a monotonic run: r.back() between its neighbours.
-    if (r.size() >= 2 && (r.back() - r[r.size() - 2]) * (x - r.back()) > 0.0) r.back() = x;
-    else r.push_back(x);
+    if (r.size() >= 2 && (r.back() - r[r.size() - 2]) * (x - r.back()) > 0.0)
+      r.back() = x;
+    else
+      r.push_back(x);
   }
   return r;
 }

@@ -17,10 +17,9 @@
 /// by the "Point Gaussian" representation); node attributes von_mises, max_principal,
 /// signed_von_mises (Scalar) and stress (Tensor6).
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "libemb/mesh/mesh.h"
 
@@ -28,13 +27,13 @@ namespace emb::results {
 
 /// One field: where its nodes are and the stress at each of its times.
 struct NodalStressField {
-  std::string path;                   ///< HDF5 group, e.g. "/fillets/surface"
-  std::string title;                  ///< XDMF grid name, e.g. "fillets.surface"
-  std::vector<int> nodes;             ///< m mesh nodes
-  Eigen::MatrixXd coordinates;        ///< m × 3 [m]
-  std::vector<CellBlock> faces;       ///< surface faces, indices into `nodes` (may be empty)
-  std::vector<double> times;          ///< k times [s]
-  std::vector<Eigen::MatrixXd> stress;///< k matrices 6 × m [Pa]
+  std::string path;                     ///< HDF5 group, e.g. "/fillets/surface"
+  std::string title;                    ///< XDMF grid name, e.g. "fillets.surface"
+  std::vector<int> nodes;               ///< m mesh nodes
+  Eigen::MatrixXd coordinates;          ///< m × 3 [m]
+  std::vector<CellBlock> faces;         ///< surface faces, indices into `nodes` (may be empty)
+  std::vector<double> times;            ///< k times [s]
+  std::vector<Eigen::MatrixXd> stress;  ///< k matrices 6 × m [Pa]
 };
 
 /// Writes `fields` (those with at least one time) to `h5_path` and the XDMF to `xdmf_path`,

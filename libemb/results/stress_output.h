@@ -4,10 +4,9 @@
 /// groups' stress fields at chosen times and a fatigue summary (stress_recorder.h records
 /// them). A scene's `stress_outputs` section (scene/stress_output_reader.h) fills it.
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "libemb/mesh/mesh.h"
 #include "libemb/results/fatigue.h"
@@ -18,9 +17,9 @@ namespace emb::results {
 /// `name`) plus what the run does with its groups' full stress fields: XDMF at chosen times
 /// and a fatigue summary.
 struct StressOutput {
-  std::string name;        ///< the probe's name
-  std::string body;        ///< the flexible part
-  std::string body_file;   ///< its body file (the mesh for the XDMF)
+  std::string name;                 ///< the probe's name
+  std::string body;                 ///< the flexible part
+  std::string body_file;            ///< its body file (the mesh for the XDMF)
   std::vector<double> field_times;  ///< [s] write the groups' stress fields at these times
   /// [s] write the stress field on the whole part surface at these times (the body file
   /// needs emb reduce --stress-surface)

@@ -18,11 +18,10 @@
 /// field on the whole surface, /<o>/surface, at its surface_field_times. A field time is
 /// taken by the first sample at or after it.
 
+#include <Eigen/Core>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/parts/stress_probe.h"
@@ -33,12 +32,12 @@ namespace emb::results {
 /// One row of the fatigue summary.
 struct FatigueRow {
   std::string output, group, measure;
-  int node{-1};              ///< mesh node of the largest damage
-  double damage{0.0};        ///< Miner D per window
-  double life{0.0};          ///< 1 / D windows (infinite if D = 0)
-  double cycles{0.0};        ///< rainflow cycles counted at that node
-  double max_range{0.0};     ///< largest range at that node [Pa]
-  double max_equivalent{0.0};///< largest Goodman amplitude at that node [Pa]
+  int node{-1};                ///< mesh node of the largest damage
+  double damage{0.0};          ///< Miner D per window
+  double life{0.0};            ///< 1 / D windows (infinite if D = 0)
+  double cycles{0.0};          ///< rainflow cycles counted at that node
+  double max_range{0.0};       ///< largest range at that node [Pa]
+  double max_equivalent{0.0};  ///< largest Goodman amplitude at that node [Pa]
 };
 
 class StressRecorder {
@@ -60,23 +59,23 @@ class StressRecorder {
   void WriteFields(const std::string& h5_path, const std::string& xdmf_path) const;
 
  private:
-  struct Surface {                          // per output: the whole-surface field
+  struct Surface {  // per output: the whole-surface field
     std::vector<double> t;
-    std::vector<Eigen::MatrixXd> field;     // 6 x s per surface field time
+    std::vector<Eigen::MatrixXd> field;  // 6 x s per surface field time
   };
   struct Group {
-    int output, index;                      // output and group index in the probe
-    std::vector<double> t;                  // sample times (fatigue)
-    std::vector<Eigen::VectorXd> measure;   // per sample: the measure at every node
-    std::vector<double> field_t;            // field times reached
-    std::vector<Eigen::MatrixXd> field;     // 6 x m per field time
+    int output, index;                     // output and group index in the probe
+    std::vector<double> t;                 // sample times (fatigue)
+    std::vector<Eigen::VectorXd> measure;  // per sample: the measure at every node
+    std::vector<double> field_t;           // field times reached
+    std::vector<Eigen::MatrixXd> field;    // 6 x m per field time
   };
   const mbs::System& system_;
   std::vector<StressOutput> outputs_;
   std::vector<std::shared_ptr<const mbs::StressProbe>> probes_;
-  std::vector<std::size_t> next_field_;     // per output: next field time to take
-  std::vector<std::size_t> next_surface_;   // per output: next surface field time to take
-  std::vector<Surface> surfaces_;           // per output
+  std::vector<std::size_t> next_field_;    // per output: next field time to take
+  std::vector<std::size_t> next_surface_;  // per output: next surface field time to take
+  std::vector<Surface> surfaces_;          // per output
   std::vector<Group> groups_;
 };
 

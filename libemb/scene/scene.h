@@ -36,7 +36,7 @@ struct Scene {
   /// The `stress_outputs` section (stress_output_reader.h): what `emb run` records of the
   /// parts' stresses (results/stress_recorder.h).
   std::vector<results::StressOutput> stress_outputs;
-  std::vector<std::string> notes;  ///< what the loader decided, e.g. the modes a part kept
+  std::vector<std::string> notes;   ///< what the loader decided, e.g. the modes a part kept
   std::vector<std::string> inputs;  ///< files it reads: the scene, body files, geometries
 };
 

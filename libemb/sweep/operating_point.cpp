@@ -26,10 +26,14 @@ double ProcessCpuSeconds() {
 
 const char* Name(PointStatus status) {
   switch (status) {
-    case PointStatus::kConverged: return "converged";
-    case PointStatus::kNotConverged: return "not-converged";
-    case PointStatus::kFailed: return "failed";
-    case PointStatus::kRunUp: return "run-up";
+    case PointStatus::kConverged:
+      return "converged";
+    case PointStatus::kNotConverged:
+      return "not-converged";
+    case PointStatus::kFailed:
+      return "failed";
+    case PointStatus::kRunUp:
+      return "run-up";
   }
   return "failed";
 }
@@ -38,8 +42,10 @@ PointStatus ParsePointStatus(const std::string& name) {
   for (PointStatus s : {PointStatus::kConverged, PointStatus::kNotConverged, PointStatus::kFailed,
                         PointStatus::kRunUp})
     if (name == Name(s)) return s;
-  EMB_THROW(InputError, "operating point status: expected converged, not-converged, failed or run-up, "
-                        "got '" << name << "'");
+  EMB_THROW(InputError,
+            "operating point status: expected converged, not-converged, failed or run-up, "
+            "got '"
+                << name << "'");
 }
 
 OperatingPoint FailedPoint(double rpm, const std::string& message, const OrderSettings& settings) {
@@ -67,8 +73,8 @@ void CheckSweepable(const scene::Scene& scene, const OrderSettings& settings) {
   EMB_THROW_IF(settings.channels.empty(), "sweep: expected at least one channel");
   (void)results::ChannelSet(scene.system, settings.channels);  // names, with a did-you-mean
   EMB_THROW_IF(settings.orders.empty(), "sweep: expected at least one order");
-  EMB_THROW_IF(settings.samples_per_cycle < 8, "sweep: expected at least 8 samples per cycle, got "
-                                                   << settings.samples_per_cycle);
+  EMB_THROW_IF(settings.samples_per_cycle < 8,
+               "sweep: expected at least 8 samples per cycle, got " << settings.samples_per_cycle);
   for (double o : settings.orders)
     EMB_THROW_IF(!(o > 0.0) || std::abs(2 * o - std::round(2 * o)) > 1e-9 ||
                      o >= settings.samples_per_cycle / 4.0,
@@ -139,7 +145,8 @@ OperatingPoint RunOperatingPoint(const scene::Scene& scene, double rpm,
     const results::OrderSpectrum sp = results::CalcOrderSpectrum(angle, y, os);
     p.mean(c) = sp.mean;
     for (Eigen::Index k = 0; k < no; ++k) {
-      const auto line = static_cast<std::size_t>(std::lround(2.0 * settings.orders[static_cast<std::size_t>(k)]));
+      const auto line =
+          static_cast<std::size_t>(std::lround(2.0 * settings.orders[static_cast<std::size_t>(k)]));
       p.amplitude(c, k) = sp.lines.at(line).amplitude;
       p.phase_deg(c, k) = sp.lines.at(line).phase_deg;
     }

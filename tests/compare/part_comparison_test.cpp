@@ -64,7 +64,8 @@ void ExpectOrdered(const PartComparison& c) {
     EXPECT_GT(r.num_unknowns, 0) << r.name;
   }
   const RouteResult &few = Route(c, "cms 2"), &many = Route(c, "cms 8");
-  const RouteResult &lumped = Route(c, "beam lumped, rigid webs"), &tmm = Route(c, "tmm, rigid webs");
+  const RouteResult &lumped = Route(c, "beam lumped, rigid webs"),
+                    &tmm = Route(c, "tmm, rigid webs");
   for (int j = 0; j < n; ++j) {
     const double e_few = few.Error(c.reference, j), e_many = many.Error(c.reference, j);
     ASSERT_TRUE(std::isfinite(e_few) && std::isfinite(e_many)) << "mode " << j + 1;
@@ -99,8 +100,9 @@ TEST(PartComparison, CrankshaftFreeFreeAndReport) {
   std::ifstream in(csv);
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header, "part,support,route,method,variant,unknowns,seconds,mode,reference_hz,"
-                    "section_deformation,beam_like,hz,error_pct,mac");
+  EXPECT_EQ(header,
+            "part,support,route,method,variant,unknowns,seconds,mode,reference_hz,"
+            "section_deformation,beam_like,hz,error_pct,mac");
   int rows = 0;
   for (std::string line; std::getline(in, line);) ++rows;
   EXPECT_EQ(rows, static_cast<int>(c.routes.size() * c.reference.size()));
@@ -138,8 +140,8 @@ TEST(PartComparison, TubeBendingPairedAndShellModesFlagged) {
   const double area = std::numbers::pi * (r_out * r_out - r_in * r_in);
   const double second_moment = std::numbers::pi / 4 * (std::pow(r_out, 4) - std::pow(r_in, 4));
   const test::BeamSection section{steel.youngs_modulus, steel.youngs_modulus / (2 * (1 + nu)),
-                                  steel.density, area, second_moment,
-                                  test::KappaHollowCircle(nu, r_in, r_out)};
+                                  steel.density,        area,
+                                  second_moment,        test::KappaHollowCircle(nu, r_in, r_out)};
   const double timoshenko = test::TimoshenkoFrequencies(section, length, test::BeamEnd::kFree,
                                                         test::BeamEnd::kFree, 1)[0];
   constexpr double kFreeFreeBetaL = 4.730040744862704;  // cos(bL) cosh(bL) = 1

@@ -28,7 +28,7 @@ using testing::TwoDiscs;
 // ~300 rtol after four impacts).
 constexpr double kRtol = 1e-8;
 constexpr double kSpeedTolerance = 1e3 * kRtol;  // relative
-constexpr double kLashWidth = 0.02;               // [rad] between the stops
+constexpr double kLashWidth = 0.02;              // [rad] between the stops
 // An onset's error after flights of t in all: the speeds' relative error over that time [s].
 double TimingError(double t) { return kSpeedTolerance * t; }
 
@@ -46,9 +46,9 @@ TEST(LashHardCases, IdleGearRattleHitsBothFlanks) {
   text << in.rdbuf();
   scene::Scene sc = scene::ParseScene(text.str(), path);
   // The scene's firing torque (forces: firing) and the loose gear (bodies, forces: churning).
-  constexpr double kFiringHz = 25.0, kFiringTorque = 20.0;  // [Hz], [N m]
+  constexpr double kFiringHz = 25.0, kFiringTorque = 20.0;       // [Hz], [N m]
   constexpr double kPinionInertia = 0.01, kGearInertia = 0.002;  // [kg m^2]
-  constexpr double kChurning = 1.0e-3, kGearSpeed = 60.4;  // [N m s/rad], [rad/s]
+  constexpr double kChurning = 1.0e-3, kGearSpeed = 60.4;        // [N m s/rad], [rad/s]
   for (const char* key : {"frequency_hz: 25.0", "amplitude: 20.0", "inertia: [0.005, 0.005, 0.01]",
                           "inertia: [0.001, 0.001, 0.002]", "damping: 1.0e-3"})
     ASSERT_NE(text.str().find(key), std::string::npos) << key;
@@ -150,8 +150,7 @@ TEST(LashHardCases, ZeroDampingHuntCrossleyConservesEnergy) {
   ASSERT_EQ(HuntCrossley(1e5, 1.0).contact.exponent, 1.0);
   const double w = std::sqrt(1e5 / d.effective_inertia());
   const testing::ClosedFormContacts expected = testing::FreeFlightContacts(
-      kLashWidth, d.closing_speed(), 1.0, 0.0, [&](double) { return std::numbers::pi / w; },
-      t_end);
+      kLashWidth, d.closing_speed(), 1.0, 0.0, [&](double) { return std::numbers::pi / w; }, t_end);
   ASSERT_GT(expected.CountMargin(t_end), TimingError(t_end));
   EXPECT_EQ(r.events.contacts.size(), expected.onset.size());
   // BDF damps every contact's half oscillation a little (its error control keeps the loss at

@@ -122,8 +122,7 @@ double ClosedCycle(const CylinderPressure& c, double theta) {
 double Rk4ErrorBound(const CylinderPressure& c, const CylinderPressure& half, double theta) {
   const double p = ClosedCycle(c, theta);
   const double steps = (theta + 180.0) / c.settings().step_deg * kRk4StepsPerOutputStep;
-  return kRichardsonSafety * RichardsonFactor(kRk4Order) *
-             std::abs(p - ClosedCycle(half, theta)) +
+  return kRichardsonSafety * RichardsonFactor(kRk4Order) * std::abs(p - ClosedCycle(half, theta)) +
          steps * kEps * p;
 }
 
@@ -234,7 +233,8 @@ TEST(CylinderPressure, DefaultFiredCurveMeetsThePeakTarget) {
   const double h = h_out / kRk4StepsPerOutputStep;
   const double p2 = std::abs(c.pressure().Eval(theta_star).d2f);
   const double p3 = std::abs(c.pressure().Eval(theta_star + 0.5 * h_out).d2f -
-                             c.pressure().Eval(theta_star - 0.5 * h_out).d2f) / h_out;
+                             c.pressure().Eval(theta_star - 0.5 * h_out).d2f) /
+                    h_out;
   // The closed form's error moves the root by n V' δp / ((n − 1) |rate'|).
   const double drate = (rate(theta_star + 1e-3) - rate(theta_star - 1e-3)) / 2e-3;
   const double shift = n * std::abs(VolumeRate(c, theta_star)) *
@@ -252,9 +252,10 @@ TEST(CylinderPressure, DefaultFiredCurveMeetsThePeakTarget) {
   const double rk4 = Rk4ErrorBound(c, HalfStep(c), std::round(theta_star / h_out) * h_out);
   EXPECT_NEAR(spline_peak, s.peak_pressure,
               interpolation + 0.5 * p2 * (grid_offset * grid_offset + 0.25 * kScan * kScan) + rk4);
-  std::printf("default: Q = %.1f J, peak %.3f bar at %.3f deg after firing TDC (closed form "
-              "%.4f deg)\n",
-              q, c.peak_pressure() / 1e5, c.peak_angle_deg(), theta_star);
+  std::printf(
+      "default: Q = %.1f J, peak %.3f bar at %.3f deg after firing TDC (closed form "
+      "%.4f deg)\n",
+      q, c.peak_pressure() / 1e5, c.peak_angle_deg(), theta_star);
 }
 
 TEST(CylinderPressure, PeriodicAndSmoothAtTheCycleEnds) {

@@ -23,7 +23,9 @@ std::string TempPath(const std::string& name) {
   return testing::ProcessTempDir().File("results_" + name);
 }
 
-scene::Scene Pendulum() { return scene::LoadScene(std::string(EMB_SOURCE_DIR) + "/tools/scenes/pendulum.yaml"); }
+scene::Scene Pendulum() {
+  return scene::LoadScene(std::string(EMB_SOURCE_DIR) + "/tools/scenes/pendulum.yaml");
+}
 
 TEST(ResultsWriter, LayoutAndRows) {
   scene::Scene sc = Pendulum();
@@ -51,8 +53,10 @@ TEST(ResultsWriter, LayoutAndRows) {
   const Eigen::Vector3d w_last = R_last * last.v.segment<3>(layout.angular_velocity(1));
   for (int c = 0; c < 3; ++c) {
     const std::string xyz = std::string(1, "xyz"[c]);
-    EXPECT_EQ(ReadResultsChannel(path, "rod.p." + xyz).values.back(), last.q[layout.position(1) + c]);
-    EXPECT_EQ(ReadResultsChannel(path, "rod.v." + xyz).values.back(), last.v[layout.velocity(1) + c]);
+    EXPECT_EQ(ReadResultsChannel(path, "rod.p." + xyz).values.back(),
+              last.q[layout.position(1) + c]);
+    EXPECT_EQ(ReadResultsChannel(path, "rod.v." + xyz).values.back(),
+              last.v[layout.velocity(1) + c]);
     // omega in W: the reader rotates omega_B by its own quaternion-to-matrix formula: a few
     // ulps apart.
     constexpr double kRotationRoundOff = 1e-13;
@@ -92,7 +96,8 @@ TEST(ResultsWriter, LayoutAndRows) {
 
 TEST(ResultsWriter, IntegratorFailureKeepsEarlierSamples) {
   // A torque step to 1e9 N m at t = 0.25 s exhausts IDA's step budget (the scene says).
-  const scene::Scene sc = scene::LoadScene(std::string(EMB_SOURCE_DIR) + "/tests/scene/data/spin_up.yaml");
+  const scene::Scene sc =
+      scene::LoadScene(std::string(EMB_SOURCE_DIR) + "/tests/scene/data/spin_up.yaml");
   const std::string path = TempPath("failure.h5");
   const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
   mbs::RunResult r;
@@ -147,7 +152,7 @@ bodies:
 gravity: [0, 0, -9.81]
 analysis: {type: dynamic, t_end: 0.5, output_step: 0.1}
 )",
-                              "free.yaml");
+                                            "free.yaml");
   const std::string path = TempPath("free.h5");
   const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
   mbs::Sample last;

@@ -4,6 +4,8 @@
 // rest point, X = F0 / sqrt((k - m w^2)^2 + (c w)^2); started from rest, the homogeneous
 // part decays by r = exp(-zeta w_n T) per forcing period T.
 
+#include "libemb/results/steady_state.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,17 +17,16 @@
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/forces/applied_load.h"
 #include "libemb/mbs/forces/spring_damper.h"
-#include "libemb/results/steady_state.h"
 
 namespace emb {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kMass = 1.0;                  // [kg]
-constexpr double kNatural = 2 * kPi * 10.0;    // w_n [rad/s]
-constexpr double kZeta = 0.05;                 // damping ratio
-constexpr double kForcing = 2 * kPi * 7.0;     // w [rad/s]
-constexpr double kForce = 10.0;                // F0 [N]
+constexpr double kMass = 1.0;                // [kg]
+constexpr double kNatural = 2 * kPi * 10.0;  // w_n [rad/s]
+constexpr double kZeta = 0.05;               // damping ratio
+constexpr double kForcing = 2 * kPi * 7.0;   // w [rad/s]
+constexpr double kForce = 10.0;              // F0 [N]
 constexpr int kSamplesPerCycle = 64;
 
 mbs::System DrivenOscillator() {

@@ -59,16 +59,15 @@ TEST(SensorReader, BadChordSensorIsNamed) {
     return test::InputErrorMessage(
         [&] { scene::ParseScene(std::string(kScene) + entry, "chord.yaml"); });
   };
-  EXPECT_TRUE(test::ContainsAll(
-      message("  - {name: bend, type: chord, point: P, chord: [A]}\n"),
-      {"chord.yaml:", "sensor 'bend'", "chord", "expected the two markers"}));
+  EXPECT_TRUE(
+      test::ContainsAll(message("  - {name: bend, type: chord, point: P, chord: [A]}\n"),
+                        {"chord.yaml:", "sensor 'bend'", "chord", "expected the two markers"}));
   EXPECT_TRUE(test::ContainsAll(message("  - {name: bend, type: chord, point: P, chord: A}\n"),
                                 {"sensor 'bend'", "expected the two markers"}));
-  EXPECT_TRUE(test::ContainsAll(
-      message("  - {name: bend, type: chord, point: Q, chord: [A, B]}\n"), {"'Q'"}));
-  EXPECT_TRUE(test::ContainsAll(
-      message("  - {name: bend, type: chord, point: A, chord: [A, B]}\n"),
-      {"sensor 'bend'", "three different markers"}));
+  EXPECT_TRUE(test::ContainsAll(message("  - {name: bend, type: chord, point: Q, chord: [A, B]}\n"),
+                                {"'Q'"}));
+  EXPECT_TRUE(test::ContainsAll(message("  - {name: bend, type: chord, point: A, chord: [A, B]}\n"),
+                                {"sensor 'bend'", "three different markers"}));
   EXPECT_TRUE(test::ContainsAll(message("  - {name: bend, type: chrod, point: P, chord: [A, B]}\n"),
                                 {"sensor 'bend'", "expected 'pose'", "'chord'", "'chrod'"}));
   EXPECT_TRUE(test::ContainsAll(message("  - {name: bend, type: chord, point: P, chord: [A, B], "

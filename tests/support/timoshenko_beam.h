@@ -58,9 +58,12 @@ inline double TimoshenkoDeterminant(const BeamSection& s, double L, BeamEnd left
   const Eigen::Matrix4d B0 = basis(0.0), BL = basis(L);
   Eigen::Matrix4d D;
   auto rows = [](const Eigen::Matrix4d& B, BeamEnd e, Eigen::Matrix<double, 2, 4>& out) {
-    if (e == BeamEnd::kClamped) out << B.row(0), B.row(1);
-    else if (e == BeamEnd::kPinned) out << B.row(0), B.row(2);
-    else out << B.row(2), B.row(3);
+    if (e == BeamEnd::kClamped)
+      out << B.row(0), B.row(1);
+    else if (e == BeamEnd::kPinned)
+      out << B.row(0), B.row(2);
+    else
+      out << B.row(2), B.row(3);
   };
   Eigen::Matrix<double, 2, 4> r0, rL;
   rows(B0, left, r0);

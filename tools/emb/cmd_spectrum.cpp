@@ -3,10 +3,10 @@
 // body's rotation (--angle BODY [--axis x]), a revolute joint's angle (--angle JOINT) or a
 // constant speed (--rpm N).
 
-#include <sstream>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
@@ -41,7 +41,8 @@ struct SpectrumCommand {
     std::string angle_source;
     if (!angle_body.empty()) {
       angle = results::ReadBodyRotationAngle(file, angle_body, axis, angle_start).values;
-      angle_source = "rotation of '" + angle_body + "' about world " + axis + " (or its angle, "
+      angle_source = "rotation of '" + angle_body + "' about world " + axis +
+                     " (or its angle, "
                      "for a joint)";
     } else {
       for (double t : y.time) angle.push_back(angle_start + 6.0 * *rpm * (t - y.time.front()));
@@ -57,8 +58,8 @@ struct SpectrumCommand {
       if (steady.converged) {
         used.cycles = 1;
         window = "the steady-state cycle " + std::to_string(steady.cycle_start) + " .. " +
-                 std::to_string(steady.cycle_end) + " s (change " +
-                 std::to_string(steady.change) + ")";
+                 std::to_string(steady.cycle_end) + " s (change " + std::to_string(steady.change) +
+                 ")";
       } else {
         std::cerr << "emb: warning: " << file << " did not reach its periodic steady state "
                   << "(last cycle-to-cycle change " << steady.change << ", tolerance "
@@ -84,7 +85,8 @@ struct SpectrumCommand {
       std::ostringstream os;
       os.precision(10);
       os << "order,amplitude,phase_deg\n";
-      for (const auto& l : sp.lines) os << l.order << "," << l.amplitude << "," << l.phase_deg << "\n";
+      for (const auto& l : sp.lines)
+        os << l.order << "," << l.amplitude << "," << l.phase_deg << "\n";
       WriteTextFileAtomic(csv, os.str());
     }
     if (out.json) {
@@ -118,13 +120,15 @@ void RegisterSpectrumCommand(CLI::App& app) {
                   "revolute joint whose angle is (e.g. main_bearing)");
   cmd->add_option("--axis", st->axis, "World axis of the crank rotation: x, y or z")
       ->capture_default_str();
-  cmd->add_option("--rpm", st->rpm, "Instead of --angle: a constant speed [rpm] from the first sample");
+  cmd->add_option("--rpm", st->rpm,
+                  "Instead of --angle: a constant speed [rpm] from the first sample");
   cmd->add_option("--angle-start", st->angle_start,
                   "Crank angle at the first sample [deg] (0 = firing TDC of cylinder 1 in "
                   "the inline-4 scenes); sets the phase reference")
       ->capture_default_str();
   cmd->add_option("--cycles", st->settings.cycles,
-                  "Whole cycles to analyse, the last ones (0 = the steady-state cycle of a run that found one, else all the data cover)")
+                  "Whole cycles to analyse, the last ones (0 = the steady-state cycle of a run "
+                  "that found one, else all the data cover)")
       ->capture_default_str();
   cmd->add_option("--orders", st->settings.max_order, "Highest order (multiple of 0.5)")
       ->capture_default_str();

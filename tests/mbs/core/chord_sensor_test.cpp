@@ -2,6 +2,8 @@
 // rigid geometry, its degenerate chord and its bad input (its scene form: the scene's
 // sensor_reader_test.cpp).
 
+#include "libemb/mbs/core/chord_sensor.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include <random>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/core/chord_sensor.h"
 #include "libemb/mbs/core/kinematics.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/core/system.h"
@@ -93,8 +94,7 @@ TEST(ChordSensor, GroundPointAgainstATurnedChord) {
     EXPECT_NEAR(c[1], dy, kRoundOff) << theta;
     EXPECT_NEAR(c[2], z0, kRoundOff) << theta;
     EXPECT_NEAR(c[3], std::hypot(dy, z0), kRoundOff) << theta;
-    EXPECT_NEAR(c[4], (x0 * std::cos(theta) + y0 * std::sin(theta)) / kLength, kRoundOff)
-        << theta;
+    EXPECT_NEAR(c[4], (x0 * std::cos(theta) + y0 * std::sin(theta)) / kLength, kRoundOff) << theta;
   }
 }
 
@@ -114,9 +114,9 @@ TEST(ChordSensor, ThreeDifferentMarkersAreRequired) {
   sys.AddBody(Rod(Vector3d::Zero(), Eigen::Matrix3d::Identity()));
   sys.AddMarker("A", "rod", Vector3d(0.1, 0, 0), Eigen::Matrix3d::Identity());
   sys.AddMarker("B", "rod", Vector3d(0.3, 0, 0), Eigen::Matrix3d::Identity());
-  EXPECT_TRUE(test::ContainsAll(
-      test::InputErrorMessage([&] { mbs::ChordSensor(sys, "bend", 0, 0, 1); }),
-      {"chord sensor 'bend'", "three different markers", "'A'"}));
+  EXPECT_TRUE(
+      test::ContainsAll(test::InputErrorMessage([&] { mbs::ChordSensor(sys, "bend", 0, 0, 1); }),
+                        {"chord sensor 'bend'", "three different markers", "'A'"}));
   EXPECT_THROW(mbs::ChordSensor(sys, "bend", 0, 1, 7), InputError);
 }
 
