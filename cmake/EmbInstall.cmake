@@ -28,14 +28,15 @@ install(TARGETS emb_tool RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # Headers, with the paths the sources use ("libemb/mbs/core/system.h"). Left out: the
 # headers documented as internal to their module (implementation details that expose
-# SUNDIALS or yaml-cpp types, the body file's codec, or the scene loader's section readers),
-# and libemb/distributed (the optional PETSc/SLEPc backend: linked by the emb tool, not part
-# of the installed library, whose users need no MPI).
+# SUNDIALS or yaml-cpp types, the eigen-solver's back ends, the body file's codec, or the
+# scene loader's section readers), and libemb/distributed (the optional PETSc/SLEPc backend:
+# linked by the emb tool, not part of the installed library, whose users need no MPI).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/libemb/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/libemb
         FILES_MATCHING PATTERN "*.h"
         PATTERN "distributed" EXCLUDE
         PATTERN "analysis_internal.h" EXCLUDE
         PATTERN "klu_linear_solver.h" EXCLUDE
+        PATTERN "eigen_solver_backends.h" EXCLUDE
         PATTERN "beam_part_reader.h" EXCLUDE
         PATTERN "engine_parts.h" EXCLUDE
         PATTERN "driveline_parts.h" EXCLUDE

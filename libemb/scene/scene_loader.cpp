@@ -332,7 +332,8 @@ void ReadCouplers(const YAML::Node& list, const std::string& file, mbs::System* 
                 });
 }
 
-void ReadSteadyState(const YAML::Node& node, const std::string& file, SteadyStateSettings* s) {
+void ReadSteadyState(const YAML::Node& node, const std::string& file,
+                     results::SteadyStateSettings* s) {
   MapReader r(node, file, "analysis steady_state", "analysis: steady_state");
   s->period = r.GetDouble("period", NumberRange::Positive("s"));
   const YAML::Node ch = r.Require("channels");
@@ -345,7 +346,7 @@ void ReadSteadyState(const YAML::Node& node, const std::string& file, SteadyStat
 }
 
 void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::AnalysisSettings* s,
-                  SteadyStateSettings* steady) {
+                  results::SteadyStateSettings* steady) {
   MapReader r(node, file, "analysis", "analysis");
   s->type = mbs::ParseAnalysisType(r.GetString("type", "dynamic"));
   using R = NumberRange;
@@ -400,7 +401,7 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
                                      "ends the run at steady state or after max_cycles)");
     EMB_THROW_IF(s->type != mbs::AnalysisType::kDynamic,
                  Where(file, node) << ": analysis steady_state: only for a dynamic analysis");
-    CheckSteadyStateSettings(*steady, s->output_step, Where(file, n));
+    results::CheckSteadyStateSettings(*steady, s->output_step, Where(file, n));
     s->t_end = s->t_start + steady->max_cycles * steady->period;
   }
   r.Finish();
@@ -503,7 +504,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   scene.system.Finalize();
   if (scene.steady_state.enabled()) {
     try {
-      ChannelSet(scene.system, scene.steady_state.channels);
+      results::ChannelSet(scene.system, scene.steady_state.channels);
     } catch (const InputError& e) {
       EMB_THROW(InputError, Where(source, analysis_node) << ": analysis steady_state: " << e.what());
     }

@@ -32,7 +32,7 @@ DEPENDS = {
     "mbs/parts": ["mbs/forces", "beam", "cms"],
     "engine": ["mbs/forces"],
     "driveline": ["mbs/forces"],
-    "results": ["mbs/analysis", "io"],
+    "results": ["mbs/analysis", "mbs/parts", "io"],
     "scene": ["mbs/analysis", "mbs/parts", "engine", "driveline", "results"],
     "sweep": ["scene", "results", "io"],
     "distributed": ["common", "linalg"],

@@ -1,4 +1,4 @@
-#include "libemb/scene/stress_recorder.h"
+#include "libemb/results/stress_recorder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "libemb/results/rainflow.h"
 #include "libemb/results/stress_field_file.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 // A sample within this of a field time takes it (output times are sums of steps).
@@ -40,7 +40,7 @@ bool Due(const std::vector<double>& times, std::size_t& next, double t) {
 
 // The group's field (coordinates and faces from the body file's mesh).
 NodalStressField GroupField(const StressOutput& out, const mbs::StressRows& group, const Mesh& mesh,
-                       const BoundarySurface& boundary) {
+                            const BoundarySurface& boundary) {
   NodalStressField f;
   f.path = "/" + out.name + "/" + group.name;
   f.title = out.name + "." + group.name;
@@ -50,8 +50,8 @@ NodalStressField GroupField(const StressOutput& out, const mbs::StressRows& grou
   for (std::size_t i = 0; i < group.nodes.size(); ++i) {
     const int node = group.nodes[i];
     EMB_THROW_IF(node < 0 || node >= mesh.num_nodes(),
-                 "stress output '" << out.name << "': node " << node
-                                   << " is not in the mesh of '" << out.body_file << "'");
+                 "stress output '" << out.name << "': node " << node << " is not in the mesh of '"
+                                   << out.body_file << "'");
     f.coordinates.row(static_cast<Eigen::Index>(i)) = mesh.nodes.col(node).transpose();
     local[static_cast<std::size_t>(node)] = static_cast<int>(i);
   }
@@ -75,8 +75,9 @@ StressRecorder::StressRecorder(const mbs::System& system, std::vector<StressOutp
     std::shared_ptr<const mbs::StressProbe> probe;
     for (const auto& p : system.probes())
       if (p->name() == out.name) probe = std::dynamic_pointer_cast<const mbs::StressProbe>(p);
-    EMB_THROW_IF(!probe, "stress output '" << out.name << "': no stress probe of that name in "
-                                                          "the system");
+    EMB_THROW_IF(!probe, "stress output '" << out.name
+                                           << "': no stress probe of that name in "
+                                              "the system");
     probes_.push_back(probe);
     EMB_CHECK(out.surface_field_times.empty() || probe->has_surface());
     next_field_.push_back(0);
@@ -114,8 +115,7 @@ void StressRecorder::Add(const mbs::Sample& s) {
     if (!out.fatigue && !take_field[static_cast<std::size_t>(g.output)]) continue;
     const mbs::StressProbe& probe = *probes_[static_cast<std::size_t>(g.output)];
     const int b = probe.body();
-    const mbs::StressSnapshot& snap =
-        probe.Evaluate(s.q.segment(L.elastic_q(b), L.num_elastic(b)));
+    const mbs::StressSnapshot& snap = probe.Evaluate(s.q.segment(L.elastic_q(b), L.num_elastic(b)));
     const auto gi = static_cast<std::size_t>(g.index);
     if (out.fatigue) {
       g.t.push_back(s.t);
@@ -143,7 +143,8 @@ std::vector<FatigueRow> StressRecorder::Fatigue(double t0, double t1, bool perio
     for (std::size_t i = 0; i < group.nodes.size(); ++i) {
       history.clear();
       for (std::size_t k = 0; k < g.t.size(); ++k)
-        if (g.t[k] >= t0 && g.t[k] <= t1) history.push_back(g.measure[k][static_cast<Eigen::Index>(i)]);
+        if (g.t[k] >= t0 && g.t[k] <= t1)
+          history.push_back(g.measure[k][static_cast<Eigen::Index>(i)]);
       const auto cycles = periodic ? CountRainflowPeriodic(history) : CountRainflow(history);
       const FatigueDamage d = CalcMinerDamage(cycles, out.sn);
       if (d.damage > row.damage) {
@@ -191,7 +192,7 @@ void StressRecorder::WriteFields(const std::string& h5_path, const std::string& 
       boundaries[o] = ExtractBoundarySurface(meshes[o]);
     }
     NodalStressField f = GroupField(out, probes_[o]->groups()[static_cast<std::size_t>(g.index)],
-                               meshes[o], boundaries[o]);
+                                    meshes[o], boundaries[o]);
     f.times = g.field_t;
     f.stress = g.field;
     fields.push_back(std::move(f));
@@ -212,4 +213,4 @@ void StressRecorder::WriteFields(const std::string& h5_path, const std::string& 
   WriteStressFields(h5_path, xdmf_path, fields);
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -13,7 +13,8 @@
 namespace emb::scene {
 namespace {
 
-const std::string kScene = std::string(EMB_SOURCE_DIR) + "/tests/sweep/data/one_cylinder_direct.yaml";
+const std::string kScene =
+    std::string(EMB_SOURCE_DIR) + "/tests/sweep/data/one_cylinder_direct.yaml";
 // Scaled values are products of decimal inputs: equal to round-off.
 constexpr double kRoundOff = 1e-12;
 
@@ -75,32 +76,32 @@ TEST(SceneAtSpeed, RefusesWhatItCannotScaleNamingIt) {
     EXPECT_TRUE(ContainsAll(InputErrorMessage([&] { SceneTextAtSpeed(kText, "s.yaml", bad); }),
                             {"positive number of rpm"}));
   // No rpm motion.
-  EXPECT_TRUE(ContainsAll(InputErrorMessage(
-      [&] {
-        SceneTextAtSpeed(Replace(kText, "function: {rpm: 3000}", "function: {constant: 0}"),
-                         "s.yaml", 4000);
-      }),
-      {"s.yaml", "no motion with function {rpm: N}"}));
+  EXPECT_TRUE(ContainsAll(InputErrorMessage([&] {
+                            SceneTextAtSpeed(
+                                Replace(kText, "function: {rpm: 3000}", "function: {constant: 0}"),
+                                "s.yaml", 4000);
+                          }),
+                          {"s.yaml", "no motion with function {rpm: N}"}));
   // A motion on an expression of time.
-  EXPECT_TRUE(ContainsAll(InputErrorMessage(
-      [&] {
-        SceneTextAtSpeed(Replace(kText, "function: {rpm: 3000}",
-                                 "function: {expression: \"314*t + 10*t^2\"}"),
-                         "s.yaml", 4000);
-      }),
-      {"s.yaml", "crank_speed", "expression", "cannot be scaled"}));
+  EXPECT_TRUE(ContainsAll(InputErrorMessage([&] {
+                            SceneTextAtSpeed(Replace(kText, "function: {rpm: 3000}",
+                                                     "function: {expression: \"314*t + 10*t^2\"}"),
+                                             "s.yaml", 4000);
+                          }),
+                          {"s.yaml", "crank_speed", "expression", "cannot be scaled"}));
   // A force on a function of time (no crank-angle argument).
-  EXPECT_TRUE(ContainsAll(InputErrorMessage(
-      [&] {
-        SceneTextAtSpeed(Replace(kText, "    argument: {joint: main, unit: deg, offset: 0}\n"
-                                        "    function: {cylinder_pressure: {}}",
+  EXPECT_TRUE(ContainsAll(
+      InputErrorMessage([&] {
+        SceneTextAtSpeed(Replace(kText,
+                                 "    argument: {joint: main, unit: deg, offset: 0}\n"
+                                 "    function: {cylinder_pressure: {}}",
                                  "    function: {harmonic: {amplitude: 10, frequency_hz: 50}}"),
                          "s.yaml", 4000);
       }),
       {"s.yaml", "force 'gas'", "harmonic", "cannot be scaled"}));
   // Two rpm motions that disagree.
-  EXPECT_TRUE(ContainsAll(InputErrorMessage(
-      [&] {
+  EXPECT_TRUE(ContainsAll(
+      InputErrorMessage([&] {
         SceneTextAtSpeed(
             Replace(kText, "motions:\n",
                     "motions:\n  - {name: other, joint: wrist_pin, coordinate: rotation, "
