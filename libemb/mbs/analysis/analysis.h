@@ -266,9 +266,12 @@ RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
                       const SampleSink& sink, const ProgressFn& progress = {},
                       const StopFn& stop = {});
 
-/// A sample at (q, v, vdot, lambda, t), evaluating reactions, energies and residuals.
+/// A sample at (q, v, vdot, lambda, t), evaluating reactions, energies and residuals; the
+/// force elements' loads with their continuous states `z` (System::num_force_states()) when
+/// given, else their steady states.
 Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
                   const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
-                  const Eigen::VectorXd& lambda, ConstraintWorkspace* workspace);
+                  const Eigen::VectorXd& lambda, ConstraintWorkspace* workspace,
+                  const Eigen::VectorXd* z = nullptr);
 
 }  // namespace emb::mbs

@@ -16,13 +16,14 @@ namespace emb::mbs::internal {
 
 // IDA's absolute tolerances per unknown: atol on q and v, algebraic_atol on lambda and mu,
 // and atol * max(1, w_j) on the modal velocities of flexible bodies
-// (AnalysisSettings::modal_velocity_atol_by_frequency). Empty without flexible bodies.
+// (AnalysisSettings::modal_velocity_atol_by_frequency), and each force element's own on its
+// continuous states (ForceElement::StateTolerance). Empty without flexible bodies and states.
 Eigen::VectorXd ComponentTolerances(const System& sys, const GglLayout& G,
                                     const IdaOptions& options) {
   const StateLayout& L = sys.layout();
   bool flexible = false;
   for (int b = 1; b < sys.num_bodies(); ++b) flexible = flexible || L.num_elastic(b) > 0;
-  if (!flexible) return {};
+  if (!flexible && G.nz() == 0) return {};
   Eigen::VectorXd atol = Eigen::VectorXd::Constant(G.size(), options.algebraic_atol);
   atol.head(G.nq() + G.nv()).setConstant(options.atol);
   for (int b = 1; b < sys.num_bodies(); ++b) {
@@ -32,6 +33,12 @@ Eigen::VectorXd ComponentTolerances(const System& sys, const GglLayout& G,
     for (int j = 0; j < L.num_elastic(b); ++j)
       atol[G.v() + L.elastic_v(b) + j] =
           options.atol * std::max(1.0, 2.0 * std::numbers::pi * f[j]);
+  }
+  const auto& forces = sys.force_elements();
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    const int offset = sys.force_state_offset(static_cast<int>(k));
+    for (int j = 0; j < forces[k]->num_continuous_states(); ++j)
+      atol[G.z() + offset + j] = forces[k]->StateTolerance(j);
   }
   return atol;
 }
@@ -53,6 +60,16 @@ Eigen::VectorXd ErrorTestMask(const System& sys, const GglLayout& G) {
       mask[G.q() + L.elastic_q(b) + j] = 0.0;
       mask[G.v() + L.elastic_v(b) + j] = 0.0;
       any = true;
+    }
+  }
+  // The force elements' states, by their error weights (0: algebraic, e.g. a film pressure).
+  const auto& forces = sys.force_elements();
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    const int offset = sys.force_state_offset(static_cast<int>(k));
+    for (int j = 0; j < forces[k]->num_continuous_states(); ++j) {
+      const bool tested = forces[k]->StateErrorWeight(j) > 0.0;
+      mask[G.z() + offset + j] = tested ? 1.0 : 0.0;
+      any = any || !tested;
     }
   }
   return any ? mask : Eigen::VectorXd();
@@ -111,7 +128,8 @@ static AccelerationSolution SettledAccelerations(const System& sys, const GglDae
 }
 
 // A clean restart after an event at the integrator's time: the same q and v, consistent
-// accelerations and multipliers with the force laws now in force, mu = 0.
+// accelerations and multipliers with the force laws now in force, mu = 0; the force
+// elements' continuous states and rates carry on.
 static void RestartAfterEvent(const System& sys, const GglDae& dae, DaeIntegrator* ida,
                               EventLog* log) {
   const GglLayout& G = dae.ggl_layout();
@@ -119,7 +137,9 @@ static void RestartAfterEvent(const System& sys, const GglDae& dae, DaeIntegrato
   const Eigen::VectorXd v = ida->y().segment(G.v(), G.nv());
   const AccelerationSolution acc = SettledAccelerations(sys, dae, ida->t(), q, v, log);
   Eigen::VectorXd y, yp;
-  dae.MakeInitialValues(q, v, acc.vdot, acc.lambda, &y, &yp);
+  const Eigen::VectorXd z = ida->y().segment(G.z(), G.nz());
+  const Eigen::VectorXd z_dot = ida->yp().segment(G.z(), G.nz());
+  dae.MakeInitialValues(q, v, acc.vdot, acc.lambda, &y, &yp, &z, &z_dot);
   ida->Reinitialize(ida->t(), y, yp);
 }
 
@@ -245,8 +265,10 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
       r.message = o.str();
       break;
     }
+    const Eigen::VectorXd zk = yk.segment(G.z(), G.nz());
     sink(MakeSample(sys, ida.t(), yk.segment(G.q(), G.nq()), yk.segment(G.v(), G.nv()),
-                    ypk.segment(G.v(), G.nv()), yk.segment(G.lambda(), G.m()), &ws));
+                    ypk.segment(G.v(), G.nv()), yk.segment(G.lambda(), G.m()), &ws,
+                    G.nz() ? &zk : nullptr));
     ++r.num_samples;
     if (stop && stop()) {
       r.stopped = true;

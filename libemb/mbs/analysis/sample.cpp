@@ -8,7 +8,8 @@ namespace emb::mbs {
 
 Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
                   const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
-                  const Eigen::VectorXd& lambda, ConstraintWorkspace* workspace) {
+                  const Eigen::VectorXd& lambda, ConstraintWorkspace* workspace,
+                  const Eigen::VectorXd* z) {
   Sample s;
   s.t = t;
   s.q = q;
@@ -27,6 +28,10 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
   for (std::size_t k = 0; k < forces.size(); ++k) {
     ForceContext ctx{&system, &bodies, t, workspace, system.force_angle_slot(static_cast<int>(k))};
     ctx.markers = &markers;
+    // The rates are not needed for a load; the states are (a film's fill, a deflection).
+    const int offset = system.force_state_offset(static_cast<int>(k));
+    const Eigen::VectorXd no_rates = Eigen::VectorXd::Zero(offset >= 0 && z ? z->size() : 0);
+    if (offset >= 0 && z != nullptr) ctx.z = z->data() + offset, ctx.z_dot = no_rates.data() + offset;
     Eigen::Matrix<double, 6, 1> load;
     if (forces[k]->CalcLoad(ctx, &load)) s.force_loads.row(static_cast<Eigen::Index>(k)) = load;
   }

@@ -49,6 +49,26 @@ EventResponse ForceElement::SettleEventState(const ForceContext& ctx) const {
   return DoSettleEventState(ctx);
 }
 
+void ForceElement::CalcStateResidual(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> r) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr && ctx.z != nullptr &&
+            ctx.z_dot != nullptr && r.size() == num_continuous_states());
+  DoCalcStateResidual(ctx, r);
+}
+
+void ForceElement::AddStateJacobian(const ForceContext& ctx, double cj,
+                                    StateJacobianSink* sink) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr && ctx.z != nullptr &&
+            ctx.z_dot != nullptr && sink != nullptr);
+  DoAddStateJacobian(ctx, cj, sink);
+}
+
+void ForceElement::CalcSteadyStates(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> z,
+                                    Eigen::Ref<Eigen::VectorXd> z_dot) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr &&
+            z.size() == num_continuous_states() && z_dot.size() == z.size());
+  DoCalcSteadyStates(ctx, z, z_dot);
+}
+
 void AddWrench(const StateLayout& layout, const MarkerKinematics& M, const Eigen::Vector3d& p_WQ,
                const Eigen::Vector3d& F_W, const Eigen::Vector3d& T_W,
                Eigen::Ref<Eigen::VectorXd> f) {

@@ -17,7 +17,7 @@ GglDae::GglDae(const System& system) : GglDae(system, nullptr) {}
 GglDae::GglDae(const System& system, GglWorkspace* workspace)
     : system_(system),
       layout_(system.layout().nq(), system.layout().nv(), system.num_equations(),
-              system.layout().num_moving()),
+              system.layout().num_moving(), system.num_force_states()),
       own_(workspace ? nullptr : std::make_unique<GglWorkspace>(system)),
       ws_(workspace ? workspace : own_.get()) {
   EMB_CHECK(ws_->body_maps.size() == static_cast<std::size_t>(system.num_bodies()));
@@ -122,6 +122,26 @@ class BodyBlockEmitter {
     if (ne)
       A_->AddBlock(row, q_cols ? G_.q() + L_.elastic_q(b) : G_.v() + L_.elastic_v(b), g.tail(ne));
   }
+  // Rows row0, row0 + 1, ... (g.rows()) x columns of body b (q or v; g: rows x (6 + ne)).
+  void RowBlock(int row0, int b, bool q_cols, const Eigen::Ref<const Eigen::MatrixXd>& g) const {
+    if (q_cols) {
+      Eigen::Map<Eigen::MatrixXd> out = scratch_->View(18, g.rows(), 7);
+      out.noalias() = g.leftCols<6>() * X_[b];
+      A_->AddBlock(row0, G_.q() + L_.position(b), out);
+    } else {
+      A_->AddBlock(row0, G_.v() + L_.velocity(b), g.leftCols<6>());
+    }
+    const int ne = L_.num_elastic(b);
+    if (ne)
+      A_->AddBlock(row0, q_cols ? G_.q() + L_.elastic_q(b) : G_.v() + L_.elastic_v(b),
+                   g.rightCols(ne));
+  }
+  // The dynamic (v-space) rows of body b x columns col0, col0 + 1, ... (g: (6 + ne) x cols).
+  void ColumnBlock(int b, int col0, const Eigen::Ref<const Eigen::MatrixXd>& g) const {
+    A_->AddBlock(G_.v() + L_.velocity(b), col0, g.topRows<6>());
+    const int ne = L_.num_elastic(b);
+    if (ne) A_->AddBlock(G_.v() + L_.elastic_v(b), col0, g.bottomRows(ne));
+  }
   // Rows of body b x a single column `col` (g: 6 + ne entries).
   void Column(int b, bool q_rows, int col, const Eigen::Ref<const Eigen::VectorXd>& g) const {
     const Eigen::Matrix<double, 6, 1> g6 = g.head<6>();
@@ -139,6 +159,37 @@ class BodyBlockEmitter {
   const GglLayout& G_;
   const std::vector<Matrix67>& X_;
   MatrixAssembler* A_;
+  ScratchMatrices* scratch_;
+};
+
+// An element's state blocks: its rows R (from z0) by its states, by the bodies' q and v, and
+// the dynamic rows by its states (-df/dz: the rows hold M v' - f).
+class GglStateSink final : public StateJacobianSink {
+ public:
+  GglStateSink(const BodyBlockEmitter& emit, MatrixAssembler* A, int z0, ScratchMatrices* scratch)
+      : emit_(emit), A_(A), z0_(z0), scratch_(scratch) {
+    UseScratch(scratch);
+  }
+  void AddStateBlock(int row, int col, const Eigen::Ref<const Eigen::MatrixXd>& block) override {
+    A_->AddBlock(z0_ + row, z0_ + col, block);
+  }
+  void AddStateStiffness(int row, int body,
+                         const Eigen::Ref<const Eigen::MatrixXd>& block) override {
+    emit_.RowBlock(z0_ + row, body, true, block);
+  }
+  void AddStateDamping(int row, int body, const Eigen::Ref<const Eigen::MatrixXd>& block) override {
+    emit_.RowBlock(z0_ + row, body, false, block);
+  }
+  void AddForceByState(int body, int col, const Eigen::Ref<const Eigen::MatrixXd>& block) override {
+    Eigen::Map<Eigen::MatrixXd> minus = scratch_->View(19, block.rows(), block.cols());
+    minus = -block;
+    emit_.ColumnBlock(body, z0_ + col, minus);
+  }
+
+ private:
+  const BodyBlockEmitter& emit_;
+  MatrixAssembler* A_;
+  int z0_;
   ScratchMatrices* scratch_;
 };
 
@@ -204,7 +255,25 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
     W.f.segment<3>(L.angular_velocity(b)) -= k.omega_B.cross(body.inertia_B * k.omega_B);
   }
   W.failure.failed = false;
-  AddElementForces(system_, W.bodies, W.markers, t, &W.constraint, W.f, &W.failure);
+  const double* z = G.nz() ? y.data() + G.z() : nullptr;
+  const double* z_dot = G.nz() ? yp.data() + G.z() : nullptr;
+  AddElementForces(system_, W.bodies, W.markers, t, &W.constraint, W.f, &W.failure, z, z_dot);
+  // The elements' state rows R(t, z, z', q, v).
+  if (G.nz()) {
+    const auto& forces = system_.force_elements();
+    for (std::size_t k = 0; k < forces.size(); ++k) {
+      const int offset = system_.force_state_offset(static_cast<int>(k));
+      if (offset < 0) continue;
+      ForceContext ctx{&system_, &W.bodies, t, &W.constraint,
+                       system_.force_angle_slot(static_cast<int>(k))};
+      ctx.markers = &W.markers;
+      ctx.failure = &W.failure;
+      ctx.z = z + offset;
+      ctx.z_dot = z_dot + offset;
+      forces[k]->CalcStateResidual(
+          ctx, r.segment(G.z() + offset, forces[k]->num_continuous_states()));
+    }
+  }
   if (W.failure.failed) {  // an element outside its domain: the integrator cuts the step
     ReportRecoverableFailure(W.failure.message);
     return false;
@@ -476,7 +545,16 @@ bool GglDae::AssembleJacobian(double t, double cj, const Eigen::Ref<const Eigen:
                      system_.force_angle_slot(static_cast<int>(k))};
     ctx.markers = &W.markers;
     ctx.failure = &W.failure;
-    forces[k]->AddForceJacobian(ctx, &sink);
+    const int offset = system_.force_state_offset(static_cast<int>(k));
+    if (offset >= 0) {
+      ctx.z = y.data() + G.z() + offset;
+      ctx.z_dot = yp.data() + G.z() + offset;
+    }
+    forces[k]->AddForceJacobian(ctx, &sink);  // at fixed states
+    if (offset >= 0) {
+      GglStateSink state_sink(emit, A, G.z() + offset, &scratch);
+      forces[k]->AddStateJacobian(ctx, cj, &state_sink);
+    }
   }
   if (W.failure.failed) {  // its blocks are missing: this matrix cannot be used
     A->Abandon();
@@ -495,6 +573,10 @@ Eigen::VectorXd GglDae::DoDifferentialMask() const {
   for (int b = 1; b < system_.num_bodies(); ++b)
     for (int j = 0; j < L.num_elastic(b); ++j)
       if (system_.body(b).elastic->is_quasi_static(j)) mask[layout_.v() + L.elastic_v(b) + j] = 0.0;
+  // The elements' states: those in the error test are differential.
+  ForEachForceState([&](int i, const ForceElement& e, int j) {
+    mask[layout_.z() + i] = e.StateErrorWeight(j) > 0.0 ? 1.0 : 0.0;
+  });
   return mask;
 }
 
@@ -540,6 +622,13 @@ std::string GglDae::DoComponentName(int i) const {
     return "body '" + system_.body(b).name + "' " + kV[k - L.velocity(b)];
   }
   if (i < G.mu()) return "lambda of " + system_.EquationName(i - G.lambda());
+  if (i >= G.z()) {
+    std::string name;
+    ForEachForceState([&](int s, const ForceElement& e, int j) {
+      if (G.z() + s == i) name = "force element '" + e.name() + "' " + e.StateName(j);
+    });
+    return name;
+  }
   const int k = i - G.mu();
   if (k < G.m()) return "mu of " + system_.EquationName(k);
   return "mu of unit quaternion of body '" + system_.body(k - G.m() + 1).name + "'";
@@ -547,7 +636,8 @@ std::string GglDae::DoComponentName(int i) const {
 
 void GglDae::MakeInitialValues(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                                const Eigen::VectorXd& vdot, const Eigen::VectorXd& lambda,
-                               Eigen::VectorXd* y, Eigen::VectorXd* yp) const {
+                               Eigen::VectorXd* y, Eigen::VectorXd* yp, const Eigen::VectorXd* z,
+                               const Eigen::VectorXd* z_dot) const {
   const StateLayout& L = system_.layout();
   const GglLayout& G = layout_;
   y->setZero(G.size());
@@ -563,6 +653,33 @@ void GglDae::MakeInitialValues(const Eigen::VectorXd& q, const Eigen::VectorXd& 
     if (ne) yp->segment(L.elastic_q(b), ne) = v.segment(L.elastic_v(b), ne);
   }
   yp->segment(G.v(), G.nv()) = vdot;
+  if (G.nz() == 0) return;
+  if (z != nullptr) {
+    EMB_CHECK(z->size() == G.nz() && z_dot != nullptr && z_dot->size() == G.nz());
+    y->segment(G.z(), G.nz()) = *z;
+    yp->segment(G.z(), G.nz()) = *z_dot;
+    return;
+  }
+  // The elements' steady states at (q, v).
+  const std::vector<BodyKinematics> bodies = CalcBodyKinematics(system_, q, v);
+  const auto& forces = system_.force_elements();
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    const int offset = system_.force_state_offset(static_cast<int>(k));
+    if (offset < 0) continue;
+    const int n = forces[k]->num_continuous_states();
+    const ForceContext ctx{&system_, &bodies, 0.0, &ws_->constraint,
+                           system_.force_angle_slot(static_cast<int>(k))};
+    forces[k]->CalcSteadyStates(ctx, y->segment(G.z() + offset, n), yp->segment(G.z() + offset, n));
+  }
+}
+
+void GglDae::ForEachForceState(
+    const std::function<void(int, const ForceElement&, int)>& visit) const {
+  const auto& forces = system_.force_elements();
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    const int offset = system_.force_state_offset(static_cast<int>(k));
+    for (int j = 0; j < forces[k]->num_continuous_states(); ++j) visit(offset + j, *forces[k], j);
+  }
 }
 
 }  // namespace emb::mbs

@@ -2,7 +2,9 @@
 /// @file
 /// The constrained equations of motion (seed eq. 1.24) in the stabilised index-2 form of
 /// Gear, Gupta and Leimkuhler (GGL), as in SUNDIALS' idaSlCrank_dns example, for
-/// quaternion coordinates. Unknowns y = [q (nq), v (nv), lambda (m), mu (m + nb)]:
+/// quaternion coordinates. Unknowns y = [q (nq), v (nv), lambda (m), mu (m + nb), z (nz)]
+/// (z: the force elements' continuous states, ForceElement::num_continuous_states, with
+/// their own rows R(t, z, z', q, v) = 0 and their forces f(q, v, z) in the dynamic rows):
 ///
 ///   q'  - H(q) v + B(q)^T mu       = 0   (nq)  kinematics, stabilised
 ///   M v' - f(q, v, t) + C(q)^T lambda = 0 (nv)  Newton-Euler with reactions
@@ -30,6 +32,7 @@
 /// force terms.
 
 #include <Eigen/Dense>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,19 +49,22 @@ class System;
 class GglLayout {
  public:
   GglLayout() = default;
-  GglLayout(int nq, int nv, int m, int num_moving) : nq_(nq), nv_(nv), m_(m), nb_(num_moving) {}
+  GglLayout(int nq, int nv, int m, int num_moving, int nz = 0)
+      : nq_(nq), nv_(nv), m_(m), nb_(num_moving), nz_(nz) {}
   int q() const { return 0; }
   int v() const { return nq_; }
   int lambda() const { return nq_ + nv_; }
   int mu() const { return nq_ + nv_ + m_; }
-  int size() const { return nq_ + nv_ + 2 * m_ + nb_; }
+  int z() const { return nq_ + nv_ + 2 * m_ + nb_; }
+  int size() const { return nq_ + nv_ + 2 * m_ + nb_ + nz_; }
   int nq() const { return nq_; }
   int nv() const { return nv_; }
   int m() const { return m_; }
   int num_mu() const { return m_ + nb_; }
+  int nz() const { return nz_; }
 
  private:
-  int nq_{0}, nv_{0}, m_{0}, nb_{0};
+  int nq_{0}, nv_{0}, m_{0}, nb_{0}, nz_{0};
 };
 
 /// The GGL DAE of a finalized System (the model, immutable) evaluated into a GglWorkspace (the
@@ -79,10 +85,14 @@ class GglDae final : public DaeProblem {
 
   const GglLayout& ggl_layout() const { return layout_; }
 
-  /// Consistent (y, y') from an assembled q, projected v and the acceleration solution.
+  /// Consistent (y, y') from an assembled q, projected v and the acceleration solution; the
+  /// force elements' states z and rates z' given (a restart keeps them), or, if null, their
+  /// steady states at (q, v) (ForceElement::CalcSteadyStates).
   void MakeInitialValues(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                          const Eigen::VectorXd& vdot, const Eigen::VectorXd& lambda,
-                         Eigen::VectorXd* y, Eigen::VectorXd* yp) const;
+                         Eigen::VectorXd* y, Eigen::VectorXd* yp,
+                         const Eigen::VectorXd* z = nullptr,
+                         const Eigen::VectorXd* z_dot = nullptr) const;
 
   ConstraintWorkspace& workspace() const { return ws_->constraint; }
 
@@ -123,6 +133,8 @@ class GglDae final : public DaeProblem {
   // Body and marker kinematics at y into the workspace; false for a state the residual
   // cannot be evaluated at (a vanishing quaternion, a non-finite value).
   bool UpdateKinematics(const Eigen::Ref<const Eigen::VectorXd>& y) const;
+  // visit(index in z, element, its state j) for every force element's state.
+  void ForEachForceState(const std::function<void(int, const ForceElement&, int)>& visit) const;
 
   const System& system_;
   GglLayout layout_;

@@ -29,8 +29,10 @@ bool GglDae::DoCalcRoots(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
   const auto& forces = system_.force_elements();
   for (std::size_t k = 0; k < forces.size(); ++k) {
     if (root_offset_[k] < 0) continue;
-    const ForceContext ctx{
+    ForceContext ctx{
         &system_, &bodies, t, &ws_->constraint, system_.force_angle_slot(static_cast<int>(k)), nullptr, &vdot};
+    const int offset = system_.force_state_offset(static_cast<int>(k));
+    if (offset >= 0) ctx.z = y.data() + G.z() + offset, ctx.z_dot = yp.data() + G.z() + offset;
     forces[k]->CalcEventFunctions(ctx,
                                   g.segment(root_offset_[k], forces[k]->num_event_functions()));
   }

@@ -66,6 +66,39 @@ void ForceJacobianSink::AddMarkerBlocks(const MarkerKinematics& Ma, const Marker
   AddDamping(Ma.body, Mb.body, Dab);
 }
 
+void StateJacobianSink::AddMarkerStateRows(int row, const MarkerKinematics& M,
+                                           const Eigen::Ref<const Eigen::MatrixXd>& dR_dX,
+                                           const Eigen::Ref<const Eigen::MatrixXd>& dR_dV) {
+  EMB_CHECK(dR_dX.cols() == 6 && dR_dV.cols() == 6 && dR_dX.rows() == dR_dV.rows());
+  if (M.body == 0) return;
+  if (!M.flexible()) {
+    AddStateStiffness(row, M.body, dR_dX);
+    AddStateDamping(row, M.body, dR_dV);
+    return;
+  }
+  const Eigen::Index n = M.map.cols();
+  Eigen::Map<Eigen::MatrixXd> K = scratch_->View(0, dR_dX.rows(), n);
+  Eigen::Map<Eigen::MatrixXd> D = scratch_->View(1, dR_dX.rows(), n);
+  K.noalias() = dR_dX * M.map;
+  K.noalias() += dR_dV * M.map_rate;
+  D.noalias() = dR_dV * M.map;
+  AddStateStiffness(row, M.body, K);
+  AddStateDamping(row, M.body, D);
+}
+
+void StateJacobianSink::AddMarkerForceByState(const MarkerKinematics& M, int col,
+                                              const Eigen::Ref<const Eigen::MatrixXd>& df6_dz) {
+  EMB_CHECK(df6_dz.rows() == 6);
+  if (M.body == 0) return;
+  if (!M.flexible()) {
+    AddForceByState(M.body, col, df6_dz);
+    return;
+  }
+  Eigen::Map<Eigen::MatrixXd> F = scratch_->View(2, M.map.cols(), df6_dz.cols());
+  F.noalias() = M.map.transpose() * df6_dz;
+  AddForceByState(M.body, col, F);
+}
+
 LocalForceJacobian::LocalForceJacobian(std::initializer_list<const MarkerKinematics*> slot_markers)
     : LocalForceJacobian(slot_markers.begin(), static_cast<int>(slot_markers.size())) {}
 

@@ -79,6 +79,43 @@ class ForceJacobianSink {
   ScratchMatrices* scratch_{&own_scratch_};
 };
 
+/// Receives the iteration-matrix blocks of an element's continuous states (ForceElement::
+/// AddStateJacobian), in the element's own state numbering: R its state residual rows, z its
+/// states, f_a the generalised force on body a (force_jacobian.h's blocks, body_nv columns
+/// or rows). Never called for the ground.
+class StateJacobianSink {
+ public:
+  virtual ~StateJacobianSink() = default;
+  /// dR/dz + cj dR/dz' for the rows from `row` and the columns from `col`.
+  virtual void AddStateBlock(int row, int col, const Eigen::Ref<const Eigen::MatrixXd>& block) = 0;
+  /// dR/dx_b (rows from `row`, body_nv(b) columns in [delta p, delta pi, eta]).
+  virtual void AddStateStiffness(int row, int body,
+                                 const Eigen::Ref<const Eigen::MatrixXd>& block) = 0;
+  /// dR/dv_b (rows from `row`, body_nv(b) columns).
+  virtual void AddStateDamping(int row, int body,
+                               const Eigen::Ref<const Eigen::MatrixXd>& block) = 0;
+  /// df_a/dz (body_nv(a) rows, the states from `col`).
+  virtual void AddForceByState(int body, int col,
+                               const Eigen::Ref<const Eigen::MatrixXd>& block) = 0;
+
+  /// dR/dX_M and dR/dV_M of the virtual body of marker M (rows x 6) taken to its body's
+  /// coordinates through the marker map (kinematics.h): dR/dx_b = dR/dX map + dR/dV map_rate,
+  /// dR/dv_b = dR/dV map (the identity on a rigid body). Nothing for the ground.
+  void AddMarkerStateRows(int row, const MarkerKinematics& M,
+                          const Eigen::Ref<const Eigen::MatrixXd>& dR_dX,
+                          const Eigen::Ref<const Eigen::MatrixXd>& dR_dV);
+  /// df6/dz of a generalised force f6 on M's virtual body (6 x cols): map^T df6/dz on its body.
+  void AddMarkerForceByState(const MarkerKinematics& M, int col,
+                             const Eigen::Ref<const Eigen::MatrixXd>& df6_dz);
+
+ protected:
+  void UseScratch(ScratchMatrices* scratch) { scratch_ = scratch; }
+
+ private:
+  ScratchMatrices own_scratch_;
+  ScratchMatrices* scratch_{&own_scratch_};
+};
+
 /// Dense nv x nv stiffness df/dx and damping df/dv (statics, tests). Cost O(nv^2) memory.
 class DenseForceJacobian final : public ForceJacobianSink {
  public:

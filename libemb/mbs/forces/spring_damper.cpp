@@ -5,6 +5,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/forces/force_jacobian.h"
+#include "libemb/mbs/forces/joint_angle.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
 #include "libemb/mbs/constraints/primitive.h"
 #include "libemb/mbs/core/rotation.h"
@@ -114,44 +115,13 @@ RotationalSpringDamper::RotationalSpringDamper(std::string name, int marker_i, i
                                                  << "': expected stiffness and damping >= 0");
 }
 
-RotationalSpringDamper::State RotationalSpringDamper::Calc(const ForceContext& ctx) const {
-  MarkerKinematics I_own;
-  const MarkerKinematics& I = ctx.Marker(i_, &I_own);
-  MarkerKinematics J_own;
-  const MarkerKinematics& J = ctx.Marker(j_, &J_own);
-  // x_I closer than this to z_J (|x_I x z_J|^2, i.e. 1e-4 rad) leaves the angle undefined.
-  constexpr double kMinProjection = 1e-8;
-  const Eigen::Vector3d x_I = I.R_WM.col(0), z_J = J.R_WM.col(2);
-  const double projection = x_I.cross(z_J).squaredNorm();
-  State s;
-  if (!(projection >= kMinProjection)) {
-    std::ostringstream o;
-    o << "rotational spring-damper '" << name() << "': its angle about z_J is undefined, x_I is "
-      << std::sqrt(projection)
-      << " rad from z_J; expected markers whose x_I stays away from z_J (e.g. across a "
-         "revolute or cylindrical joint)";
-    ctx.Fail(o.str());  // reported through the context, or thrown without one
-    s.defined = false;
-    return s;
-  }
-  const KernelEval g = EvalKernel({KernelKind::kAngle, 0, 0}, I, J);
-  if (ctx.workspace != nullptr && ctx.angle_slot >= 0) {
-    // Start on the branch nearest the free angle, then follow the turns.
-    s.angle = ctx.workspace->Unwrap(ctx.angle_slot, g.value, a0_ + WrapAngle(g.value - a0_)) - a0_;
-  } else {
-    s.angle = WrapAngle(g.value - a0_);
-  }
-  s.gradient << g.d_i, g.d_j;
-  s.velocity << VirtualBodyVelocity(I), VirtualBodyVelocity(J);
-  s.rate = s.gradient.dot(s.velocity);
-  s.body_i = I.body;
-  s.body_j = J.body;
-  return s;
+JointAngle RotationalSpringDamper::Calc(const ForceContext& ctx) const {
+  return CalcJointAngle(ctx, i_, j_, a0_, "rotational spring-damper", name());
 }
 
 void RotationalSpringDamper::DoAddForces(const ForceContext& ctx,
                                          Eigen::Ref<Eigen::VectorXd> f) const {
-  const State s = Calc(ctx);
+  const JointAngle s = Calc(ctx);
   if (!s.defined) return;
   const double tau = k_ * s.angle + c_ * s.rate;
   const StateLayout& L = ctx.system->layout();
@@ -165,7 +135,7 @@ void RotationalSpringDamper::DoAddForces(const ForceContext& ctx,
 
 void RotationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
                                                 ForceJacobianSink* sink) const {
-  const State s = Calc(ctx);
+  const JointAngle s = Calc(ctx);
   if (!s.defined) return;
   MarkerKinematics I_own;
   const MarkerKinematics& I = ctx.Marker(i_, &I_own);
@@ -183,12 +153,12 @@ void RotationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
 }
 
 double RotationalSpringDamper::DoCalcPotentialEnergy(const ForceContext& ctx) const {
-  const State s = Calc(ctx);
+  const JointAngle s = Calc(ctx);
   return s.defined ? 0.5 * k_ * s.angle * s.angle : 0.0;
 }
 
 double RotationalSpringDamper::DoCalcDissipatedPower(const ForceContext& ctx) const {
-  const State s = Calc(ctx);
+  const JointAngle s = Calc(ctx);
   return s.defined ? c_ * s.rate * s.rate : 0.0;
 }
 

@@ -3,6 +3,7 @@
 /// Translational and rotational spring-dampers between two markers I and J.
 
 #include "libemb/mbs/core/force_element.h"
+#include "libemb/mbs/forces/joint_angle.h"
 
 namespace emb::mbs {
 
@@ -68,17 +69,9 @@ class RotationalSpringDamper final : public ForceElement {
   int DoNumAngleSlots() const override { return 1; }
 
  private:
-  struct State {
-    double angle;  ///< a - a0 [rad]
-    double rate;   ///< a' [rad/s]
-    Eigen::Matrix<double, 1, 12> gradient;  ///< da/dx = [d_i, d_j]
-    Eigen::Matrix<double, 12, 1> velocity;  ///< [v_i, omega_Bi, v_j, omega_Bj]
-    int body_i, body_j;
-    bool defined{true};  ///< false: the angle is undefined here (reported by Calc)
-  };
-  /// The angle and its derivatives; `defined` false (reported through the context) where
-  /// x_I is along z_J.
-  State Calc(const ForceContext& ctx) const;
+  /// The angle and its derivatives (joint_angle.h); `defined` false (reported through the
+  /// context) where x_I is along z_J.
+  JointAngle Calc(const ForceContext& ctx) const;
   int i_, j_;
   double k_, c_, a0_;
 };

@@ -18,6 +18,7 @@
 #include "libemb/mbs/dae/ggl_dae.h"
 #include "libemb/mbs/forces/applied_load.h"
 #include "libemb/mbs/forces/bushing.h"
+#include "libemb/mbs/forces/maxwell_arm.h"
 #include "libemb/mbs/forces/spring_damper.h"
 #include "libemb/mbs/parts/flexible_body.h"
 #include "tests/support/flexible_bar.h"
@@ -85,7 +86,7 @@ namespace {
 
 // A flexible bar pinned at x0, spinning about the pin, held at x1 by a bushing and a
 // spring-damper to the ground, with a rigid disc on a journal bearing beside it whose shaft is
-// loaded by a harmonic force and a torsional spring.
+// loaded by a harmonic force, a torsional spring and a Maxwell arm (a state of its own).
 mbs::System Model() {
   testing::BarSpec bar;
   bar.interfaces = {"x0:rbe2", "x1:rbe3"};
@@ -129,6 +130,8 @@ mbs::System Model() {
   sys.AddForceElement(std::make_shared<mbs::JournalBearing>("bearing", shaft, bore, jb));
   sys.AddForceElement(std::make_shared<mbs::RotationalSpringDamper>("torsion", shaft, bore, 50.0,
                                                                     0.1, 0.0));
+  // An element with a continuous state (force_element.h): its rows and blocks too.
+  sys.AddForceElement(std::make_shared<mbs::MaxwellArm>("rubber", shaft, bore, 30.0, 0.05));
   sys.AddForceElement(std::make_shared<mbs::AppliedLoad>(
       "shake", mbs::AppliedLoad::Kind::kForce, shaft, Eigen::Vector3d::UnitX(),
       mbs::AppliedLoad::Frame::kWorld, mbs::TimeFunction::Harmonic(20.0, 50.0, 0.0, 0.0)));
