@@ -16,6 +16,8 @@
 /// r_k = u_k - u_supply. Summed over all non-supply nodes the fluxes telescope: sum r =
 /// storage + side flow - supply flow, exactly (the discrete mass balance).
 
+#include <vector>
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
@@ -68,6 +70,15 @@ void FillFilmJacobian(const FilmFields& film, const FilmUnknowns& x, const Stora
 void AddFilmJacobianRowSums(const FilmFields& film, const FilmUnknowns& x,
                             const StorageInputs& storage, const ColumnWeights& w,
                             Eigen::VectorXd* out);
+
+/// The adjoint terms of a load Jacobian without forming dr/dx: d_position -= lambda^T dr/dx,
+/// d_velocity -= lambda^T dr/dv, lambda n x 6 (one column per load), O(n); `scratch` is
+/// resized to 6 (n + 1) doubles (no allocation when it already is).
+void AddAdjointKinematicTerms(const FilmFields& film, const FilmUnknowns& x,
+                              const StorageInputs& storage, const Eigen::MatrixXd& lambda,
+                              std::vector<double>* scratch,
+                              Eigen::Matrix<double, 6, 4>* d_position,
+                              Eigen::Matrix<double, 6, 6>* d_velocity);
 
 /// dr/dx (n x 4) and dr/dv (n x 6) at fixed unknowns (KinematicsLayout columns).
 void CalcFilmKinematicJacobian(const FilmFields& film, const FilmUnknowns& x,

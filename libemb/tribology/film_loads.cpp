@@ -24,7 +24,7 @@ void CalcBearingLoads(const FilmFields& film, const FilmUnknowns& x, const FilmB
   const JournalKinematics& kin = film.kinematics();
   const int N = g.num_circumferential(), m = g.num_rows(), nz = g.num_axial_intervals();
   const int n = g.num_unknowns();
-  const double R = g.radius(), A = g.node_area(), dphi = g.dphi();
+  const double R = g.radius(), dphi = g.dphi();
   const double dw = kin.shell_speed - kin.journal_speed;  // omega_s - omega_j
   const bool half = par.cavitation == CavitationModel::kHalfSommerfeld;
   const Eigen::Vector2d tilt = kin.tilt - par.bore_tilt;
@@ -38,23 +38,33 @@ void CalcBearingLoads(const FilmFields& film, const FilmUnknowns& x, const FilmB
     d->d_velocity.setZero();
   }
   double pressure_torque = 0.0, couette = 0.0;  // T_p, sum w theta mu / h
+  double Fx = 0.0, Fy = 0.0, Mx = 0.0, My = 0.0;
+  // d(T_p)/dx = 1/2 sum A p (s, -c, z s, -z c); d(sum w theta mu / h)/dx (h: FilmGradient).
+  double tp_dx[4] = {}, cou_dx[4] = {};
   double p_max = -std::numeric_limits<double>::infinity();
   int p_max_k = 0, cavitated = 0, free_nodes = 0;
+  const bool piezo = oil.piezoviscous();
+  const double mu0 = oil.ambient_viscosity();
+  const Eigen::Vector2d e = kin.eccentricity;
+  double* du = d ? d->d_unknowns.data() : nullptr;  // 6 x n, column-major
   // Interior nodes: pressure loads, pressure torque, Couette shear.
   for (int k = 0; k < n; ++k) {
     const int i = g.column_of(k), j = g.row_of(k);
     const double c = g.cos_node(i), s = g.sin_node(i), z = g.axial(j);
+    const double A = g.quadrature_area(j);
     const double p_raw = x.pressure[k];
     const double p = half ? std::max(p_raw, 0.0) : p_raw;
     const double dp_du = (half && p_raw < 0.0) ? 0.0 : x.dp_dpsi[k] * x.dpsi_du[k];
     // dh/dphi at the node (T1): e(z) . (sin, -cos) plus the offset's central difference.
-    double dh_dphi = (kin.eccentricity.x() + z * tilt.x()) * s -
-                     (kin.eccentricity.y() + z * tilt.y()) * c;
+    double dh_dphi = (e.x() + z * tilt.x()) * s - (e.y() + z * tilt.y()) * c;
     if (dh)
       dh_dphi += ((*dh)[g.Node(g.next(i), j)] - (*dh)[g.Node(g.previous(i), j)]) / (2.0 * dphi);
-    L.force -= A * p * Eigen::Vector2d(c, s);
-    L.moment += A * p * z * Eigen::Vector2d(s, -c);
-    pressure_torque += 0.5 * A * p * dh_dphi;
+    const double Ap = A * p;
+    Fx -= Ap * c;
+    Fy -= Ap * s;
+    Mx += Ap * z * s;
+    My -= Ap * z * c;
+    pressure_torque += 0.5 * Ap * dh_dphi;
     if (p_raw > p_max) {
       p_max = p_raw;
       p_max_k = k;
@@ -64,11 +74,12 @@ void CalcBearingLoads(const FilmFields& film, const FilmUnknowns& x, const FilmB
       if (p_raw <= 0.0 && (x.theta[k] < 1.0 || x.slack[k] < 0.0)) ++cavitated;
     }
     double dmu_dp = 0.0;
-    const double mu = oil.Viscosity(p_raw, &dmu_dp);
+    const double mu = piezo ? oil.Viscosity(p_raw, &dmu_dp) : mu0;
     const double h = film.film(k);
-    couette += A * x.theta[k] * mu / h;
+    const double shear = A * x.theta[k] * mu / h;
+    couette += shear;
     if (!d) continue;
-    auto col = d->d_unknowns.col(k);
+    double* col = du + static_cast<std::size_t>(k) * LL::kNumLoads;
     col[LL::kFx] = -A * c * dp_du;
     col[LL::kFy] = -A * s * dp_du;
     col[LL::kMx] = A * z * s * dp_du;
@@ -78,17 +89,27 @@ void CalcBearingLoads(const FilmFields& film, const FilmUnknowns& x, const FilmB
                        (x.dtheta_du[k] * mu + x.theta[k] * dmu_dp * x.dp_dpsi[k] * x.dpsi_du[k]);
     col[LL::kJournalTorque] = dTp + dTc;
     col[LL::kShellTorque] = dTp - dTc;
-    // d(T_p)/dx: d(dh/dphi)/dx = (s, -c, z s, -z c).
-    const Eigen::Vector4d ddh(s, -c, z * s, -z * c);
-    d->d_position.row(LL::kJournalTorque) += 0.5 * A * p * ddh.transpose();
-    d->d_position.row(LL::kShellTorque) += 0.5 * A * p * ddh.transpose();
-    if (!film.film_floored(k)) {
-      const Eigen::Vector4d dTc_dx =
-          -R * R * dw * A * x.theta[k] * mu / (h * h) * FilmFields::FilmGradient(c, s, z);
-      d->d_position.row(LL::kJournalTorque) += dTc_dx.transpose();
-      d->d_position.row(LL::kShellTorque) -= dTc_dx.transpose();
+    const double half_ap = 0.5 * Ap;
+    tp_dx[0] += half_ap * s;
+    tp_dx[1] -= half_ap * c;
+    tp_dx[2] += half_ap * z * s;
+    tp_dx[3] -= half_ap * z * c;
+    if (!film.film_floored(k)) {  // d(1/h)/dx = -dh/dx / h^2 = (c, s, z c, z s) / h^2
+      const double q = shear / h;
+      cou_dx[0] += q * c;
+      cou_dx[1] += q * s;
+      cou_dx[2] += q * z * c;
+      cou_dx[3] += q * z * s;
     }
   }
+  L.force = Eigen::Vector2d(Fx, Fy);
+  L.moment = Eigen::Vector2d(Mx, My);
+  if (d)
+    for (int q = 0; q < 4; ++q) {
+      const double dTc_dx = R * R * dw * cou_dx[q];
+      d->d_position(LL::kJournalTorque, q) += tp_dx[q] + dTc_dx;
+      d->d_position(LL::kShellTorque, q) += tp_dx[q] - dTc_dx;
+    }
   // Edge rows: Couette shear with the neighbour's fill fraction; asperity contact everywhere.
   const std::vector<double>& h_node = film.node_film();
   const std::optional<AsperityContact>& contact = bearing.contact();
@@ -98,7 +119,7 @@ void CalcBearingLoads(const FilmFields& film, const FilmUnknowns& x, const FilmB
     const double c = g.cos_node(i), s = g.sin_node(i);
     for (int j = 0; j <= nz; ++j) {
       const bool edge = j == 0 || j == nz;
-      const double w = edge ? 0.5 * A : A;
+      const double w = g.quadrature_area(j);
       const double z = g.axial(j);
       const double h = h_node[g.Node(i, j)];
       const Eigen::Vector4d dh_dx = FilmFields::FilmGradient(c, s, z);

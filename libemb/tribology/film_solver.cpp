@@ -42,8 +42,6 @@ FilmSolver::FilmSolver(const ReynoldsBearing& bearing) : bearing_(&bearing), fil
   for (auto* v : {&u_, &u_new_, &r_, &rhs_, &fb_a_, &fb_b_, &fb_phi_, &fb_da_, &fb_db_, &alpha_,
                   &beta_, &slack_w_, &work_, &fb_correction_})
     v->setZero(n);
-  dr_dx_.setZero(n, KinematicsLayout::kNumPositions);
-  dr_dv_.setZero(n, KinematicsLayout::kNumVelocities);
   lambda_.setZero(n, LoadLayout::kNumLoads);
   partials_.d_unknowns.setZero(LoadLayout::kNumLoads, n);
   ResetWarmStart();
@@ -268,11 +266,12 @@ FilmSolveInfo FilmSolver::Solve(const StorageInputs& st, const JournalKinematics
   CalcBearingLoads(film_, x_, balance_, loads, jacobian ? &partials_ : nullptr);
   if (!jacobian) return info;
   // Adjoint: J^T Lambda = (dy/du)^T with the factorisation of the final pattern.
-  CalcFilmKinematicJacobian(film_, x_, st, &dr_dx_, &dr_dv_);
   lambda_ = partials_.d_unknowns.transpose();
-  for (int l = 0; l < LoadLayout::kNumLoads; ++l) lu_.SolveTransposed(lambda_.col(l).data());
-  jacobian->d_position.noalias() = partials_.d_position - lambda_.transpose() * dr_dx_;
-  jacobian->d_velocity.noalias() = partials_.d_velocity - lambda_.transpose() * dr_dv_;
+  lu_.SolveTransposed(lambda_.data(), LoadLayout::kNumLoads);
+  jacobian->d_position = partials_.d_position;
+  jacobian->d_velocity = partials_.d_velocity;
+  AddAdjointKinematicTerms(film_, x_, st, lambda_, &adjoint_rows_, &jacobian->d_position,
+                           &jacobian->d_velocity);
   return info;
 }
 

@@ -28,6 +28,7 @@
 /// after the first. Not thread-safe: one FilmSolver per thread.
 
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -113,7 +114,8 @@ class FilmSolver {
   Eigen::VectorXd u_, u_new_, r_, rhs_;
   Eigen::VectorXd fb_a_, fb_b_, fb_phi_, fb_da_, fb_db_, alpha_, beta_, slack_w_, work_,
       fb_correction_;
-  Eigen::MatrixXd dr_dx_, dr_dv_, lambda_;
+  Eigen::MatrixXd lambda_;
+  std::vector<double> adjoint_rows_;
   LoadPartials partials_;
   FilmBalance balance_;
 };

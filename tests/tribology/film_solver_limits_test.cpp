@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <vector>
 
@@ -24,21 +23,49 @@ using namespace test;
 constexpr double kEps = 0.6;  // eccentricity ratio of the limit and order studies
 constexpr double kR = 0.03, kC = 30e-6, kMu = 0.01, kOmega = 300.0;
 
-// PROVISIONAL (to be set from measurements)
-constexpr double kShortBearingOrderTolerance = 0.3;
-constexpr double kShortBearingFinalError = 0.01;
-constexpr double kLongBearingMinOrder = 0.8;
-constexpr double kLongBearingFinalError = 0.15;
+// Short bearing: the theory drops terms of relative size (L/D)^2, so the error's observed
+// order tends to 2 as L/D shrinks (1.79 to 1.99 measured from L/D = 1/4 to 1/32, for the
+// full and the half film); at L/D = 1/32 the finite bearing is within 0.2 % of Ocvirk (the
+// grid's own error is ~1e-5 after Richardson).
+constexpr double kShortBearingOrderTolerance = 0.25;
+constexpr double kShortBearingFinalError = 0.005;
+// Long bearing: the edge zone costs load like D/L: first order (0.74-0.76 from L/D = 1 to 2,
+// 0.97-1.00 beyond, measured); 10 % short of the closed forms at L/D = 8.
+constexpr double kLongBearingMinOrder = 0.7;
+constexpr double kLongBearingAsymptoticOrderTolerance = 0.1;
+constexpr double kLongBearingFinalError = 0.12;
+// Grid convergence (L/D = 1/2, grids 24 x 4 to 192 x 32): second order where the film is
+// smooth (2.02-2.05 measured for the full film); the Swift-Stieber free boundary costs about
+// half an order in load (1.59-1.60; attitude 2.3-2.7); JFO converges erratically as the
+// reformation front moves node by node (orders 1.8-5.7 measured): at least first order.
 constexpr double kSmoothOrderTolerance = 0.1;
-constexpr double kReynoldsMinOrder = 1.0;
-constexpr double kJfoMinOrder = 0.8;
+constexpr double kReynoldsMinOrder = 1.4;
+constexpr double kJfoMinOrder = 1.0;
+// Tables: Richardson from 64 x 8 and 128 x 16 (grid error < 0.1 %). Butenschoen gives So to
+// four decimals (two significant digits at L/D = 1/8, eps = 0.2: rounding alone is 0.9 %)
+// and angles to 0.001 deg; measured here: So within 5e-5 + 0.35 %, beta within 0.09 deg.
+// Raimondi & Boyd's three digits (1958, relaxation on coarse grids) differ from Butenschoen's
+// own values by up to 1.3 % in S and 0.5 deg in phi; measured here: 1.4 % and 0.53 deg.
 constexpr GridSize kTableGrid{128, 16};
-constexpr double kButenschoenLoadTolerance = 0.02, kButenschoenAngleTolerance = 1.0;
-constexpr double kRaimondiBoydLoadTolerance = 0.02, kRaimondiBoydAngleTolerance = 1.0;
+constexpr double kButenschoenRounding = 5e-5, kButenschoenLoadTolerance = 0.005;
+constexpr double kButenschoenAngleTolerance = 0.15;  // deg
+constexpr double kRaimondiBoydLoadTolerance = 0.015, kRaimondiBoydAngleTolerance = 0.6;
+
+// Swift-Stieber needs an oil source: without one the complementarity starts the film where
+// dp/dphi = 0 upstream of the widest gap (a bearing that runs on oil from nowhere). Raimondi
+// & Boyd, Butenschoen and the one-dimensional solution start it at the widest gap (phi = pi
+// for e along +x) at ambient pressure: an axial supply line there, over the whole length, on
+// a node column of every grid (N even).
+ReynoldsBearingParameters WithInlet(ReynoldsBearingParameters p) {
+  p.grooves.push_back({0.0, p.length, kPi - 1e-6, 2e-6, 0.0});
+  return p;
+}
 
 // The film force at e = (eps c, 0) for a bearing of length L on a grid.
 Vector2d Force(double L, GridSize grid, CavitationModel model, double eps = kEps) {
-  const ReynoldsBearing b("b", Plain(kR, L, kC, grid, model, kMu));
+  ReynoldsBearingParameters p = Plain(kR, L, kC, grid, model, kMu);
+  if (model == CavitationModel::kReynolds) p = WithInlet(p);
+  const ReynoldsBearing b("b", p);
   FilmSolver s(b);
   BearingLoads l;
   const FilmSolveInfo info = s.SolveQuasiStatic(Rotating(Vector2d(eps * kC, 0.0), kOmega), &l);
@@ -57,7 +84,7 @@ Vector2d Richardson2(const Vector2d& coarse, const Vector2d& fine) {
 TEST(FilmSolverLimits, ShortBearingClosedFormAsLengthVanishes) {
   const double s = 1.0 - kEps * kEps;
   std::vector<double> full_error, half_error;
-  for (double l_over_d : {1.0 / 2, 1.0 / 4, 1.0 / 8, 1.0 / 16}) {
+  for (double l_over_d : {1.0 / 4, 1.0 / 8, 1.0 / 16, 1.0 / 32}) {
     const double L = 2.0 * kR * l_over_d;
     const double Ft_full = kPi * kMu * kOmega * kR * std::pow(L, 3) * kEps / (2 * kC * kC * std::pow(s, 1.5));
     const Vector2d full = Richardson2(Force(L, {96, 8}, CavitationModel::kFullSommerfeld),
@@ -70,12 +97,11 @@ TEST(FilmSolverLimits, ShortBearingClosedFormAsLengthVanishes) {
     half_error.push_back((half - Vector2d(Fr_half, 0.5 * Ft_full)).norm() /
                          std::hypot(Fr_half, 0.5 * Ft_full));
   }
-  for (size_t k = 0; k < full_error.size(); ++k) std::printf("short: full %.3e half %.3e\n", full_error[k], half_error[k]);
   for (size_t k = 0; k + 1 < full_error.size(); ++k) {
-    // The short-bearing theory drops a term of relative size (L/D)^2: second order.
     EXPECT_NEAR(Order(full_error[k], full_error[k + 1]), 2.0, kShortBearingOrderTolerance)
         << "L/D step " << k << ": errors " << full_error[k] << ", " << full_error[k + 1];
-    EXPECT_LT(half_error[k + 1], half_error[k]);
+    EXPECT_NEAR(Order(half_error[k], half_error[k + 1]), 2.0, kShortBearingOrderTolerance)
+        << "L/D step " << k << ": errors " << half_error[k] << ", " << half_error[k + 1];
   }
   EXPECT_LT(full_error.back(), kShortBearingFinalError);
   EXPECT_LT(half_error.back(), kShortBearingFinalError);
@@ -139,13 +165,14 @@ TEST(FilmSolverLimits, LongBearingClosedFormsAsLengthGrows) {
     const Vector2d reynolds = Force(L, grid, CavitationModel::kReynolds);
     reynolds_error.push_back((reynolds - ss).norm() / ss.norm());
   }
-  for (size_t k = 0; k < full_error.size(); ++k) std::printf("long: full %.3e half %.3e reyn %.3e\n", full_error[k], half_error[k], reynolds_error[k]);
   // The side leakage of a finite bearing costs load over an edge zone of about a diameter:
   // the relative error falls like D/L, first order.
-  for (const auto* errors : {&full_error, &half_error, &reynolds_error})
+  for (const auto* errors : {&full_error, &half_error, &reynolds_error}) {
     for (size_t k = 0; k + 1 < errors->size(); ++k)
       EXPECT_GT(Order((*errors)[k], (*errors)[k + 1]), kLongBearingMinOrder)
           << "L/D step " << k << ": " << (*errors)[k] << " -> " << (*errors)[k + 1];
+    EXPECT_NEAR(Order((*errors)[2], (*errors)[3]), 1.0, kLongBearingAsymptoticOrderTolerance);
+  }
   EXPECT_LT(full_error.back(), kLongBearingFinalError);
   EXPECT_LT(half_error.back(), kLongBearingFinalError);
   EXPECT_LT(reynolds_error.back(), kLongBearingFinalError);
@@ -184,16 +211,11 @@ TEST(FilmSolverLimits, GridConvergenceOrderOfLoadAndAttitude) {
   const double L = 2.0 * kR * 0.5;  // L/D = 1/2
   // Full film: smooth, second order.
   const Study full = GridStudy(Plain(kR, L, kC, {}, CavitationModel::kFullSommerfeld, kMu), kEps);
-  auto show = [](const char* w, const Study& st) {
-    for (size_t k = 0; k < st.load.size(); ++k) std::printf("%s %.10g %.10g\n", w, st.load[k], st.attitude[k]);
-    for (double o : Orders(st.load)) std::printf("%s order load %.3f\n", w, o);
-    for (double o : Orders(st.attitude)) std::printf("%s order att %.3f\n", w, o);
-  };
-  show("full", full);
   for (double o : Orders(full.load)) EXPECT_NEAR(o, 2.0, kSmoothOrderTolerance);
+  for (double a : full.attitude) EXPECT_NEAR(a, 90.0, 1e-9);  // the full film is antisymmetric
   // Swift-Stieber: the free boundary.
-  const Study reyn = GridStudy(Plain(kR, L, kC, {}, CavitationModel::kReynolds, kMu), kEps);
-  show("reyn", reyn);
+  const Study reyn =
+      GridStudy(WithInlet(Plain(kR, L, kC, {}, CavitationModel::kReynolds, kMu)), kEps);
   for (double o : Orders(reyn.load)) EXPECT_GT(o, kReynoldsMinOrder);
   for (double o : Orders(reyn.attitude)) EXPECT_GT(o, kReynoldsMinOrder);
   // JFO with a full circumferential groove on the mid-plane (its edges on node rows of every
@@ -201,7 +223,6 @@ TEST(FilmSolverLimits, GridConvergenceOrderOfLoadAndAttitude) {
   ReynoldsBearingParameters jfo = Plain(kR, L, kC, {}, CavitationModel::kMassConserving, kMu);
   jfo.grooves.push_back({0.0, 0.25 * L, 0.0, 2.0 * kPi, 0.5e5});
   const Study mc = GridStudy(jfo, kEps);
-  show("jfo", mc);
   for (double o : Orders(mc.load)) EXPECT_GT(o, kJfoMinOrder);
   for (double o : Orders(mc.attitude)) EXPECT_GT(o, kJfoMinOrder);
 }
@@ -253,7 +274,7 @@ struct Steady {
 Steady SolveSteady(double l_over_d, double eps) {
   const double L = 2.0 * kR * l_over_d;
   auto at = [&](GridSize g) {
-    const ReynoldsBearing b("b", Plain(kR, L, kC, g, CavitationModel::kReynolds, kMu));
+    const ReynoldsBearing b("b", WithInlet(Plain(kR, L, kC, g, CavitationModel::kReynolds, kMu)));
     FilmSolver s(b);
     BearingLoads l;
     const FilmSolveInfo info = s.SolveQuasiStatic(Rotating(Vector2d(eps * kC, 0.0), kOmega), &l);
@@ -268,8 +289,7 @@ TEST(FilmSolverLimits, ButenschoenFiniteWidthTable) {
   for (const TableRow& row : kButenschoen)
     for (int c = 0; c < 4; ++c) {
       const Steady s = SolveSteady(kTableLOverD[c], row.eps);
-      std::printf("but eps %.2f L/D %.3f So %.5f (%.5f) %+.4f  beta %.3f (%.3f) %+.3f\n", row.eps, kTableLOverD[c], s.so, row.so[c], s.so / row.so[c] - 1, s.beta_deg, row.beta_deg[c], s.beta_deg - row.beta_deg[c]);
-      EXPECT_NEAR(s.so / row.so[c] - 1.0, 0.0, kButenschoenLoadTolerance)
+      EXPECT_NEAR(s.so, row.so[c], kButenschoenRounding + kButenschoenLoadTolerance * row.so[c])
           << "eps " << row.eps << ", L/D " << kTableLOverD[c];
       EXPECT_NEAR(s.beta_deg, row.beta_deg[c], kButenschoenAngleTolerance)
           << "eps " << row.eps << ", L/D " << kTableLOverD[c];
@@ -280,7 +300,6 @@ TEST(FilmSolverLimits, RaimondiBoydFiniteWidthTable) {
   for (const RaimondiBoydRow& row : kRaimondiBoyd) {
     const Steady s = SolveSteady(row.l_over_d, 1.0 - row.h0_over_c);
     const double S = 1.0 / (2.0 * kPi * s.so);
-    std::printf("rb h0/c %.2f L/D %.3f S %.5f (%.5f) %+.4f  phi %.3f (%.3f) %+.3f\n", row.h0_over_c, row.l_over_d, S, row.s, S / row.s - 1, s.beta_deg, row.phi_deg, s.beta_deg - row.phi_deg);
     EXPECT_NEAR(S / row.s - 1.0, 0.0, kRaimondiBoydLoadTolerance)
         << "h0/c " << row.h0_over_c << ", L/D " << row.l_over_d;
     EXPECT_NEAR(s.beta_deg, row.phi_deg, kRaimondiBoydAngleTolerance)
