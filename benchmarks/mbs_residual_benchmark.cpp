@@ -9,7 +9,7 @@
 #include <numbers>
 
 #include "libemb/mbs/analysis/analysis.h"
-#include "libemb/mbs/analysis/ggl_dae.h"
+#include "libemb/mbs/dae/ggl_dae.h"
 
 namespace {
 

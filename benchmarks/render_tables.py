@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Renders the benchmark tables of the documentation from benchmarks/results/*.json.
 
-The documents (benchmarks/README.md, README.md) mark what is generated:
+The documents (benchmarks/README.md, README.md and the pages of docs/, symbolic links left
+out) mark what is generated:
     <!-- table:NAME -->  ...  <!-- /table:NAME -->        a table below (TABLES), with a
                                                           line naming its results file,
                                                           commit, date and machine
@@ -25,7 +26,15 @@ import os
 import re
 import sys
 
-DOCS = ["benchmarks/README.md", "README.md"]
+def documents(root):
+    """The documents that may hold markers, relative to the repository root."""
+    docs = ["benchmarks/README.md", "README.md"]
+    for d, _, files in sorted(os.walk(os.path.join(root, "docs"))):
+        for f in sorted(files):
+            path = os.path.join(d, f)
+            if f.endswith(".md") and not os.path.islink(path):
+                docs.append(os.path.relpath(path, root))
+    return docs
 TABLE_RE = re.compile(r"(<!-- table:([\w-]+) -->\n)(.*?)(<!-- /table:\2 -->)", re.S)
 VALUE_RE = re.compile(r"(<!-- value:([^|>]+?)(?:\|([^>]*?))? -->)(.*?)(<!-- /value -->)", re.S)
 
@@ -814,6 +823,78 @@ def reynolds_bearing_ocvirk(res):
                  rows), [doc]
 
 
+def validation_status(res):
+    """The README's status of validation: one row per yardstick, the worst agreement its
+    benchmark measured, the results file and the page that has the whole table."""
+    rows, docs = [], []
+
+    def by_name(name):
+        return {r["name"]: r for r in res(name)["data"]["runs"]}
+
+    def row(what, against, measured, name, page):
+        doc = res(name)
+        docs.append(doc)
+        rows.append([what, against, measured, f"`{name}.json` ({doc['commit'][:7]}, {doc['date'][:10]})",
+                     f"[details](docs/{page})"])
+
+    d = res("ccx_vs_emb")["data"]
+    row(f"FE modes of the inline-4 crank (Tet10, {len(d['runs'])} meshes)", "CalculiX on the same mesh",
+        f"max \\|Δf\\|/f {num(max(r['max_rel_freq_diff'] for r in d['runs']), '.1e')}", "ccx_vs_emb",
+        "validation.md#fe-modes-against-calculix")
+    d = res("free_vibration_supports")["data"]
+    fine = max(r["n"] for r in d["fv5"] if r["support"] == "rbe3")
+    f5 = next(r for r in d["fv5"] if r["support"] == "rbe3" and r["n"] == fine)["frequencies_hz"][0]
+    fine52 = max(r["n"] for r in d["fv52"] if r["support"] == "side faces")
+    p52 = next(r for r in d["fv52"] if r["support"] == "side faces" and r["n"] == fine52)
+    f52 = p52["frequencies_hz"][p52["rigid_modes"]]
+    row("NAFEMS FV5 deep beam, FV52 plate (Hex20, finest mesh)", "published targets",
+        f"FV5 f₁ {num(100 * (f5 / d['targets_hz']['fv5_flexural_1'] - 1), '+.2f')} %, "
+        f"FV52 {num(100 * (f52 / d['targets_hz']['fv52_mode_4'] - 1), '+.2f')} %",
+        "free_vibration_supports", "validation.md#supports-nafems-fv5-and-fv52")
+    d = res("crank_reduce_modes")["data"]["runs"][-1]
+    row(f"Craig–Bampton crank, {d['fixed_interface_modes']} fixed-interface modes", "the full FE model",
+        f"max error {num(d['max_error_pct_3khz'], '.3f')} % to 3 kHz, "
+        f"{num(d['max_error_pct_6khz'], '.3f')} % to 6 kHz", "crank_reduce_modes",
+        "validation.md#craig-bampton-reduction")
+    d = res("beam_vs_cms_crank")["data"]["cases"][0]
+    cms = next(r for r in d["routes"] if r["route"] == "cms 40")
+    beam = next(r for r in d["routes"] if r["route"] == "beam lumped, elastic webs")
+    row("Beam and CMS crank, free-free", "the full FE model",
+        f"CMS (40 modes) {num(cms['max_abs_error_pct'], '.2f')} %, elastic-web beam "
+        f"{num(beam['max_abs_error_pct'], '.0f')} %", "beam_vs_cms_crank", "validation.md#beam-vs-cms")
+    d = by_name("inline4_basis")
+    row("Inline-4 engine, installed basis (2 kHz)", f"the full basis at rtol {num(d['ref']['rtol'], 'g')}",
+        f"{num(d['default']['max_error_pct'], '.2f')} % (lowest 20 free-free modes: "
+        f"{num(d['lowest20']['max_error_pct'], '.0f')} %)", "inline4_basis",
+        "validation.md#inline-4-engine-installed-basis")
+    d = by_name("slepc_modes")
+    worst = max(r["max_rel_diff_vs_cholmod"] for n, r in d.items() if n != "cholmod")
+    row("Distributed eigen-solve (SLEPc, 1 and 2 ranks)", "the default CHOLMOD path",
+        f"max \\|Δf\\|/f {num(worst, '.1e')}", "slepc_modes", "validation.md#distributed-runs")
+    d = res("order_cuts_inline4")["data"]["runs"][0]
+    errs = [abs(o["campbell_error_pct"]) for o in d["orders"] if o.get("campbell_error_pct") is not None]
+    row("Campbell diagram (cycle-averaged) of the inline-4", "resonance peaks of the steady sweep",
+        f"within {num(max(errs), '.1f')} % in speed (orders "
+        f"{', '.join(num(o['order'], 'g') for o in d['orders'])})", "order_cuts_inline4",
+        "validation.md#campbell-diagram-against-the-running-engine")
+    d = by_name("driveline_clonk")
+    row("Driveline clonk, CMS tube on its installed basis (5 kHz)",
+        f"the same model at rtol {num(d['ref']['rtol'], 'g')}",
+        f"gear torque {num(d['inst5k']['gear_torque_rms_error_pct'], '.2f')} % RMS, tube "
+        f"acceleration {num(d['inst5k']['tube_accel_rms_error_pct'], '.1f')} % RMS", "driveline_clonk",
+        "validation.md#driveline-clonk")
+    d = by_name("stress_recovery_1cyl")
+    row("Fillet stresses from modal coordinates", "full FE static solves, same mesh",
+        f"{num(d['reduce_with']['summary']['stress_check_error'], '.1e')} of the peak",
+        "stress_recovery_1cyl", "validation.md#stress-recovery")
+    d = res("runup_vs_sweep")["data"]["runs"][0]
+    worst = max(o["max_difference_relative"] for o in d["orders"])
+    row("Run-up order tracking (1000 → 6000 rpm in 2 s)", "steady speed sweep",
+        f"within {num(100 * worst, '.1f')} % of the largest steady amplitude", "runup_vs_sweep",
+        "validation.md#run-up-against-the-steady-sweep")
+    return table(["yardstick", "against", "measured", "results", "page"], rows), []
+
+
 TABLES = {f.__name__: f for f in [
     campbell_inline4, campbell_angles, tvd_inline4, tvd_inline4_3250, tvd_rubber_inline4,
     inline4_basis, inline4_basis_6000, inline4_basis_load_step, inline4_basis_ocvirk, engine_1cyl_basis,
@@ -823,8 +904,8 @@ TABLES = {f.__name__: f for f in [
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
     inline4_beam, inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule,
     mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state, sweep_inline4, runup_vs_sweep,
-    order_cuts_inline4, reynolds_bearing_grids, reynolds_bearing_reference, reynolds_bearing_solvers,
-    reynolds_bearing_ocvirk]}
+    order_cuts_inline4, validation_status, reynolds_bearing_grids, reynolds_bearing_reference,
+    reynolds_bearing_solvers, reynolds_bearing_ocvirk]}
 
 
 def render_table(name, res):
@@ -879,7 +960,7 @@ def main():
             sys.exit(f"render_tables.py: {e}")
         return 0
     problems, stale = [], []
-    for rel in DOCS:
+    for rel in documents(a.root):
         path = os.path.join(a.root, rel)
         with open(path, encoding="utf-8") as f:
             text = f.read()

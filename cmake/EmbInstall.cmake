@@ -16,7 +16,8 @@ include(CMakePackageConfigHelpers)
 
 # Every library target of libemb, by its exported name (emb_<name> -> emb::<name>).
 set(EMB_EXPORTED_MODULES common mesh linalg fe beam io cms compare tribology integrators mbs_core
-    mbs_constraints mbs_forces mbs_analysis mbs_flexible mbs engine driveline results scene sweep)
+    mbs_constraints mbs_forces mbs_dae mbs_flexible mbs_analysis mbs_linear mbs_parts mbs engine
+    driveline results scene sweep)
 foreach(m IN LISTS EMB_EXPORTED_MODULES)
   set_target_properties(emb_${m} PROPERTIES EXPORT_NAME ${m})
   add_library(emb::${m} ALIAS emb_${m})
@@ -28,21 +29,23 @@ install(TARGETS emb_tool RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # Headers, with the paths the sources use ("libemb/mbs/core/system.h"). Left out: the
 # headers documented as internal to their module (implementation details that expose
-# SUNDIALS or yaml-cpp types, the body file's codec, or the scene loader's section readers),
-# and libemb/distributed (the optional PETSc/SLEPc backend: linked by the emb tool, not part
-# of the installed library, whose users need no MPI).
+# SUNDIALS or yaml-cpp types, the eigen-solver's back ends, the body file's codec, or the
+# scene loader's section readers), and libemb/distributed (the optional PETSc/SLEPc backend:
+# linked by the emb tool, not part of the installed library, whose users need no MPI).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/libemb/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/libemb
         FILES_MATCHING PATTERN "*.h"
         PATTERN "distributed" EXCLUDE
         PATTERN "analysis_internal.h" EXCLUDE
         PATTERN "klu_linear_solver.h" EXCLUDE
+        PATTERN "eigen_solver_backends.h" EXCLUDE
         PATTERN "beam_part_reader.h" EXCLUDE
         PATTERN "engine_parts.h" EXCLUDE
         PATTERN "driveline_parts.h" EXCLUDE
         PATTERN "output_point_reader.h" EXCLUDE
         PATTERN "stress_output_reader.h" EXCLUDE
         PATTERN "body_codec.h" EXCLUDE
-        PATTERN "scene_parts.h" EXCLUDE)
+        PATTERN "scene_parts.h" EXCLUDE
+        PATTERN "scene_keys_parts.h" EXCLUDE)
 
 set(EMB_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/emb)
 install(EXPORT embTargets NAMESPACE emb:: DESTINATION ${EMB_CMAKE_DIR})

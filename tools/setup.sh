@@ -19,9 +19,10 @@ packages=(
   libhdf5-dev libgmsh-dev gmsh libsundials-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libmuparser-dev libgtest-dev libgmock-dev libbenchmark-dev
   python3-h5py python3-matplotlib python3-numpy python3-scipy
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format   # clang-format: the format check (ctest -L format)
   calculix-ccx
   libslepc-real-dev petsc-dev libopenmpi-dev openmpi-bin   # optional: emb modes --backend slepc
+  mkdocs                                                   # the documentation site (docs/)
 )
 missing=()
 for p in "${packages[@]}"; do

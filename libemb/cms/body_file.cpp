@@ -174,7 +174,9 @@ void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const 
   AtomicFile out(path);
   const bool shapes = mesh != nullptr && body.mesh_shapes.size() > 0;
   {
-    H5File h5(out.temp_path(), H5File::Mode::kCreate);
+    std::optional<H5File> file;
+    out.Create([&](const std::string& temp) { file.emplace(temp, H5File::Mode::kCreate); });
+    H5File& h5 = *file;
     h5.SetAttribute("/", "format", std::string(kBodyFormat));
     h5.SetAttribute("/", "format_version", static_cast<long long>(kBodyFormatVersion));
     h5.SetAttribute("/", "emb_version", std::string(EMB_VERSION));
@@ -246,6 +248,7 @@ void WriteBodyFile(const std::string& path, const std::string& xdmf_path, const 
     h5.SetAttribute(c, "num_near_zero", static_cast<long long>(ct.num_near_zero));
     h5.SetAttribute(c, "orthonormality_error", ct.orthonormality_error);
     h5.SetAttribute(c, "k_diagonality_error", ct.k_diagonality_error);
+    h5.SetAttribute(c, "degenerate_coupling", ct.degenerate_coupling);
     h5.SetAttribute(c, "rigid_stiffness", ct.rigid_stiffness);
     h5.SetAttribute(c, "fmax_hz", ct.fmax_hz);
     h5.SetAttribute(c, "reference_run", static_cast<long long>(ct.reference_run));

@@ -37,7 +37,7 @@
 ///     Sbar (9, ne, ne) [3k+l = S̄_kl]  (see inertia_invariants.h for the definitions)
 ///   /certificate           @passed @mass_error @com_error @inertia_error
 ///                          @quadrature_mass_error @num_near_zero @orthonormality_error
-///                          @k_diagonality_error @rigid_stiffness @fmax_hz @reference_run
+///                          @k_diagonality_error @degenerate_coupling @rigid_stiffness @fmax_hz @reference_run
 ///                          @max_frequency_error @min_mac @reference_log @static_run
 ///                          @static_note @static_error @reduction_log
 ///     rigid_hz (6), pairs (k, 6): full_mode, full_hz, reduced_mode, reduced_hz,

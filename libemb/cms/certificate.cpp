@@ -94,6 +94,7 @@ ReductionCertificate CertifyReduction(const Mesh& mesh, const SystemMatrices& sy
   // 3. Orthonormality.
   cert.orthonormality_error = modes.orthonormality_error;
   cert.k_diagonality_error = modes.k_diagonality_error;
+  cert.degenerate_coupling = modes.degenerate_coupling;
   cert.rigid_stiffness = modes.rigid_stiffness;
   cert.orthonormality_limit = CertificateLimits::Orthonormality(modes.mass_condition);
   if (!(cert.orthonormality_error <= cert.orthonormality_limit &&

@@ -80,6 +80,7 @@ struct ReductionCertificate {
   int num_near_zero{0};
   // 3.
   double orthonormality_error{0.0}, k_diagonality_error{0.0}, rigid_stiffness{0.0};
+  double degenerate_coupling{0.0};  ///< OrthonormalModes::degenerate_coupling (reported)
   double orthonormality_limit{CertificateLimits::kOrthonormality};  ///< as scaled
   // 4.
   bool reference_run{false};

@@ -1,54 +1,86 @@
 #include "libemb/common/signal_cleanup.h"
 
+#include <pthread.h>
 #include <unistd.h>
 
-#include <atomic>
-#include <cstring>
+#include <map>
 
 namespace emb {
 namespace {
 
-// One slot: state 0 free, 1 being written, 2 holds a path. Lock-free atomics only, so that a
-// signal handler can read the table at any moment.
-struct Slot {
-  std::atomic<int> state{0};
-  char path[4096];
+struct Registry {
+  std::mutex mutex;
+  std::map<int, std::string> files;  // id -> path
+  int next_id{0};
 };
-static_assert(std::atomic<int>::is_always_lock_free);
-Slot g_slots[kMaxCleanupFiles];
+
+// Never destroyed: a termination may run while static destructors do.
+Registry& TheRegistry() {
+  static Registry* registry = [] {
+    auto* r = new Registry;
+    // Neither lock may be held by another thread at a fork: the child would inherit it
+    // held for good. The order (libraries, then the registry) is the termination's.
+    pthread_atfork(
+        [] {
+          SignalSwappingLibraryMutex().lock();
+          TheRegistry().mutex.lock();
+        },
+        [] {
+          TheRegistry().mutex.unlock();
+          SignalSwappingLibraryMutex().unlock();
+        },
+        [] {
+          TheRegistry().files.clear();  // the parent's files are not the child's to remove
+          TheRegistry().mutex.unlock();
+          SignalSwappingLibraryMutex().unlock();
+        });
+    return r;
+  }();
+  return *registry;
+}
 
 }  // namespace
 
+std::mutex& SignalSwappingLibraryMutex() {
+  // The registry first: its fork handlers cover this lock too.
+  static std::mutex* mutex = (TheRegistry(), new std::mutex);
+  return *mutex;
+}
+
+std::unique_lock<std::mutex> LockCleanupRegistry() {
+  return std::unique_lock<std::mutex>(TheRegistry().mutex);
+}
+
 CleanupOnSignal::CleanupOnSignal(const std::string& path) {
-  if (path.size() >= sizeof(Slot::path)) return;
-  for (int i = 0; i < kMaxCleanupFiles; ++i) {
-    int expected = 0;
-    if (g_slots[i].state.compare_exchange_strong(expected, 1)) {
-      std::memcpy(g_slots[i].path, path.c_str(), path.size() + 1);
-      g_slots[i].state.store(2);
-      slot_ = i;
-      return;
-    }
-  }
+  Registry& r = TheRegistry();
+  const std::lock_guard<std::mutex> lock(r.mutex);
+  id_ = r.next_id++;
+  r.files.emplace(id_, path);
 }
 
 CleanupOnSignal& CleanupOnSignal::operator=(CleanupOnSignal&& o) noexcept {
   if (this != &o) {
     Release();
-    slot_ = o.slot_;
-    o.slot_ = -1;
+    id_ = std::exchange(o.id_, -1);
   }
   return *this;
 }
 
 void CleanupOnSignal::Release() {
-  if (slot_ >= 0) g_slots[slot_].state.store(0);
-  slot_ = -1;
+  if (id_ < 0) return;
+  const std::unique_lock<std::mutex> lock = LockCleanupRegistry();
+  ReleaseLocked();
 }
 
-void RemoveCleanupFilesNow() {
-  for (Slot& s : g_slots)
-    if (s.state.load() == 2) ::unlink(s.path);
+void CleanupOnSignal::ReleaseLocked() {
+  if (id_ >= 0) TheRegistry().files.erase(id_);
+  id_ = -1;
+}
+
+void RemoveCleanupFilesForever() {
+  Registry& r = TheRegistry();
+  r.mutex.lock();  // never unlocked: the process is ending
+  for (const auto& entry : r.files) ::unlink(entry.second.c_str());
 }
 
 }  // namespace emb

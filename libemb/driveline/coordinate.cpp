@@ -1,5 +1,6 @@
 #include "libemb/driveline/coordinate.h"
 
+#include <array>
 #include <cmath>
 
 #include "libemb/common/error.h"
@@ -99,10 +100,11 @@ CoordinateValue EvalCoordinate(const mbs::ForceContext& ctx,
   return out;
 }
 
-Eigen::MatrixXd CoordinateHessian(const std::vector<CoordinateTerm>& terms,
+mbs::SlotMatrix CoordinateHessian(const std::vector<CoordinateTerm>& terms,
                                   const CoordinateValue& value) {
   const int K = static_cast<int>(terms.size());
-  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(12 * K, 12 * K);
+  EMB_CHECK(2 * K <= mbs::kMaxForceSlots);
+  mbs::SlotMatrix H = mbs::SlotMatrix::Zero(12 * K, 12 * K);
   for (int k = 0; k < K; ++k)
     H.block<12, 12>(12 * k, 12 * k) =
         terms[static_cast<std::size_t>(k)].coeff *
@@ -122,14 +124,16 @@ void AddCoordinateForce(const mbs::ForceContext& ctx, const CoordinateValue& val
 void AddCoordinateForceJacobian(const std::vector<CoordinateTerm>& terms,
                                 const CoordinateValue& value, double force, double dforce_dx,
                                 double dforce_dv, mbs::ForceJacobianSink* sink) {
-  std::vector<const mbs::MarkerKinematics*> slots;
-  for (const auto& m : value.markers) slots.push_back(&m);
-  mbs::LocalForceJacobian jac(slots);
-  const Eigen::MatrixXd H = CoordinateHessian(terms, value);
-  const Eigen::RowVectorXd vH = value.velocity.transpose() * H;
-  jac.stiffness =
-      -value.gradient.transpose() * (dforce_dx * value.gradient + dforce_dv * vH) - force * H;
-  jac.damping = -dforce_dv * value.gradient.transpose() * value.gradient;
+  std::array<const mbs::MarkerKinematics*, mbs::kMaxForceSlots> slots{};
+  const int num_slots = static_cast<int>(value.markers.size());
+  EMB_CHECK(num_slots <= mbs::kMaxForceSlots);
+  for (int s = 0; s < num_slots; ++s) slots[s] = &value.markers[s];
+  mbs::LocalForceJacobian jac(slots.data(), num_slots);
+  const mbs::SlotMatrix H = CoordinateHessian(terms, value);
+  const mbs::SlotRows<1> vH = value.velocity.transpose() * H;
+  const mbs::SlotRows<1> g = value.gradient;
+  jac.stiffness = -g.transpose() * (dforce_dx * g + dforce_dv * vH) - force * H;
+  jac.damping = -dforce_dv * g.transpose() * g;
   for (int s = 0; s < jac.num_slots(); ++s)
     jac.SetSlotForce(s, -force * value.gradient.segment<6>(6 * s).transpose());
   jac.ScatterTo(sink);

@@ -21,6 +21,7 @@
 
 #include "libemb/mbs/core/force_element.h"
 #include "libemb/mbs/core/joint.h"
+#include "libemb/mbs/forces/force_jacobian.h"
 
 namespace emb::mbs {
 class System;
@@ -63,7 +64,7 @@ CoordinateValue EvalCoordinate(const mbs::ForceContext& ctx,
                                const std::vector<CoordinateTerm>& terms, int first_slot);
 
 /// d^2x/dX^2 (12 K x 12 K) at `value`'s markers.
-Eigen::MatrixXd CoordinateHessian(const std::vector<CoordinateTerm>& terms,
+mbs::SlotMatrix CoordinateHessian(const std::vector<CoordinateTerm>& terms,
                                   const CoordinateValue& value);
 
 /// Number of angle terms (workspace slots needed).

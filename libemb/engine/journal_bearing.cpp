@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/forces/force_jacobian.h"
@@ -78,13 +79,22 @@ JournalBearing::JournalBearing(std::string name, int marker_i, int marker_j,
                    << ", got L/D = " << p.length / (2.0 * p.radius));
 }
 
+std::string JournalBearing::TouchMessage(const Eigen::Vector2d& e, double t) const {
+  std::ostringstream o;
+  o << "journal bearing '" << name() << "': the journal touches the shell at t = " << t
+    << " s: eccentricity ratio " << e.norm() / p_.clearance << " >= 1 (clearance "
+    << p_.clearance << " m)";
+  return o.str();
+}
+
 void JournalBearing::CheckEccentricity(const Eigen::Vector2d& e, double t) const {
-  const double eps = e.norm() / p_.clearance;
-  if (!(eps < 1.0))
-    EMB_THROW(NumericalError, "journal bearing '"
-                                  << name() << "': the journal touches the shell at t = " << t
-                                  << " s: eccentricity ratio " << eps
-                                  << " >= 1 (clearance " << p_.clearance << " m)");
+  if (!Inside(e)) throw NumericalError(TouchMessage(e, t));
+}
+
+bool JournalBearing::Inside(const ForceContext& ctx, const RelativeMotion& rel) const {
+  if (Inside(rel.x.head<2>())) return true;
+  ctx.Fail(TouchMessage(rel.x.head<2>(), ctx.t));
+  return false;
 }
 
 Eigen::Vector2d JournalBearing::FilmForce(const Eigen::Vector2d& e, const Eigen::Vector2d& u,
@@ -138,14 +148,18 @@ void JournalBearing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::Vect
   const MarkerPair markers(ctx, i_, j_);
   const MarkerKinematics& I = markers.I;
   const MarkerKinematics& J = markers.J;
-  const FilmLoad load = CalcFilmLoad(CalcRelativeMotion(I, J), ctx.t);
+  const RelativeMotion rel = CalcRelativeMotion(I, J);
+  if (!Inside(ctx, rel)) return;  // reported through the context
+  const FilmLoad load = CalcFilmLoad(rel, ctx.t);
   const Eigen::Vector3d F_W = J.R_WM * Eigen::Vector3d(load.force.x(), load.force.y(), 0.0);
   const Eigen::Vector3d T_W = J.R_WM.col(2) * load.torque;
   AddWrenchPair(ctx.system->layout(), I, J, F_W, T_W, f);
 }
 
 bool JournalBearing::DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* out) const {
-  const FilmLoad load = CalcFilmLoad(CalcRelativeMotion(MarkerPair(ctx, i_, j_)), ctx.t);
+  const RelativeMotion rel = CalcRelativeMotion(MarkerPair(ctx, i_, j_));
+  if (!Inside(ctx, rel)) return false;
+  const FilmLoad load = CalcFilmLoad(rel, ctx.t);
   *out << load.force.x(), load.force.y(), 0.0, 0.0, 0.0, load.torque;
   return true;
 }
@@ -153,7 +167,7 @@ bool JournalBearing::DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6
 void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
   using Eigen::Matrix2d;
   using Eigen::Matrix3d;
-  using Eigen::MatrixXd;
+  using MatrixXd = SlotMatrix;  // fixed capacity: no allocation
   using Eigen::Vector2d;
   using Eigen::Vector3d;
   const MarkerPair markers(ctx, i_, j_);
@@ -162,7 +176,7 @@ void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSi
   const RelativeMotion rel = CalcRelativeMotion(markers);
   const Vector2d e = rel.x.head<2>(), e_dot = rel.x_dot.head<2>();
   const double w = rel.w.z();
-  CheckEccentricity(e, ctx.t);
+  if (!Inside(ctx, rel)) return;  // reported through the context
   const auto [dI, dJ] = DifferentiateMarkerPair(markers);
   const Matrix3d R_WJ = J.R_WM;
 
@@ -213,6 +227,7 @@ void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSi
 
 double JournalBearing::DoCalcDissipatedPower(const ForceContext& ctx) const {
   const RelativeMotion rel = CalcRelativeMotion(MarkerPair(ctx, i_, j_));
+  if (!Inside(ctx, rel)) return 0.0;
   const FilmLoad load = CalcFilmLoad(rel, ctx.t);
   return -(load.force.dot(rel.x_dot.head<2>()) + load.torque * rel.w.z());
 }

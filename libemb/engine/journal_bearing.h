@@ -44,8 +44,11 @@
 /// L / (2R) <= 1 (the short-bearing assumption; longer bearings are refused rather than
 /// silently over-predicted). When the journal reaches the shell (eps >= 1) the element
 /// throws NumericalError naming itself, eps and the time; a dynamic run then stops with
-/// that message (no saturation: a bearing that runs dry is outside the model).
+/// that message (no saturation: a bearing that runs dry is outside the model). Inside a run
+/// the element reports it through its context (ForceContext::Fail): the integrator then cuts
+/// the step, and a run that cannot get past it ends with the message in its status.
 #include <Eigen/Dense>
+#include <string>
 
 #include "libemb/mbs/core/force_element.h"
 #include "libemb/mbs/forces/relative_motion.h"
@@ -90,6 +93,11 @@ class JournalBearing final : public ForceElement {
   Eigen::Vector2d FilmForce(const Eigen::Vector2d& e, const Eigen::Vector2d& u,
                             Eigen::Matrix2d* dF_de, Eigen::Matrix2d* dF_du) const;
   void CheckEccentricity(const Eigen::Vector2d& e, double t) const;
+  /// Eccentricity ratio below 1.
+  bool Inside(const Eigen::Vector2d& e) const { return e.norm() < p_.clearance; }
+  /// The same at the context's state; if not, reported through the context (Fail).
+  bool Inside(const ForceContext& ctx, const RelativeMotion& rel) const;
+  std::string TouchMessage(const Eigen::Vector2d& e, double t) const;
 
   int i_, j_;
   JournalBearingParameters p_;

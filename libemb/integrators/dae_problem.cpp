@@ -20,21 +20,21 @@ bool DaeProblem::CalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>&
   }
 }
 
-void DaeProblem::CalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+bool DaeProblem::CalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                               const Eigen::Ref<const Eigen::VectorXd>& yp,
                               Eigen::Ref<Eigen::MatrixXd> jacobian) const {
   const int n = size();
   EMB_CHECK(has_jacobian());
   EMB_CHECK(y.size() == n && yp.size() == n && jacobian.rows() == n && jacobian.cols() == n);
   try {
-    DoCalcJacobian(t, cj, y, yp, jacobian);
+    return DoCalcJacobian(t, cj, y, yp, jacobian) && jacobian.allFinite();
   } catch (const NumericalError& e) {
     recoverable_failure_ = e.what();
-    jacobian.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return false;
   }
 }
 
-void DaeProblem::CalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+bool DaeProblem::CalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                                     const Eigen::Ref<const Eigen::VectorXd>& yp,
                                     SparseMatrixd* jacobian) const {
   const int n = size();
@@ -42,24 +42,30 @@ void DaeProblem::CalcSparseJacobian(double t, double cj, const Eigen::Ref<const 
   EMB_CHECK(y.size() == n && yp.size() == n);
   const Eigen::Index nnz_before = jacobian->nonZeros();
   const bool first = jacobian->rows() == 0;
+  bool ok = false;
   try {
-    DoCalcSparseJacobian(t, cj, y, yp, jacobian);
+    ok = DoCalcSparseJacobian(t, cj, y, yp, jacobian);
   } catch (const NumericalError& e) {
     if (first) throw;  // no structure to fill yet
     recoverable_failure_ = e.what();
-    std::fill(jacobian->valuePtr(), jacobian->valuePtr() + nnz_before,
-              std::numeric_limits<double>::quiet_NaN());
+    return false;
   }
   EMB_CHECK(jacobian->rows() == n && jacobian->cols() == n && jacobian->isCompressed());
   EMB_CHECK(first || jacobian->nonZeros() == nnz_before);  // the structure is fixed
+  if (first && !ok)
+    EMB_THROW(NumericalError, "the iteration matrix cannot be evaluated at the start"
+                                  << (recoverable_failure_.empty() ? std::string()
+                                                                   : ": " + recoverable_failure_));
+  const Eigen::Map<const Eigen::VectorXd> values(jacobian->valuePtr(), jacobian->nonZeros());
+  return ok && values.allFinite();
 }
 
-void DaeProblem::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+bool DaeProblem::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                                       const Eigen::Ref<const Eigen::VectorXd>& yp,
                                       SparseMatrixd* jacobian) const {
   const int n = size();
   Eigen::MatrixXd dense(n, n);
-  DoCalcJacobian(t, cj, y, yp, dense);
+  const bool ok = DoCalcJacobian(t, cj, y, yp, dense);
   if (jacobian->rows() != n || jacobian->nonZeros() != static_cast<Eigen::Index>(n) * n) {
     // Full structure: no entry may appear later that was missing now.
     jacobian->resize(n, n);
@@ -70,6 +76,7 @@ void DaeProblem::DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<cons
   }
   // Column-major dense and a full compressed-column structure share the value order.
   std::copy(dense.data(), dense.data() + dense.size(), jacobian->valuePtr());
+  return ok;
 }
 
 bool DaeProblem::CalcRoots(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
@@ -91,10 +98,11 @@ Eigen::VectorXd DaeProblem::DifferentialMask() const {
   return mask;
 }
 
-void DaeProblem::DoCalcJacobian(double, double, const Eigen::Ref<const Eigen::VectorXd>&,
+bool DaeProblem::DoCalcJacobian(double, double, const Eigen::Ref<const Eigen::VectorXd>&,
                                 const Eigen::Ref<const Eigen::VectorXd>&,
                                 Eigen::Ref<Eigen::MatrixXd>) const {
   EMB_CHECK(false && "DoCalcJacobian called but DoHasJacobian() is false");
+  return false;
 }
 
 std::string DaeProblem::DoComponentName(int i) const { return "y[" + std::to_string(i) + "]"; }

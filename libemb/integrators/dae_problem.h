@@ -42,10 +42,11 @@ class DaeProblem {
   /// quotients.
   bool has_jacobian() const { return DoHasJacobian(); }
 
-  /// J = dF/dy + cj dF/dy' at (t, y, y'), n x n, overwritten. A NumericalError of the
-  /// implementation is kept as for CalcResidual() and leaves J all NaN (which the
-  /// integrators treat as a recoverable failure). @pre has_jacobian().
-  void CalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+  /// J = dF/dy + cj dF/dy' at (t, y, y'), n x n, overwritten. Returns false for a
+  /// recoverable failure, as CalcResidual() does: the implementation said so, a NumericalError
+  /// (kept as last_recoverable_failure()) or a non-finite entry; J is then unspecified and
+  /// the integrators retry with a smaller step. @pre has_jacobian().
+  bool CalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                     const Eigen::Ref<const Eigen::VectorXd>& yp,
                     Eigen::Ref<Eigen::MatrixXd> jacobian) const;
 
@@ -61,9 +62,10 @@ class DaeProblem {
   /// J = dF/dy + cj dF/dy' as a compressed-column matrix. On the first call (J empty,
   /// 0 x 0) the problem builds the structure: every entry that can be non-zero at any
   /// state. Later calls with the same matrix keep that structure and refill only the values
-  /// (see MatrixAssembler). Same values as CalcJacobian(); a NumericalError after the first
-  /// call leaves the values NaN as there. @pre has_jacobian().
-  void CalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+  /// (see MatrixAssembler). Same values and the same failure channel as CalcJacobian() (a
+  /// failure in the first call, which builds the structure, throws: there is nothing to
+  /// retry with). @pre has_jacobian().
+  bool CalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                           const Eigen::Ref<const Eigen::VectorXd>& yp, SparseMatrixd* jacobian) const;
 
   /// 1 for a differential component, 0 for an algebraic one (size n).
@@ -91,17 +93,23 @@ class DaeProblem {
   void ClearRecoverableFailure() const { recoverable_failure_.clear(); }
 
  protected:
+  /// For implementations that learn of a failure without an exception (a force element's
+  /// domain failure reported through its context): kept as last_recoverable_failure().
+  void ReportRecoverableFailure(const std::string& message) const {
+    recoverable_failure_ = message;
+  }
   virtual int DoSize() const = 0;
   virtual bool DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
                               const Eigen::Ref<const Eigen::VectorXd>& yp,
                               Eigen::Ref<Eigen::VectorXd> r) const = 0;
   virtual bool DoHasJacobian() const { return false; }
-  virtual void DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+  /// False: a recoverable failure (see CalcJacobian()).
+  virtual bool DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                               const Eigen::Ref<const Eigen::VectorXd>& yp,
                               Eigen::Ref<Eigen::MatrixXd> jacobian) const;
   virtual bool DoHasSparseJacobian() const { return false; }
   /// Default: the dense DoCalcJacobian() stored with a full structure (for small problems).
-  virtual void DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+  virtual bool DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                                     const Eigen::Ref<const Eigen::VectorXd>& yp,
                                     SparseMatrixd* jacobian) const;
   virtual Eigen::VectorXd DoDifferentialMask() const = 0;

@@ -230,10 +230,10 @@ IntegratorReport GeneralizedAlphaSolver::Failure(IntegratorStatus status, double
   IntegratorReport r;
   r.status = status;
   r.t = t_;
-  r.last_step = h;
+  r.last_step = h_prev_;
+  r.step_tried = h;
   r.message = message;
-  if (!problem_.last_recoverable_failure().empty())
-    r.message += "; last failed evaluation: " + problem_.last_recoverable_failure();
+  r.failed_evaluation = problem_.last_recoverable_failure();
   if (last_error_.size() && last_error_.cwiseAbs().maxCoeff() > 0.0) {
     Eigen::Index i = 0;
     r.worst_weighted_error = last_error_.cwiseAbs().maxCoeff(&i);

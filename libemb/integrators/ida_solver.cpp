@@ -102,8 +102,8 @@ struct IdaSolver::Impl {
     try {
       const auto n = static_cast<Eigen::Index>(SUNDenseMatrix_Rows(jac));
       Eigen::Map<Eigen::MatrixXd> j(SUNDenseMatrix_Data(jac), n, n);  // column-major, lda = n
-      self->problem->CalcJacobian(t, cj, View(y), View(yp), j);
-      return j.allFinite() ? 0 : 1;
+      // Recoverable: IDA retries with a smaller step.
+      return self->problem->CalcJacobian(t, cj, View(y), View(yp), j) ? 0 : 1;
     } catch (...) {
       self->pending = std::current_exception();
       return -1;
@@ -118,15 +118,14 @@ struct IdaSolver::Impl {
     auto* self = static_cast<Impl*>(user);
     try {
       SparseMatrixd& A = self->sparse;
-      self->problem->CalcSparseJacobian(t, cj, View(y), View(yp), &A);
+      if (!self->problem->CalcSparseJacobian(t, cj, View(y), View(yp), &A)) return 1;
       EMB_CHECK(static_cast<sunindextype>(A.nonZeros()) <= SUNSparseMatrix_NNZ(jac));
       std::copy(A.outerIndexPtr(), A.outerIndexPtr() + A.cols() + 1,
                 SUNSparseMatrix_IndexPointers(jac));
       std::copy(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(),
                 SUNSparseMatrix_IndexValues(jac));
       std::copy(A.valuePtr(), A.valuePtr() + A.nonZeros(), SUNSparseMatrix_Data(jac));
-      const Eigen::Map<const Eigen::VectorXd> values(A.valuePtr(), A.nonZeros());
-      return values.allFinite() ? 0 : 1;
+      return 0;
     } catch (...) {
       self->pending = std::current_exception();
       return -1;
@@ -353,10 +352,12 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
   }
   if (linear_solver_ == LinearSolverKind::kKlu && !KluSolverMessage(m.ls).empty())
     report.message += " (" + KluSolverMessage(m.ls) + ")";
-  if (!problem_.last_recoverable_failure().empty())
-    report.message += "; last failed evaluation: " + problem_.last_recoverable_failure();
+  report.failed_evaluation = problem_.last_recoverable_failure();
   realtype h = 0.0;
   if (IDAGetLastStep(m.mem, &h) >= 0) report.last_step = h;
+  // The step of the failed attempt (what IDA's message quotes as "h = ...").
+  realtype h_tried = 0.0;
+  if (IDAGetCurrentStep(m.mem, &h_tried) >= 0) report.step_tried = h_tried;
   realtype tcur = t_reached;
   if (IDAGetCurrentTime(m.mem, &tcur) >= 0) report.t = tcur;
   // The component with the largest weighted local error estimate (what the error test saw).

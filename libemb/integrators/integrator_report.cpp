@@ -26,6 +26,28 @@ const char* Name(IntegratorStatus status) {
   return "unknown";
 }
 
+const char* Describe(IntegratorStatus status) {
+  switch (status) {
+    case IntegratorStatus::kSuccess:
+      return "the integration reached the requested time";
+    case IntegratorStatus::kTooMuchWork:
+      return "the step limit between two output times was reached";
+    case IntegratorStatus::kTooMuchAccuracy:
+      return "the tolerances are too tight for double precision";
+    case IntegratorStatus::kErrorTestFailure:
+      return "the local error test failed repeatedly or at the smallest step";
+    case IntegratorStatus::kConvergenceFailure:
+      return "the Newton iteration of the corrector failed repeatedly or at the smallest step";
+    case IntegratorStatus::kLinearSolverFailure:
+      return "the iteration matrix could not be factorised (singular or not finite)";
+    case IntegratorStatus::kResidualFailure:
+      return "the model could not be evaluated at the states the integrator tried";
+    case IntegratorStatus::kOtherFailure:
+      return "the integrator stopped";
+  }
+  return "unknown";
+}
+
 std::vector<StepLimiter> TopStepLimiters(const std::vector<long>& steps_per_component,
                                          int max_count) {
   std::vector<StepLimiter> all;

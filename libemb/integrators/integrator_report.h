@@ -23,17 +23,26 @@ enum class IntegratorStatus {
 
 /// Short name of a status ("success", "error-test-failure", ...).
 const char* Name(IntegratorStatus status);
+/// What a status means, in a sentence fragment ("the Newton iteration did not converge at
+/// any step size"), for messages: emb's own words, the same for every integrator.
+const char* Describe(IntegratorStatus status);
 
 /// Where and why an integrator stopped.
 struct IntegratorReport {
   IntegratorStatus status{IntegratorStatus::kSuccess};
   double t{0.0};          ///< time reached [s]
-  double last_step{0.0};  ///< last step size attempted/taken [s]
+  double last_step{0.0};  ///< last step size taken (accepted) [s]
+  /// On a failure: the step size of the attempt that failed [s] (0 if unknown). Read from
+  /// the integrator's state (IDAGetCurrentStep), not from its message.
+  double step_tried{0.0};
+  /// On a failure: the message of the last evaluation of the problem that failed at a trial
+  /// state (DaeProblem::last_recoverable_failure: a model outside its domain), empty if none.
+  std::string failed_evaluation;
   /// Index of the largest weighted local error among the error-tested components.
   int worst_component{-1};
   std::string worst_component_name;
   double worst_weighted_error{0.0};  ///< |e_i| * w_i (1 = at the tolerance)
-  std::string message;               ///< the integrator's own message
+  std::string message;  ///< the integrator's own message, verbatim (for logs; not parsed)
   /// An event: AdvanceTo stopped early, at t, where root function i changed sign
   /// (DaeProblem::CalcRoots). root_directions[i] is +1 (g_i increasing), -1 (decreasing)
   /// or 0 (no change) for every root function. The status is kSuccess; y() and y'() are the

@@ -27,9 +27,8 @@ bool IterationMatrix::Update(double t, double c, const Eigen::VectorXd& y,
   ++stats_.evaluations;
   c_ = c;
   if (kind_ == LinearSolverKind::kDense) {
-    problem_.CalcJacobian(t, c, y, yp, dense_);
-    if (!dense_.allFinite()) {
-      message_ = "the iteration matrix has non-finite entries";
+    if (!problem_.CalcJacobian(t, c, y, yp, dense_)) {
+      message_ = "the iteration matrix could not be evaluated (see the last failed evaluation)";
       ++stats_.singular;
       return false;
     }
@@ -46,15 +45,14 @@ bool IterationMatrix::Update(double t, double c, const Eigen::VectorXd& y,
     return true;
   }
   const bool first = sparse_.rows() == 0;
-  problem_.CalcSparseJacobian(t, c, y, yp, &sparse_);
+  const bool evaluated = problem_.CalcSparseJacobian(t, c, y, yp, &sparse_);
   if (first) {
     col_start_.assign(sparse_.outerIndexPtr(), sparse_.outerIndexPtr() + sparse_.cols() + 1);
     row_index_.assign(sparse_.innerIndexPtr(), sparse_.innerIndexPtr() + sparse_.nonZeros());
     stats_.nonzeros = static_cast<long>(sparse_.nonZeros());
   }
-  const Eigen::Map<const Eigen::VectorXd> values(sparse_.valuePtr(), sparse_.nonZeros());
-  if (!values.allFinite()) {
-    message_ = "the iteration matrix has non-finite entries";
+  if (!evaluated) {
+    message_ = "the iteration matrix could not be evaluated (see the last failed evaluation)";
     ++stats_.singular;
     return false;
   }

@@ -64,9 +64,12 @@ class MatrixAssembler {
 
   /// target(row0 + i, col0 + j) += block(i, j), column by column. The expression is
   /// evaluated once (coefficient access to a product expression would re-evaluate it).
+  /// A block (a Block, Map or Ref of a matrix) is read in place; an expression is evaluated
+  /// once first (on the stack when its size is fixed; pass a dynamic-size product evaluated
+  /// into storage of your own, or it is allocated).
   template <typename Derived>
   void AddBlock(int row0, int col0, const Eigen::MatrixBase<Derived>& block) {
-    const auto& b = block.eval();
+    const typename Eigen::internal::nested_eval<Derived, 1>::type b(block.derived());
     for (Eigen::Index j = 0; j < b.cols(); ++j)
       for (Eigen::Index i = 0; i < b.rows(); ++i)
         Add(row0 + static_cast<int>(i), col0 + static_cast<int>(j), b(i, j));
@@ -76,6 +79,9 @@ class MatrixAssembler {
   /// duplicates summed) and fills its values. @throws InternalError if a refill pass made a
   /// different number of contributions than the recording pass.
   void Finish();
+  /// Ends a pass without using it (an evaluation that failed half-way): the target's values
+  /// are unspecified; the next Begin starts afresh (a recording pass records again).
+  void Abandon() { mode_ = Mode::kIdle; }
 
   /// Contributions of the last recording pass (>= the number of structural non-zeros).
   std::size_t num_contributions() const { return rows_.size(); }

@@ -53,11 +53,13 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
 }
 
 AtomicFile::~AtomicFile() {
-  if (!committed_) std::remove(temp_.c_str());
+  if (!committed_) cleanup_.Release([&] { std::remove(temp_.c_str()); });
 }
 
 void AtomicFile::WriteText(const std::string& text) {
-  const int fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const int fd = Create([](const std::string& temp) {
+    return ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  });
   EMB_THROW_IF(fd < 0, "output '" << path_ << "': cannot create '" << temp_
                                   << "': " << std::strerror(errno));
   const char* p = text.data();
@@ -88,11 +90,13 @@ void AtomicFile::Commit() {
   ::close(fd);
   EMB_THROW_IF(!synced, "output '" << path_ << "': writing to the disk failed: "
                                    << std::strerror(sync_err));
-  if (std::rename(temp_.c_str(), path_.c_str()) != 0)
-    EMB_THROW(InputError, "output '" << path_ << "': could not move the finished file into place: "
-                                     << std::strerror(errno));
+  cleanup_.Release([&] {
+    if (std::rename(temp_.c_str(), path_.c_str()) != 0)
+      EMB_THROW(InputError, "output '" << path_
+                                       << "': could not move the finished file into place: "
+                                       << std::strerror(errno));
+  });
   committed_ = true;
-  cleanup_.Release();
 }
 
 void WriteTextFileAtomic(const std::string& path, const std::string& text) {

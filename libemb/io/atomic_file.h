@@ -3,12 +3,15 @@
 /// Atomic file output: write to a temporary file beside the target, then rename it over the
 /// target only when everything was written and closed without error. A failure leaves the
 /// previous file (if any) untouched and removes the temporary; so does an interruption by
-/// SIGINT or SIGTERM when the tool's handler runs RemoveCleanupFilesNow() (signal_cleanup.h).
+/// SIGINT or SIGTERM, whose termination runs RemoveCleanupFilesForever() (signal_cleanup.h):
+/// the temporary is made inside Create() and renamed inside Commit(), under the lock of that
+/// registry, so a termination never runs between the making of a file and its registration.
 /// A SIGKILL can leave the hidden temporary ".<name>.tmp.<pid>" behind, never a partial file
 /// under the target's name; the next AtomicFile for the same target removes such
 /// temporaries of processes that no longer run.
 
 #include <string>
+#include <utility>
 
 #include "libemb/common/signal_cleanup.h"
 
@@ -24,8 +27,15 @@ class AtomicFile {
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
-  /// Where to write now.
+  /// Where to write now; the file must be made by Create().
   const std::string& temp_path() const { return temp_; }
+  /// Runs make(temp_path()), which creates the temporary file (e.g. an HDF5 file opened for
+  /// creation), under the cleanup registry's lock; returns its result. Later writes go
+  /// through what make opened.
+  template <class Make>
+  decltype(auto) Create(Make&& make) {
+    return cleanup_.Create([&]() -> decltype(auto) { return std::forward<Make>(make)(temp_); });
+  }
   /// The final name.
   const std::string& path() const { return path_; }
   /// Writes `text` to the temporary file; every write and the close are checked.

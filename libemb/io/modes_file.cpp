@@ -15,7 +15,9 @@ void WriteModesFile(const std::string& path, const std::string& xdmf_path, const
                     const Provenance& provenance) {
   AtomicFile out(path);
   {
-    H5File h5(out.temp_path(), H5File::Mode::kCreate);
+    std::optional<H5File> file;
+    out.Create([&](const std::string& temp) { file.emplace(temp, H5File::Mode::kCreate); });
+    H5File& h5 = *file;
     h5.SetAttribute("/", "format", std::string(kModesFormat));
     h5.SetAttribute("/", "format_version", static_cast<long long>(kModesFormatVersion));
     h5.SetAttribute("/", "emb_version", std::string(EMB_VERSION));

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "libemb/common/error.h"
+#include "libemb/common/signal_cleanup.h"
 
 namespace emb {
 namespace fs = std::filesystem;
@@ -75,11 +76,17 @@ void CheckWritableOutput(const std::string& path, const std::string& what) {
   static std::atomic<int> counter{0};
   const fs::path probe = dir / (".emb-probe-" + std::to_string(::getpid()) + "-" +
                                 std::to_string(counter++));
-  const int fd = ::open(probe.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0600);
-  EMB_THROW_IF(fd < 0, what << " '" << path << "': cannot create files in directory '"
-                            << dir.string() << "': " << std::strerror(errno));
-  ::close(fd);
-  ::unlink(probe.c_str());
+  // Made and removed in one step under the cleanup lock (signal_cleanup.h): a termination
+  // never leaves it behind.
+  const int err = WithCleanupLock([&] {
+    const int fd = ::open(probe.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0600);
+    if (fd < 0) return errno;
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return 0;
+  });
+  EMB_THROW_IF(err != 0, what << " '" << path << "': cannot create files in directory '"
+                              << dir.string() << "': " << std::strerror(err));
 }
 
 void CheckDistinctFiles(const std::vector<std::string>& outputs,

@@ -1,11 +1,16 @@
 #pragma once
 /// @file
 /// Generalized symmetric eigenproblem K φ = λ M φ (K symmetric positive semi-definite,
-/// M symmetric positive definite) for the modes nearest a shift σ, by Spectra's implicitly
-/// restarted Lanczos in shift-invert mode on our own symmetric factorisation of K − σM.
+/// M symmetric positive definite) for the modes nearest a shift σ, by shift-invert (block
+/// Krylov–Schur, or Spectra's implicitly restarted Lanczos) on our own symmetric factorisation
+/// of K − σM, or a dense solve for small problems.
 ///
 /// λ = ω² [rad²/s²] when K is in N/m and M in kg. For the *lowest* modes of a free-free
 /// (singular K) problem σ must be negative: a zero shift factors a singular matrix.
+///
+/// Back ends (EigenMethod), one file each: eigen_solver_dense.cpp, eigen_solver_lanczos.cpp,
+/// eigen_solver_block.cpp (eigen_solver_backends.h); eigen_solver.cpp chooses one, then runs
+/// the checks below on its pairs.
 ///
 /// Every eigenpair is checked, not hoped for: after a Rayleigh–Ritz clean-up on the
 /// converged subspace each pair's normwise backward error
@@ -32,12 +37,12 @@ enum class EigenMethod {
 };
 
 struct EigenSolverOptions {
-  int num_modes{10};             ///< how many eigenpairs nearest the shift
-  double shift{-1.0};            ///< σ [rad²/s²]; < 0 for the lowest modes of a PSD pencil
+  int num_modes{10};   ///< how many eigenpairs nearest the shift
+  double shift{-1.0};  ///< σ [rad²/s²]; < 0 for the lowest modes of a PSD pencil
   /// Krylov basis size (ncv); 0 = automatic: Lanczos max(2·num_modes + 1, num_modes + 20),
   /// block max(2·num_modes, num_modes + spare_blocks·block)
   int subspace{0};
-  int block_size{0};             ///< right-hand sides per solve of the block method; 0 = automatic
+  int block_size{0};  ///< right-hand sides per solve of the block method; 0 = automatic
   /// Blocks of room beyond the wanted pairs in the automatic block basis (see subspace). More
   /// means fewer restarts and solves for n × block_size × 16 bytes more each: 6 instead of 4
   /// took 176 instead of 208 solves and 1 restart instead of 4 for 30 modes of the 138k-DOF
@@ -46,16 +51,18 @@ struct EigenSolverOptions {
   int spare_blocks{4};
   /// Relative tolerance on the Ritz residuals (‖r‖ ≤ tol·|θ|). `emb modes` uses 1e-9: its
   /// backward errors after Rayleigh–Ritz stay 1000× below residual_tolerance (6.7e-12 for 30
-  /// crankshaft modes) for ~10 % fewer solves. A reduction keeps 1e-10: at 1e-9 the tube's
-  /// certificate found its basis K-diagonal only to 8e-10 against a limit of 7.2e-10.
+  /// crankshaft modes) for ~10 % fewer solves. A reduction keeps 1e-10 (at 1e-9 the tube's
+  /// certificate once found its basis K-diagonal only to 8e-10 against 7.2e-10; that measure
+  /// then counted the canonical rotation of a near-equal pair, OrthonormalModes::
+  /// degenerate_coupling, which it no longer does: 1e-9 is not re-measured).
   double tolerance{1e-10};
-  int max_restarts{1000};        ///< Spectra's restart limit
+  int max_restarts{1000};           ///< Spectra's restart limit
   double residual_tolerance{1e-8};  ///< largest accepted backward error η_i
   EigenMethod method{EigenMethod::kAuto};
   /// kCholmodSupernodal requires K − σM positive definite (σ below the spectrum);
   /// an interior shift needs an indefinite factorisation (kCholmodLDLT), chosen when σ > 0.
   CholeskyBackend backend{CholeskyBackend::kCholmodSupernodal};
-  bool sturm_check{false};       ///< verify no mode is missed below the highest one found
+  bool sturm_check{false};  ///< verify no mode is missed below the highest one found
   /// Eigenpairs of this pencil already found at this shift (e.g. by a smaller solve that
   /// turned out too few): M-orthonormal vectors and their eigenvalues, the lowest ones. The
   /// block method locks them from the start and builds its Krylov space only for the rest;
@@ -95,20 +102,20 @@ struct EigenResult {
   double orthonormality_error{0.0};  ///< ‖ΦᵀMΦ − I‖_max
   int num_requested{0};
   int num_converged{0};
-  int iterations{0};                 ///< Krylov restarts
-  int num_solves{0};                 ///< applications of (K − σM)⁻¹ (vectors)
-  int block_size{1};                 ///< right-hand sides per solve (1: single-vector Lanczos)
-  int block_steps{0};                ///< block solves (= num_solves for single vectors)
-  int num_null{0};                   ///< null vectors of K found and deflated first (block)
-  bool null_space_given{false};      ///< ... taken from options.null_space, not searched for
-  int num_known{0};                  ///< known pairs locked from the start (block, options)
-  int sturm_count{-1};               ///< eigenvalues below σ_c by inertia, -1 if not checked
+  int iterations{0};             ///< Krylov restarts
+  int num_solves{0};             ///< applications of (K − σM)⁻¹ (vectors)
+  int block_size{1};             ///< right-hand sides per solve (1: single-vector Lanczos)
+  int block_steps{0};            ///< block solves (= num_solves for single vectors)
+  int num_null{0};               ///< null vectors of K found and deflated first (block)
+  bool null_space_given{false};  ///< ... taken from options.null_space, not searched for
+  int num_known{0};              ///< known pairs locked from the start (block, options)
+  int sturm_count{-1};           ///< eigenvalues below σ_c by inertia, -1 if not checked
   double shift{0.0};
-  std::string method;                ///< "block", "lanczos" or "dense"
-  FactorInfo factor;                 ///< the factorisation of K − σM
-  PhaseTimes times;                  ///< "factorisation", "eigen-solve", "checks"
-  PhaseTimes block_times;            ///< inside the block eigen-solve: "null space", "solves",
-                                     ///< "mass products", "orthogonalisation and Rayleigh-Ritz"
+  std::string method;      ///< "block", "lanczos" or "dense"
+  FactorInfo factor;       ///< the factorisation of K − σM
+  PhaseTimes times;        ///< "factorisation", "eigen-solve", "checks"
+  PhaseTimes block_times;  ///< inside the block eigen-solve: "null space", "solves",
+                           ///< "mass products", "orthogonalisation and Rayleigh-Ritz"
   bool ok() const { return status == EigenStatus::kSuccess; }
 };
 

@@ -3,9 +3,11 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <mutex>
 #include <numeric>
 
 #include "libemb/common/error.h"
+#include "libemb/common/signal_cleanup.h"
 
 namespace emb {
 
@@ -54,8 +56,13 @@ std::vector<int> NestedDissectionOrdering(std::vector<int> offset, std::vector<i
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_NUMBERING] = 0;
-  const int status =
-      METIS_NodeND(&nvtxs, offset.data(), adj.data(), nullptr, options, perm.data(), iperm.data());
+  // METIS swaps the process's SIGTERM handler while it runs (signal_cleanup.h): one call at
+  // a time, never beside a termination.
+  const int status = [&] {
+    const std::lock_guard<std::mutex> lock(SignalSwappingLibraryMutex());
+    return METIS_NodeND(&nvtxs, offset.data(), adj.data(), nullptr, options, perm.data(),
+                        iperm.data());
+  }();
   if (status != METIS_OK)
     EMB_THROW(NumericalError, "METIS_NodeND failed with status " << status << " on a graph of "
                                                                  << nvtxs << " vertices");

@@ -42,11 +42,11 @@ SavedMeshFile::SavedMeshFile(std::string target) : target_(std::move(target)) {
   temp_ = (dir / ("." + p.stem().string() + ".tmp" + p.extension().string())).string();
   cleanup_ = CleanupOnSignal(temp_);
   Count(target_, &nodes_, &volume_elements_);
-  GmshCall("write", target_, [&] { gmsh::write(temp_); });
+  cleanup_.Create([&] { GmshCall("write", target_, [&] { gmsh::write(temp_); }); });
 }
 
 SavedMeshFile::~SavedMeshFile() {
-  if (!committed_) std::remove(temp_.c_str());
+  if (!committed_) cleanup_.Release([&] { std::remove(temp_.c_str()); });
 }
 
 void SavedMeshFile::Commit() {
@@ -70,10 +70,12 @@ void SavedMeshFile::Commit() {
                           << " nodes and " << volume_elements << " volume elements instead of "
                           << nodes_ << " and " << volume_elements_
                           << " (disk full or I/O error?)");
-  if (std::rename(temp_.c_str(), target_.c_str()) != 0)
-    EMB_THROW(InputError, "output '" << target_ << "': could not move the written mesh into place");
+  cleanup_.Release([&] {
+    if (std::rename(temp_.c_str(), target_.c_str()) != 0)
+      EMB_THROW(InputError,
+                "output '" << target_ << "': could not move the written mesh into place");
+  });
   committed_ = true;
-  cleanup_.Release();
 }
 
 }  // namespace emb

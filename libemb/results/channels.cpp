@@ -7,7 +7,7 @@
 #include "libemb/mbs/analysis/joint_coordinates.h"
 #include "libemb/mbs/core/rotation.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 int ElementIndex(const mbs::System& system, const std::string& name) {
@@ -91,17 +91,19 @@ ChannelSet::ChannelSet(const mbs::System& system, const std::vector<std::string>
                                        "journal bearings)");
     if (it == valid.end() && c.find('.') == c.rfind('.') &&
         ElementIndex(system, c.substr(0, c.find('.'))) >= 0) {  // <joint>.<coordinate>
-      const mbs::ConstraintElement& e = system.elements()[ElementIndex(system, c.substr(0, c.find('.')))];
+      const mbs::ConstraintElement& e =
+          system.elements()[ElementIndex(system, c.substr(0, c.find('.')))];
       std::string has;
       for (const auto& v : valid)
         if (v.rfind(e.name + ".", 0) == 0 && v.find('.', e.name.size() + 1) == std::string::npos)
           has += (has.empty() ? "" : ", ") + v;
-      EMB_THROW(InputError, "output channel '" << c << "': '" << e.name << "' has "
-                                               << (has.empty() ? std::string("no coordinate "
-                                                                 "channels (only revolute, "
-                                                                 "cylindrical and translational "
-                                                                 "joints have them)")
-                                                               : has));
+      EMB_THROW(InputError, "output channel '"
+                                << c << "': '" << e.name << "' has "
+                                << (has.empty() ? std::string("no coordinate "
+                                                              "channels (only revolute, "
+                                                              "cylindrical and translational "
+                                                              "joints have them)")
+                                                : has));
     }
     EMB_THROW_IF(it == valid.end(), "output channel '" << c << "' is unknown"
                                                        << DidYouMean(c, valid)
@@ -199,4 +201,4 @@ double ChannelSet::Value(const mbs::Sample& s, int k) const {
   return 0.0;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -20,7 +20,7 @@
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/core/system.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 /// Every channel name `system` has.
 std::vector<std::string> ValidChannelNames(const mbs::System& system);
@@ -60,4 +60,4 @@ class ChannelSet {
   std::vector<Channel> channels_;
 };
 
-}  // namespace emb::scene
+}  // namespace emb::results

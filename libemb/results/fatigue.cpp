@@ -6,7 +6,7 @@
 
 #include "libemb/common/error.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 void SnCurve::Validate(const std::string& what) const {
   EMB_THROW_IF(!(std::isfinite(ultimate_strength) && ultimate_strength > 0.0),
@@ -14,20 +14,20 @@ void SnCurve::Validate(const std::string& what) const {
   EMB_THROW_IF(!(std::isfinite(endurance_limit) && endurance_limit >= 0.0),
                what << ": endurance_limit: expected a value >= 0 Pa, got " << endurance_limit);
   if (!points.empty()) {
-    EMB_THROW_IF(points.size() < 2, what << ": sn_points: expected at least 2 points [N, S], got "
-                                         << points.size());
+    EMB_THROW_IF(points.size() < 2,
+                 what << ": sn_points: expected at least 2 points [N, S], got " << points.size());
     for (std::size_t k = 0; k < points.size(); ++k) {
       const SnPoint& p = points[k];
       EMB_THROW_IF(!(std::isfinite(p.cycles) && p.cycles > 0.0 && std::isfinite(p.amplitude) &&
                      p.amplitude > 0.0),
                    what << ": sn_points[" << k << "]: expected cycles > 0 and an amplitude > 0 Pa, "
                         << "got [" << p.cycles << ", " << p.amplitude << "]");
-      EMB_THROW_IF(k > 0 && !(p.cycles > points[k - 1].cycles &&
-                              p.amplitude < points[k - 1].amplitude),
-                   what << ": sn_points[" << k << "]: expected more cycles and a smaller amplitude "
-                        << "than the point before (an S–N curve falls), got [" << p.cycles << ", "
-                        << p.amplitude << "] after [" << points[k - 1].cycles << ", "
-                        << points[k - 1].amplitude << "]");
+      EMB_THROW_IF(
+          k > 0 && !(p.cycles > points[k - 1].cycles && p.amplitude < points[k - 1].amplitude),
+          what << ": sn_points[" << k << "]: expected more cycles and a smaller amplitude "
+               << "than the point before (an S–N curve falls), got [" << p.cycles << ", "
+               << p.amplitude << "] after [" << points[k - 1].cycles << ", "
+               << points[k - 1].amplitude << "]");
     }
     return;
   }
@@ -41,7 +41,8 @@ void SnCurve::Validate(const std::string& what) const {
 double SnCurve::CyclesToFailure(double amplitude) const {
   constexpr double kInfinite = std::numeric_limits<double>::infinity();
   if (!(amplitude > 0.0) || amplitude < endurance_limit) return kInfinite;
-  if (points.empty()) return 0.5 * std::pow(amplitude / fatigue_strength_coefficient, 1.0 / exponent);
+  if (points.empty())
+    return 0.5 * std::pow(amplitude / fatigue_strength_coefficient, 1.0 / exponent);
   // Below the knee: no damage, unless an endurance limit below it extends the last segment.
   if (amplitude < points.back().amplitude && !(endurance_limit > 0.0)) return kInfinite;
   // The segment [k, k+1] holding the amplitude (the first or last one extrapolated).
@@ -74,4 +75,4 @@ FatigueDamage CalcMinerDamage(const std::vector<RainflowCycle>& cycles, const Sn
   return d;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

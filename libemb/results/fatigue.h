@@ -24,7 +24,7 @@
 
 #include "libemb/results/rainflow.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 /// One point of a tabulated S–N curve.
 struct SnPoint {
@@ -51,12 +51,12 @@ double GoodmanAmplitude(double amplitude, double mean, double ultimate);
 
 /// Miner damage of counted cycles.
 struct FatigueDamage {
-  double damage{0.0};             ///< D = sum n_i / N_i
-  double cycles{0.0};             ///< sum n_i
-  double max_range{0.0};          ///< largest range counted [Pa]
-  double max_equivalent{0.0};     ///< largest Goodman amplitude sigma_ar [Pa]
+  double damage{0.0};          ///< D = sum n_i / N_i
+  double cycles{0.0};          ///< sum n_i
+  double max_range{0.0};       ///< largest range counted [Pa]
+  double max_equivalent{0.0};  ///< largest Goodman amplitude sigma_ar [Pa]
 };
 
 FatigueDamage CalcMinerDamage(const std::vector<RainflowCycle>& cycles, const SnCurve& curve);
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -7,7 +7,7 @@
 
 #include "libemb/common/error.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 constexpr double kCycleDeg = 720.0;
@@ -32,8 +32,7 @@ double Interpolate(const std::vector<double>& x, const std::vector<double>& y, d
 }  // namespace
 
 OrderSpectrum CalcOrderSpectrum(const std::vector<double>& angle_deg,
-                                const std::vector<double>& values,
-                                const OrderSpectrumSettings& s) {
+                                const std::vector<double>& values, const OrderSpectrumSettings& s) {
   EMB_THROW_IF(angle_deg.size() != values.size(),
                "order spectrum: expected as many angles as values, got "
                    << angle_deg.size() << " and " << values.size());
@@ -43,12 +42,13 @@ OrderSpectrum CalcOrderSpectrum(const std::vector<double>& angle_deg,
     EMB_THROW_IF(!(angle_deg[i] > angle_deg[i - 1]),
                  "order spectrum: expected a strictly increasing crank angle, got "
                      << angle_deg[i - 1] << " then " << angle_deg[i] << " deg at sample " << i);
-  EMB_THROW_IF(s.samples_per_cycle < 8, "order spectrum: expected at least 8 samples per cycle, got "
-                                            << s.samples_per_cycle);
+  EMB_THROW_IF(
+      s.samples_per_cycle < 8,
+      "order spectrum: expected at least 8 samples per cycle, got " << s.samples_per_cycle);
   const double twice = 2.0 * s.max_order;
-  EMB_THROW_IF(!(s.max_order >= 0.0) || std::abs(twice - std::round(twice)) > 1e-12,
-               "order spectrum: expected a maximum order that is a multiple of 1/2, got "
-                   << s.max_order);
+  EMB_THROW_IF(
+      !(s.max_order >= 0.0) || std::abs(twice - std::round(twice)) > 1e-12,
+      "order spectrum: expected a maximum order that is a multiple of 1/2, got " << s.max_order);
   EMB_THROW_IF(s.max_order >= s.samples_per_cycle / 4.0,
                "order spectrum: expected a maximum order below the resampling Nyquist order "
                    << s.samples_per_cycle / 4.0 << ", got " << s.max_order);
@@ -58,9 +58,10 @@ OrderSpectrum CalcOrderSpectrum(const std::vector<double>& angle_deg,
   // the window then starts that little before the first sample (held constant there).
   const double slack = 0.5 * span / static_cast<double>(angle_deg.size() - 1);
   const int available = static_cast<int>(std::floor((span + slack) / kCycleDeg));
-  EMB_THROW_IF(available < 1, "order spectrum: expected at least one whole 720-degree cycle, the "
-                              "data cover "
-                                  << span << " deg");
+  EMB_THROW_IF(available < 1,
+               "order spectrum: expected at least one whole 720-degree cycle, the "
+               "data cover "
+                   << span << " deg");
   EMB_THROW_IF(s.cycles < 0 || s.cycles > available,
                "order spectrum: asked for " << s.cycles << " cycles, the data cover " << available
                                             << " whole cycles (" << span << " deg)");
@@ -95,4 +96,4 @@ OrderSpectrum CalcOrderSpectrum(const std::vector<double>& angle_deg,
   return out;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace emb::scene {
+namespace emb::results {
 
 struct OrderSpectrumSettings {
   int cycles{0};               ///< K; 0 = every whole cycle the data covers (the last ones)
@@ -46,4 +46,4 @@ OrderSpectrum CalcOrderSpectrum(const std::vector<double>& angle_deg,
                                 const std::vector<double>& values,
                                 const OrderSpectrumSettings& settings);
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -3,15 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
-namespace emb::scene {
+namespace emb::results {
 
 std::vector<double> Reversals(const std::vector<double>& history) {
   std::vector<double> r;
   for (double x : history) {
     if (!r.empty() && x == r.back()) continue;
     // Drop the middle point of a monotonic run: r.back() between its neighbours.
-    if (r.size() >= 2 && (r.back() - r[r.size() - 2]) * (x - r.back()) > 0.0) r.back() = x;
-    else r.push_back(x);
+    if (r.size() >= 2 && (r.back() - r[r.size() - 2]) * (x - r.back()) > 0.0)
+      r.back() = x;
+    else
+      r.push_back(x);
   }
   return r;
 }
@@ -55,4 +57,4 @@ std::vector<RainflowCycle> CountRainflowPeriodic(const std::vector<double>& hist
   return cycles;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

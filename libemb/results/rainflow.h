@@ -16,7 +16,7 @@
 
 #include <vector>
 
-namespace emb::scene {
+namespace emb::results {
 
 /// One counted range.
 struct RainflowCycle {
@@ -34,4 +34,4 @@ std::vector<RainflowCycle> CountRainflow(const std::vector<double>& history);
 /// Rainflow cycles of one period of a periodically repeated `history` (file comment).
 std::vector<RainflowCycle> CountRainflowPeriodic(const std::vector<double>& history);
 
-}  // namespace emb::scene
+}  // namespace emb::results

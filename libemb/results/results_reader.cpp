@@ -11,7 +11,7 @@
 #include "libemb/io/hdf5_file.h"
 #include "libemb/mbs/core/state_layout.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 ResultsStatus ReadStatus(const H5File& h5, const std::string& path) {
@@ -43,10 +43,9 @@ ResultsStatus ReadStatus(const H5File& h5, const std::string& path) {
 
 // The time series a reader may use; a run killed between two appends leaves them one row
 // apart, so a reader uses the rows they all have.
-constexpr const char* kSeries[] = {"/state/q",         "/state/v",         "/reactions/force",
-                                   "/reactions/torque", "/energy",          "/residuals",
-                                   "/forces/load",      "/sensors",         "/joints",
-                                   "/output_points"};
+constexpr const char* kSeries[] = {
+    "/state/q",   "/state/v",     "/reactions/force", "/reactions/torque", "/energy",
+    "/residuals", "/forces/load", "/sensors",         "/joints",           "/output_points"};
 // Where a body's values sit in a row of /state/q and /state/v: the layout record the writer
 // stores (version 3), or for version 2 files mbs::StateLayout's, which they were written with.
 struct StateColumns {
@@ -85,8 +84,7 @@ struct ResultsFile {
       if (h5.Exists(s)) {
         const auto shape = h5.Shape(s);
         EMB_THROW_IF(shape.size() != 2, "'" << path << "': " << s << ": expected [samples, "
-                                                 << "columns], got " << shape.size()
-                                                 << " dimensions");
+                                            << "columns], got " << shape.size() << " dimensions");
         n = std::min<std::size_t>(n, shape[0]);
       }
     time.resize(n);
@@ -118,8 +116,8 @@ struct ResultsFile {
                  "'" << path << "': the state layout record (values_per_body, *_column) puts a "
                      << "block outside a body's values; expected blocks within them (damaged "
                         "file?)");
-    for (auto [dataset, stride] : {std::pair{"/state/q", state.q_stride},
-                                   std::pair{"/state/v", state.v_stride}})
+    for (auto [dataset, stride] :
+         {std::pair{"/state/q", state.q_stride}, std::pair{"/state/v", state.v_stride}})
       if (h5.Exists(dataset)) {
         const auto shape = h5.Shape(dataset);  // two dimensions (checked above)
         EMB_THROW_IF(shape[1] != stride * bodies.size(),
@@ -196,7 +194,8 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
   // Probes (output points, chord sensors): "<probe>.<channel>" columns of /output_points.
   if (const auto it = std::find(f.probe_channels.begin(), f.probe_channels.end(), channel);
       it != f.probe_channels.end()) {
-    out.values = f.Column("/output_points", static_cast<std::size_t>(it - f.probe_channels.begin()));
+    out.values =
+        f.Column("/output_points", static_cast<std::size_t>(it - f.probe_channels.begin()));
     return out;
   }
   // <sensor>.dx .. .rz (the /sensors columns).
@@ -206,8 +205,8 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
     const std::vector<std::string> cols{"dx", "dy", "dz", "rx", "ry", "rz"};
     const std::size_t k =
         std::find(f.sensors.begin(), f.sensors.end(), channel.substr(0, last)) - f.sensors.begin();
-    out.values = f.Column("/sensors", 6 * k + FindName(cols, channel.substr(last + 1),
-                                                       "sensor component", channel));
+    out.values = f.Column(
+        "/sensors", 6 * k + FindName(cols, channel.substr(last + 1), "sensor component", channel));
     return out;
   }
   // <joint>.angle|angle_rate|travel|travel_rate (the /joints columns, version 4).
@@ -218,11 +217,11 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
         std::find(f.joints.begin(), f.joints.end(), channel.substr(0, last)) - f.joints.begin();
     out.values = f.Column("/joints", cols.size() * k + FindName(cols, channel.substr(last + 1),
                                                                 "joint coordinate", channel));
-    EMB_THROW_IF(std::any_of(out.values.begin(), out.values.end(),
-                             [](double v) { return std::isnan(v); }),
-                 "channel '" << channel << "': joint '" << channel.substr(0, last)
-                             << "' has no such coordinate (angle: revolute and cylindrical "
-                                "joints; travel: translational and cylindrical joints)");
+    EMB_THROW_IF(
+        std::any_of(out.values.begin(), out.values.end(), [](double v) { return std::isnan(v); }),
+        "channel '" << channel << "': joint '" << channel.substr(0, last)
+                    << "' has no such coordinate (angle: revolute and cylindrical "
+                       "joints; travel: translational and cylindrical joints)");
     return out;
   }
   EMB_THROW_IF(dot1 == std::string::npos || dot1 == 0,
@@ -251,11 +250,11 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
   if ((quantity == "F" || quantity == "T") && is_force_element) {  // /forces/load
     const std::size_t k = std::find(f.forces.begin(), f.forces.end(), owner) - f.forces.begin();
     out.values = f.Column("/forces/load", 6 * k + c + (quantity == "T" ? 3 : 0));
-    EMB_THROW_IF(std::any_of(out.values.begin(), out.values.end(),
-                             [](double v) { return std::isnan(v); }),
-                 "channel '" << channel << "': force element '" << owner
-                             << "' reports no load (F/T channels exist for bushings and journal "
-                                "bearings)");
+    EMB_THROW_IF(
+        std::any_of(out.values.begin(), out.values.end(), [](double v) { return std::isnan(v); }),
+        "channel '" << channel << "': force element '" << owner
+                    << "' reports no load (F/T channels exist for bushings and journal "
+                       "bearings)");
     return out;
   }
   if (quantity == "F" || quantity == "T") {
@@ -294,8 +293,8 @@ ResultsChannel ReadBodyRotationAngle(const std::string& path, const std::string&
       std::find(f.joints.begin(), f.joints.end(), body) != f.joints.end()) {
     // A revolute joint's own unwrapped angle (the /joints column), in degrees.
     ResultsChannel out = ReadResultsChannel(path, body + ".angle");
-    const double shift = out.values.empty() ? 0.0 : start_deg - out.values.front() * 180.0 /
-                                                                    std::numbers::pi;
+    const double shift =
+        out.values.empty() ? 0.0 : start_deg - out.values.front() * 180.0 / std::numbers::pi;
     for (double& x : out.values) x = x * 180.0 / std::numbers::pi + shift;
     return out;
   }
@@ -341,4 +340,4 @@ ResultsSteadyState ReadResultsSteadyState(const std::string& path) {
   return s;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace emb::scene {
+namespace emb::results {
 
 /// One channel of a results file: the time samples and the values.
 struct ResultsChannel {
@@ -20,7 +20,7 @@ struct ResultsChannel {
 
 /// How the run that wrote a results file ended (root attributes, results_writer.h).
 struct ResultsStatus {
-  std::string status;   ///< "success", "running" (never finished), "interrupted", "failed", ...
+  std::string status;  ///< "success", "running" (never finished), "interrupted", "failed", ...
   std::string message;
   double t_reached{std::numeric_limits<double>::quiet_NaN()};  ///< [s]
   std::string warning;  ///< a sentence for the user; empty for "success"
@@ -30,10 +30,10 @@ struct ResultsStatus {
 ResultsStatus ReadResultsStatus(const std::string& path);
 
 /// Channels: <body>.p|v|omega.{x,y,z} (omega in W, as in the CSV), <port>.F|T.{x,y,z}
-/// (reactions in J's axes), <force element>.F|T.{x,y,z} and .F.norm (|F|), <sensor>.dx|dy|dz|rx|ry|rz,
-/// <joint>.angle|angle_rate|travel|travel_rate (rad, rad/s, m, m/s; the angle unwrapped),
-/// <probe>.<channel> (output points u|v|a.{x,y,z,n}, power; chord sensors dx|dy|dz|norm|s),
-/// energy.{kinetic,gravity,elastic,total,dissipated}.
+/// (reactions in J's axes), <force element>.F|T.{x,y,z} and .F.norm (|F|),
+/// <sensor>.dx|dy|dz|rx|ry|rz, <joint>.angle|angle_rate|travel|travel_rate (rad, rad/s, m, m/s; the
+/// angle unwrapped), <probe>.<channel> (output points u|v|a.{x,y,z,n}, power; chord sensors
+/// dx|dy|dz|norm|s), energy.{kinetic,gravity,elastic,total,dissipated}.
 /// @throws InputError for a file that is not emb-mbs-results or an unknown channel (with
 /// a did-you-mean).
 ResultsChannel ReadResultsChannel(const std::string& path, const std::string& channel);
@@ -58,4 +58,4 @@ struct ResultsSteadyState {
 /// @throws InputError for a file that is not emb-mbs-results.
 ResultsSteadyState ReadResultsSteadyState(const std::string& path);
 
-}  // namespace emb::scene
+}  // namespace emb::results

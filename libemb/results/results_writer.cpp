@@ -6,7 +6,7 @@
 #include "libemb/mbs/analysis/joint_coordinates.h"
 #include "libemb/mbs/core/rotation.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 std::vector<std::string> ElementTypes(const mbs::System& s) {
@@ -164,8 +164,8 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
   for (int e : joint_elements_) joints.push_back(system.elements()[e].name);
   file_.WriteStrings("/model/joints", joints);
   if (!joints.empty()) {
-    joints_ = file_.AddSeries("/joints", mbs::kJointCoordinateColumns *
-                                             static_cast<int>(joints.size()));
+    joints_ =
+        file_.AddSeries("/joints", mbs::kJointCoordinateColumns * static_cast<int>(joints.size()));
     file_.SetAttribute("/joints", "columns",
                        std::string("per /model/joints: angle [rad] (unwrapped), angle rate "
                                    "[rad/s], travel [m], travel rate [m/s] (NaN: the joint has "
@@ -263,9 +263,9 @@ void ResultsWriter::WriteEvents(const mbs::EventLog& log) {
   std::vector<double> rows;
   std::vector<std::string> names;
   for (const mbs::ContactRecord& c : log.contacts) {
-    rows.insert(rows.end(), {static_cast<double>(c.element_index), static_cast<double>(c.side),
-                             c.t_onset, c.impact_velocity, c.peak_force, c.t_separation,
-                             c.rebound_velocity});
+    rows.insert(rows.end(),
+                {static_cast<double>(c.element_index), static_cast<double>(c.side), c.t_onset,
+                 c.impact_velocity, c.peak_force, c.t_separation, c.rebound_velocity});
     names.push_back(c.element);
   }
   file_.WriteDoubles("/events/contacts", rows, {log.contacts.size(), 7});
@@ -336,4 +336,4 @@ void CsvWriter::Write(const mbs::Sample& s) {
   EMB_THROW_IF(!out_, "CSV file '" << path_ << "': write failed (disk full?)");
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

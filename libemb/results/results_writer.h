@@ -78,7 +78,7 @@
 #include "libemb/results/channels.h"
 #include "libemb/results/steady_state.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 /// Limits on what one run writes, checked before it starts (`emb run --force` lifts them): the
 /// output times are built up front and every sample is appended and flushed (about a
@@ -139,4 +139,4 @@ class CsvWriter {
   ChannelSet channels_;
 };
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -6,7 +6,7 @@
 
 #include "libemb/common/error.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 void CheckSteadyStateSettings(const SteadyStateSettings& s, double output_step,
                               const std::string& where) {
@@ -18,9 +18,9 @@ void CheckSteadyStateSettings(const SteadyStateSettings& s, double output_step,
                      << " s: expected a whole number (>= 4) of output steps of " << output_step
                      << " s, got " << n);
   EMB_THROW_IF(s.channels.empty(), where << ": steady_state channels: expected at least one");
-  EMB_THROW_IF(!(s.tolerance > 0.0) || !(s.tolerance < 1.0),
-               where << ": steady_state tolerance: expected a value in (0, 1), got "
-                     << s.tolerance);
+  EMB_THROW_IF(
+      !(s.tolerance > 0.0) || !(s.tolerance < 1.0),
+      where << ": steady_state tolerance: expected a value in (0, 1), got " << s.tolerance);
   EMB_THROW_IF(s.min_cycles < 2 || s.max_cycles < s.min_cycles || s.max_cycles > 100000,
                where << ": steady_state: expected 2 <= min_cycles <= max_cycles <= 100000, got "
                      << s.min_cycles << " and " << s.max_cycles);
@@ -64,8 +64,8 @@ bool SteadyStateMonitor::Add(const mbs::Sample& sample) {
         // its noise would never settle.
         constexpr double kNullLevel = 1e-12;
         const double n = static_cast<double>(std::max<std::size_t>(1, x.size()));
-        const double d = std::sqrt(norm / n) > kNullLevel ? std::sqrt(diff / norm)
-                                                          : std::sqrt(diff / n);
+        const double d =
+            std::sqrt(norm / n) > kNullLevel ? std::sqrt(diff / norm) : std::sqrt(diff / n);
         if (!(d <= worst)) {  // NaN wins: a non-finite channel never converges
           worst = d;
           report_.worst_channel = channels_.names()[static_cast<std::size_t>(c)];
@@ -83,4 +83,4 @@ bool SteadyStateMonitor::Add(const mbs::Sample& sample) {
   return report_.converged;
 }
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -17,7 +17,7 @@
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/results/channels.h"
 
-namespace emb::scene {
+namespace emb::results {
 
 struct SteadyStateSettings {
   double period{0.0};                 ///< P [s]; 0: off
@@ -30,19 +30,19 @@ struct SteadyStateSettings {
 
 struct SteadyStateReport {
   bool converged{false};
-  int cycles{0};                   ///< whole cycles completed
-  double change{0.0};              ///< max_c d_c of the last whole cycle (NaN before two)
-  std::string worst_channel;       ///< the channel of that maximum
+  int cycles{0};                            ///< whole cycles completed
+  double change{0.0};                       ///< max_c d_c of the last whole cycle (NaN before two)
+  std::string worst_channel;                ///< the channel of that maximum
   double cycle_start{0.0}, cycle_end{0.0};  ///< the last whole cycle [s]
-  std::vector<double> history;     ///< the change after each cycle from the second on
+  std::vector<double> history;              ///< the change after each cycle from the second on
 };
 
 class SteadyStateMonitor {
  public:
   /// @throws InputError: period <= 0, not a whole number of output steps, no channels or
   /// an unknown one, tolerance <= 0, min_cycles < 2 or max_cycles < min_cycles.
-  SteadyStateMonitor(const mbs::System& system, const SteadyStateSettings& settings,
-                     double t_start, double output_step);
+  SteadyStateMonitor(const mbs::System& system, const SteadyStateSettings& settings, double t_start,
+                     double output_step);
   /// Takes the next sample (in output order). @returns true once at steady state (the
   /// sample just taken ends the steady cycle).
   bool Add(const mbs::Sample& sample);
@@ -65,4 +65,4 @@ class SteadyStateMonitor {
 void CheckSteadyStateSettings(const SteadyStateSettings& s, double output_step,
                               const std::string& where);
 
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -1,6 +1,7 @@
 #include "libemb/results/stress_field_file.h"
 
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -10,7 +11,7 @@
 #include "libemb/io/hdf5_file.h"
 #include "libemb/io/xdmf_writer.h"
 
-namespace emb {
+namespace emb::results {
 namespace {
 
 // The node attributes of step s of k of a field with m nodes: HyperSlabs of the (k, m[, 6])
@@ -24,8 +25,8 @@ void WriteAttributes(std::ostream& x, const std::string& h5, const std::string& 
     x << "     <Attribute Name=\"" << field << "\" AttributeType=\""
       << (scalar ? "Scalar" : "Tensor6") << "\" Center=\"Node\">\n"
       << "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << m << tail << "\">\n"
-      << "       <DataItem Dimensions=\"3 " << (scalar ? 2 : 3) << "\" Format=\"XML\">" << s
-      << " 0" << (scalar ? "" : " 0") << " 1 1" << (scalar ? "" : " 1") << " 1 " << m << tail
+      << "       <DataItem Dimensions=\"3 " << (scalar ? 2 : 3) << "\" Format=\"XML\">" << s << " 0"
+      << (scalar ? "" : " 0") << " 1 1" << (scalar ? "" : " 1") << " 1 " << m << tail
       << "</DataItem>\n       <DataItem Dimensions=\"" << k << " " << m << tail
       << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ":" << base << "/"
       << field << "</DataItem>\n      </DataItem>\n     </Attribute>\n";
@@ -36,8 +37,8 @@ void WriteAttributes(std::ostream& x, const std::string& h5, const std::string& 
 void WriteGrid(std::ostream& x, const std::string& name, const std::string& topology,
                const std::string& h5, const std::string& base, std::uint64_t s, std::uint64_t k,
                std::uint64_t m) {
-  x << "    <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n" << topology
-    << "     <Geometry GeometryType=\"XYZ\">\n      <DataItem Dimensions=\"" << m
+  x << "    <Grid Name=\"" << name << "\" GridType=\"Uniform\">\n"
+    << topology << "     <Geometry GeometryType=\"XYZ\">\n      <DataItem Dimensions=\"" << m
     << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ":" << base
     << "/coordinates</DataItem>\n     </Geometry>\n";
   WriteAttributes(x, h5, base, s, k, m);
@@ -79,8 +80,8 @@ void WriteField(H5File& out, std::ostream& x, const std::string& h5, const Nodal
     std::ostringstream t;
     t << "     <Topology TopologyType=\"" << XdmfTopologyName(b.type) << "\" NumberOfElements=\""
       << c << "\">\n      <DataItem Dimensions=\"" << c << " " << n
-      << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5 << ":" << base
-      << "/faces/" << type << "</DataItem>\n     </Topology>\n";
+      << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << h5 << ":" << base << "/faces/"
+      << type << "</DataItem>\n     </Topology>\n";
     topologies.push_back(t.str());
     names.push_back(type);
   }
@@ -118,10 +119,13 @@ void WriteStressFields(const std::string& h5_path, const std::string& xdmf_path,
   x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n";
   const std::string h5_name = std::filesystem::path(h5_path).filename().string();
   {
-    H5File h5(h5_out.temp_path(), H5File::Mode::kCreate);
+    std::optional<H5File> file;
+    h5_out.Create([&](const std::string& temp) { file.emplace(temp, H5File::Mode::kCreate); });
+    H5File& h5 = *file;
     h5.SetAttribute("/", "format", std::string("emb.stress_fields"));
-    h5.SetAttribute("/", "units", std::string("SI: m, s, Pa; stress in Voigt order xx, yy, zz, "
-                                              "xy, yz, zx, mesh axes"));
+    h5.SetAttribute("/", "units",
+                    std::string("SI: m, s, Pa; stress in Voigt order xx, yy, zz, "
+                                "xy, yz, zx, mesh axes"));
     for (const NodalStressField& f : fields)
       if (!f.times.empty()) WriteField(h5, x, h5_name, f);
     h5.Close();
@@ -133,4 +137,4 @@ void WriteStressFields(const std::string& h5_path, const std::string& xdmf_path,
   xdmf.Commit();
 }
 
-}  // namespace emb
+}  // namespace emb::results

@@ -2,7 +2,7 @@
 /// @file
 /// Stress fields at chosen times on sets of mesh nodes (stress groups, or the whole surface of
 /// a part), as HDF5 with an XDMF file beside it for ParaView (issue 17; written by `emb run`
-/// for a scene's stress_outputs, scene/stress_recorder.h).
+/// for a scene's stress_outputs, stress_recorder.h).
 ///
 /// HDF5 ("emb.stress_fields"), per field F (e.g. "/fillets/journal_fillet_2",
 /// "/fillets/surface") with m nodes and k times:
@@ -17,24 +17,23 @@
 /// by the "Point Gaussian" representation); node attributes von_mises, max_principal,
 /// signed_von_mises (Scalar) and stress (Tensor6).
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-
 #include "libemb/mesh/mesh.h"
 
-namespace emb {
+namespace emb::results {
 
 /// One field: where its nodes are and the stress at each of its times.
 struct NodalStressField {
-  std::string path;                   ///< HDF5 group, e.g. "/fillets/surface"
-  std::string title;                  ///< XDMF grid name, e.g. "fillets.surface"
-  std::vector<int> nodes;             ///< m mesh nodes
-  Eigen::MatrixXd coordinates;        ///< m × 3 [m]
-  std::vector<CellBlock> faces;       ///< surface faces, indices into `nodes` (may be empty)
-  std::vector<double> times;          ///< k times [s]
-  std::vector<Eigen::MatrixXd> stress;///< k matrices 6 × m [Pa]
+  std::string path;                     ///< HDF5 group, e.g. "/fillets/surface"
+  std::string title;                    ///< XDMF grid name, e.g. "fillets.surface"
+  std::vector<int> nodes;               ///< m mesh nodes
+  Eigen::MatrixXd coordinates;          ///< m × 3 [m]
+  std::vector<CellBlock> faces;         ///< surface faces, indices into `nodes` (may be empty)
+  std::vector<double> times;            ///< k times [s]
+  std::vector<Eigen::MatrixXd> stress;  ///< k matrices 6 × m [Pa]
 };
 
 /// Writes `fields` (those with at least one time) to `h5_path` and the XDMF to `xdmf_path`,
@@ -44,4 +43,4 @@ struct NodalStressField {
 void WriteStressFields(const std::string& h5_path, const std::string& xdmf_path,
                        const std::vector<NodalStressField>& fields);
 
-}  // namespace emb
+}  // namespace emb::results

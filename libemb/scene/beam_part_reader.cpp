@@ -14,13 +14,14 @@ bool IsBeamPart(const YAML::Node& body) {
 }
 
 BeamPartSpec ReadBeamPart(const YAML::Node& node, const std::string& file) {
-  MapReader r0(node, file, "body");
+  MapReader r0(node, file, "body", "bodies");
   BeamPartSpec s;
   s.name = r0.GetString("name");
   const std::string what = "body '" + s.name + "'";
-  MapReader r(node, file, what);
+  MapReader r(node, file, what, "bodies");
   r.GetString("name");
   r.GetString("model");
+  r.set_section("bodies: beam");
   s.geometry = r.GetString("geometry");
   if (std::filesystem::path(s.geometry).is_relative())
     s.geometry = (std::filesystem::path(file).parent_path() / s.geometry).string();
@@ -55,7 +56,7 @@ BeamPartSpec ReadBeamPart(const YAML::Node& node, const std::string& file) {
   g.stiffness_damping =
       r.GetDouble("stiffness_damping", g.stiffness_damping, NumberRange::NonNegative("s"));
   if (const YAML::Node m = r.Optional("material")) {
-    MapReader rm(m, file, what + " material");
+    MapReader rm(m, file, what + " material", "bodies: beam material");
     g.material.youngs_modulus = rm.GetDouble("E", g.material.youngs_modulus);
     g.material.poisson_ratio = rm.GetDouble("nu", g.material.poisson_ratio);
     g.material.density = rm.GetDouble("rho", g.material.density);
@@ -70,7 +71,7 @@ BeamPartSpec ReadBeamPart(const YAML::Node& node, const std::string& file) {
   for (const char* key : {"modes", "fmax_hz", "dynamic_band_hz", "basis",
                           "quasi_static_relaxation", "geometric_stiffening",
                           "expect_mesh_hash", "modal_coordinates", "modal_velocities"})
-    r.Optional(key);
+    r.Ignore(key);
   if (r.Has("body_file")) {
     s.body_file = r.GetString("body_file");
     if (std::filesystem::path(s.body_file).is_relative())

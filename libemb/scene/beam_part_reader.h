@@ -27,7 +27,7 @@
 #include <string>
 
 #include "libemb/beam/beam_geometry.h"
-#include "libemb/mbs/flexible/beam_part.h"
+#include "libemb/mbs/parts/beam_part.h"
 
 namespace emb::scene {
 

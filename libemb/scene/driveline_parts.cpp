@@ -12,7 +12,7 @@ namespace {
 
 driveline::ContactLawParameters ReadContact(const YAML::Node& n, const std::string& file,
                                             const std::string& what) {
-  MapReader r(n, file, what + " contact");
+  MapReader r(n, file, what + " contact", "forces: lash contact");
   driveline::ContactLawParameters p;
   try {
     p.kind = driveline::ParseContactLawKind(r.GetString("law", "hunt-crossley"));
@@ -41,7 +41,7 @@ driveline::ContactLawParameters ReadContact(const YAML::Node& n, const std::stri
 
 driveline::SqueezeFilmParameters ReadSqueezeFilm(const YAML::Node& n, const std::string& file,
                                                  const std::string& what) {
-  MapReader r(n, file, what + " squeeze_film");
+  MapReader r(n, file, what + " squeeze_film", "forces: lash squeeze_film");
   driveline::SqueezeFilmParameters p;
   p.viscosity = r.GetDouble("viscosity", NumberRange::Positive("Pa s"));
   p.width = r.GetDouble("width", NumberRange::Positive("m"));

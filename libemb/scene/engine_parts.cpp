@@ -27,7 +27,7 @@ namespace {
 // optional band_hz and junction_error.
 void ReadRubber(const YAML::Node& n, const std::string& file, const std::string& what,
                 engine::TorsionalDamperSpec* s) {
-  MapReader r(n, file, what);
+  MapReader r(n, file, what, "forces: torsional-damper rubber");
   const bool arms = r.Has("static_stiffness") || r.Has("arms");
   const bool fit = r.Has("dynamic_stiffness") || r.Has("loss_factor") || r.Has("frequency_hz");
   EMB_THROW_IF(arms && fit, Where(file, n)
@@ -48,7 +48,8 @@ void ReadRubber(const YAML::Node& n, const std::string& file, const std::string&
                                               << " arms: expected a non-empty list of "
                                                  "{stiffness, relaxation_time}");
     for (std::size_t j = 0; j < list.size(); ++j) {
-      MapReader a(list[j], file, what + " arm " + std::to_string(j + 1));
+      MapReader a(list[j], file, what + " arm " + std::to_string(j + 1),
+                  "forces: torsional-damper rubber arm");
       engine::MaxwellArm arm;
       arm.stiffness = a.GetDouble("stiffness", NumberRange::Positive("N m/rad"));
       arm.relaxation_time = a.GetDouble("relaxation_time", NumberRange::Positive("s"));
@@ -108,7 +109,7 @@ std::string ReadTorsionalDamper(MapReader& r, const std::string& name, mbs::Syst
 
 mbs::TimeFunction ReadCylinderPressure(const YAML::Node& n, const std::string& file,
                                        const std::string& what) {
-  MapReader r(n, file, what);
+  MapReader r(n, file, what, "function: cylinder_pressure");
   mbs::CylinderPressureSettings s;
   auto get = [&](const char* key, double& value) { value = r.GetDouble(key, value); };
   get("bore", s.bore);

@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/flexible/output_points.h"
+#include "libemb/mbs/parts/output_points.h"
 #include "libemb/scene/yaml_reader.h"
 
 namespace emb::scene {
@@ -51,7 +51,7 @@ Spec ReadSpec(MapReader& r, const std::string& name) {
   if (const YAML::Node a = r.Optional("axis")) {
     EMB_THROW_IF(s.direction != Spec::Direction::kRadial,
                  Where(r.file(), a) << ": " << r.what() << ": 'axis' is for direction: radial");
-    MapReader ra(a, r.file(), r.what() + " axis");
+    MapReader ra(a, r.file(), r.what() + " axis", "output_points: axis");
     s.axis_point = ra.GetVector3("point", Eigen::Vector3d::Zero());
     s.axis = Unit(ra.GetVector3("direction"), r.what() + " axis direction");
     ra.Finish();

@@ -18,8 +18,8 @@
 #include <string>
 
 #include "libemb/mbs/core/system.h"
-#include "libemb/mbs/flexible/beam_part.h"
-#include "libemb/mbs/flexible/flexible_body.h"
+#include "libemb/mbs/parts/beam_part.h"
+#include "libemb/mbs/parts/flexible_body.h"
 
 namespace emb::scene {
 

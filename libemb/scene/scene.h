@@ -7,13 +7,10 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/core/system.h"
-#include "libemb/mesh/mesh.h"
-#include "libemb/results/fatigue.h"
 #include "libemb/results/steady_state.h"
+#include "libemb/results/stress_output.h"
 
 namespace emb::scene {
 
@@ -26,27 +23,6 @@ struct OutputSpec {
   std::vector<std::string> channels;  ///< CSV channel names (see results_writer.h)
 };
 
-/// A stress output (scene section `stress_outputs`, stress_output_reader.h): a stress probe
-/// (mbs/flexible/stress_probe.h, added to the system under `name`) plus what `emb run` does
-/// with its groups' full stress fields: XDMF at chosen times and a fatigue summary.
-struct StressOutput {
-  std::string name;        ///< the probe's name
-  std::string body;        ///< the flexible part
-  std::string body_file;   ///< its body file (the mesh for the XDMF)
-  std::vector<double> field_times;  ///< [s] write the groups' stress fields at these times
-  /// [s] write the stress field on the whole part surface at these times (the body file
-  /// needs emb reduce --stress-surface)
-  std::vector<double> surface_field_times;
-  /// The body file's surface (surface_stress.h) when surface_field_times are asked: node
-  /// positions (s × 3) [m] and faces (indices into the surface nodes).
-  Eigen::MatrixXd surface_coordinates;
-  std::vector<CellBlock> surface_faces;
-  bool fatigue{false};
-  /// Stress measure counted per node: "max_principal" (sigma_1) or "signed_von_mises".
-  std::string measure{"max_principal"};
-  SnCurve sn;
-};
-
 struct Scene {
   std::string name;
   std::string description;
@@ -55,10 +31,12 @@ struct Scene {
   mbs::AnalysisSettings analysis;
   /// Run cycles until these channels repeat (dynamic analysis; off unless the scene has
   /// analysis.steady_state, which then sets analysis.t_end to max_cycles periods).
-  SteadyStateSettings steady_state;
+  results::SteadyStateSettings steady_state;
   OutputSpec output;
-  std::vector<StressOutput> stress_outputs;
-  std::vector<std::string> notes;  ///< what the loader decided, e.g. the modes a part kept
+  /// The `stress_outputs` section (stress_output_reader.h): what `emb run` records of the
+  /// parts' stresses (results/stress_recorder.h).
+  std::vector<results::StressOutput> stress_outputs;
+  std::vector<std::string> notes;   ///< what the loader decided, e.g. the modes a part kept
   std::vector<std::string> inputs;  ///< files it reads: the scene, body files, geometries
 };
 

@@ -13,8 +13,8 @@
 #include "libemb/common/number_check.h"
 #include "libemb/io/output_path.h"
 #include "libemb/mbs/core/rotation.h"
-#include "libemb/mbs/flexible/beam_part.h"
-#include "libemb/mbs/flexible/flexible_body.h"
+#include "libemb/mbs/parts/beam_part.h"
+#include "libemb/mbs/parts/flexible_body.h"
 #include "libemb/mbs/forces/applied_load.h"
 #include "libemb/mbs/forces/bushing.h"
 #include "libemb/mbs/forces/spring_damper.h"
@@ -107,6 +107,7 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   for (const char* key : {"mass", "inertia"})
     EMB_THROW_IF(rb.Has(key), what << ": '" << key << "' comes from the body file; remove it");
   const std::string name = rb.GetString("name");
+  rb.set_section("bodies: body file");
   const std::string path = ScenePath(file, rb.GetString("body_file"));
   inputs->push_back(path);
   mbs::FlexibleBodyOptions options = ReadFlexibleBodyOptions(rb, flexible);
@@ -139,7 +140,7 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   // The keys of `model: beam` (beam_part_reader.h) may stay in the entry: one-word switch.
   for (const char* key : {"geometry", "parameters", "webs", "web_width", "beam_nodes", "element_length",
                           "stiffness_damping", "material"})
-    rb.Optional(key);
+    rb.Ignore(key);
   // Initial modal coordinates eta(t0) and rates eta'(t0), one per kept mode (AsDouble refuses
   // non-finite numbers).
   std::vector<double> eta0, eta_dot0;
@@ -205,6 +206,7 @@ void ReadBodies(const YAML::Node& list, const std::string& file, const SceneOpti
                                                        << ": model 'cms' needs a body_file (from "
                                                        << "emb reduce)");
         if (from_file) return ReadBodyFilePart(rb, file, model == "cms", sys, parts, notes, inputs);
+        rb.set_section("bodies: rigid");
         mbs::RigidBody b;
         b.name = name;
         b.p_WB = rb.GetVector3("position", Vector3d::Zero());
@@ -330,8 +332,9 @@ void ReadCouplers(const YAML::Node& list, const std::string& file, mbs::System* 
                 });
 }
 
-void ReadSteadyState(const YAML::Node& node, const std::string& file, SteadyStateSettings* s) {
-  MapReader r(node, file, "analysis steady_state");
+void ReadSteadyState(const YAML::Node& node, const std::string& file,
+                     results::SteadyStateSettings* s) {
+  MapReader r(node, file, "analysis steady_state", "analysis: steady_state");
   s->period = r.GetDouble("period", NumberRange::Positive("s"));
   const YAML::Node ch = r.Require("channels");
   EMB_THROW_IF(!ch.IsSequence(), Where(file, ch) << ": steady_state channels: expected a list");
@@ -343,8 +346,8 @@ void ReadSteadyState(const YAML::Node& node, const std::string& file, SteadyStat
 }
 
 void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::AnalysisSettings* s,
-                  SteadyStateSettings* steady) {
-  MapReader r(node, file, "analysis");
+                  results::SteadyStateSettings* steady) {
+  MapReader r(node, file, "analysis", "analysis");
   s->type = mbs::ParseAnalysisType(r.GetString("type", "dynamic"));
   using R = NumberRange;
   s->t_start = r.GetDouble("t_start", s->t_start, R::Finite("s"));
@@ -398,7 +401,7 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
                                      "ends the run at steady state or after max_cycles)");
     EMB_THROW_IF(s->type != mbs::AnalysisType::kDynamic,
                  Where(file, node) << ": analysis steady_state: only for a dynamic analysis");
-    CheckSteadyStateSettings(*steady, s->output_step, Where(file, n));
+    results::CheckSteadyStateSettings(*steady, s->output_step, Where(file, n));
     s->t_end = s->t_start + steady->max_cycles * steady->period;
   }
   r.Finish();
@@ -436,7 +439,7 @@ Vector3d ReadPlanar(const YAML::Node& node, const std::string& file) {
                                               << node.Scalar() << "'");
     }
   }
-  MapReader r(node, file, "planar");
+  MapReader r(node, file, "planar", "planar");
   const Vector3d n = r.GetVector3("normal");
   r.Finish();
   EMB_THROW_IF(!(n.norm() > 0.0), Where(file, node) << ": planar normal: expected a non-zero "
@@ -446,7 +449,7 @@ Vector3d ReadPlanar(const YAML::Node& node, const std::string& file) {
 }
 
 void ReadOutput(const YAML::Node& node, const std::string& file, OutputSpec* o) {
-  MapReader r(node, file, "output");
+  MapReader r(node, file, "output", "output");
   o->file = r.GetString("file", "");
   o->csv = r.GetString("csv", "");
   if (const YAML::Node ch = r.Optional("channels")) {
@@ -466,7 +469,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
     EMB_THROW(InputError, source << ":" << e.mark.line + 1 << ": YAML syntax error: " << e.msg);
   }
   CheckUniqueKeys(root, source);
-  MapReader r(root, source, "scene");
+  MapReader r(root, source, "scene", "scene");
   Scene scene;
   scene.source = source;
   scene.name = r.GetString("name", "scene");
@@ -501,7 +504,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
   scene.system.Finalize();
   if (scene.steady_state.enabled()) {
     try {
-      ChannelSet(scene.system, scene.steady_state.channels);
+      results::ChannelSet(scene.system, scene.steady_state.channels);
     } catch (const InputError& e) {
       EMB_THROW(InputError, Where(source, analysis_node) << ": analysis steady_state: " << e.what());
     }

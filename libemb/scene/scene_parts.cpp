@@ -80,7 +80,7 @@ Matrix3d ReadInertia(const YAML::Node& n, const std::string& file, const std::st
 }
 
 Matrix3d ReadOrientation(const YAML::Node& n, const std::string& file, const std::string& what) {
-  MapReader r(n, file, what);
+  MapReader r(n, file, what, "orientation");
   int given = 0;
   Matrix3d R = Matrix3d::Identity();
   for (const char* key : {"euler313", "euler313_deg"}) {
@@ -145,7 +145,7 @@ Matrix3d ReadOrientation(const YAML::Node& n, const std::string& file, const std
 
 mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
                                const std::string& what) {
-  MapReader r(n, file, what);
+  MapReader r(n, file, what, "function");
   int given = 0;
   mbs::TimeFunction f;
   if (r.Has("constant"))
@@ -164,7 +164,7 @@ mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
   }
   if (r.Has("harmonic")) {
     ++given;
-    MapReader h(r.Require("harmonic"), file, what + " harmonic");
+    MapReader h(r.Require("harmonic"), file, what + " harmonic", "function: harmonic");
     const double amplitude = h.GetDouble("amplitude");
     const double hz = h.GetDouble("frequency_hz", NumberRange::NonNegative("Hz"));
     const double phase = h.GetDouble("phase", 0.0);
@@ -177,7 +177,7 @@ mbs::TimeFunction ReadFunction(const YAML::Node& n, const std::string& file,
   if (r.Has("table")) {
     ++given;
     const YAML::Node tn = r.Require("table");
-    MapReader t(tn, file, what + " table");
+    MapReader t(tn, file, what + " table", "function: table");
     auto x = t.GetDoubles("x");
     auto y = t.GetDoubles("y");
     const bool periodic = t.GetBool("periodic", false);
@@ -249,6 +249,7 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
                                                    const YAML::Node&) {
     const std::string& what = r.what();
     const std::string type = r.GetString("type");
+    r.set_section("forces: " + (type == "force" || type == "torque" ? "force, torque" : type));
     if (type == "spring-damper" || type == "rotational-spring-damper") {
       const int i = sys->FindMarker(r.GetString("i")), j = sys->FindMarker(r.GetString("j"));
       const bool linear = type == "spring-damper";
@@ -302,7 +303,7 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
       if (const YAML::Node an = r.Optional("argument")) {
         // {joint: name, unit: rad|deg, offset: 0}: the function of a joint's rotation angle;
         // {i: marker, j: marker, ...}: of the angle of x_I about z_J without a joint.
-        MapReader a(an, file, what + " argument");
+        MapReader a(an, file, what + " argument", "forces: load argument");
         const bool by_markers = !a.Has("joint") && a.Has("i");
         const std::string joint = by_markers ? "" : a.GetString("joint");
         if (by_markers) {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/flexible/stress_probe.h"
+#include "libemb/mbs/parts/stress_probe.h"
 #include "libemb/scene/yaml_reader.h"
 
 namespace emb::scene {
@@ -31,12 +31,12 @@ std::vector<int> Nodes(const YAML::Node& n, const std::string& file, const std::
   return out;
 }
 
-SnCurve ReadSn(MapReader& f, StressOutput* out) {
+results::SnCurve ReadSn(MapReader& f, results::StressOutput* out) {
   out->measure = f.GetString("measure", out->measure);
   EMB_THROW_IF(out->measure != "max_principal" && out->measure != "signed_von_mises",
                f.what() << " measure: expected max_principal or signed_von_mises, got '"
                         << out->measure << "'");
-  SnCurve sn;
+  results::SnCurve sn;
   if (const YAML::Node pts = f.Optional("sn_points")) {
     EMB_THROW_IF(f.Has("fatigue_strength_coefficient") || f.Has("exponent"),
                  f.what() << ": expected either sn_points or fatigue_strength_coefficient and "
@@ -62,15 +62,15 @@ SnCurve ReadSn(MapReader& f, StressOutput* out) {
 
 }  // namespace
 
-std::vector<StressOutput> ReadStressOutputs(
+std::vector<results::StressOutput> ReadStressOutputs(
     const YAML::Node& list, const std::string& file, mbs::System* sys,
     const std::map<std::string, mbs::FlexiblePart>& body_file_parts,
     const std::map<std::string, PartStresses>& stresses) {
-  std::vector<StressOutput> outputs;
+  std::vector<results::StressOutput> outputs;
   ReadNamedList(
       list, file, "stress_outputs", "stress output",
       [&](MapReader& r, const std::string& name, const YAML::Node&) {
-        StressOutput out;
+        results::StressOutput out;
         out.name = name;
         out.body = r.GetString("body");
         mbs::StressProbeSpec spec;
@@ -91,7 +91,7 @@ std::vector<StressOutput> ReadStressOutputs(
         }
         spec.surface = !out.surface_field_times.empty();
         if (const YAML::Node f = r.Optional("fatigue")) {
-          MapReader fr(f, file, r.what() + " fatigue");
+          MapReader fr(f, file, r.what() + " fatigue", "stress_outputs: fatigue");
           out.fatigue = true;
           out.sn = ReadSn(fr, &out);
           fr.Finish();

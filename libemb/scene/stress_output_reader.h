@@ -1,8 +1,8 @@
 #pragma once
 /// @file
 /// The scene section `stress_outputs` (internal to emb_scene): hot-spot stress histories of a
-/// flexible part's stress groups (mbs/flexible/stress_probe.h), the groups' stress fields at
-/// chosen times (XDMF, written by `emb run`) and a fatigue summary (results/fatigue.h).
+/// flexible part's stress groups (mbs/parts/stress_probe.h), the groups' stress fields at
+/// chosen times (XDMF, written by `emb run`) and a fatigue summary (results/stress_recorder.h).
 ///
 ///   stress_outputs:
 ///     - name: fillets                    # channels fillets.<group>.von_mises, ...
@@ -26,8 +26,8 @@
 #include <vector>
 
 #include "libemb/mbs/core/system.h"
-#include "libemb/mbs/flexible/flexible_body.h"
-#include "libemb/scene/scene.h"
+#include "libemb/mbs/parts/flexible_body.h"
+#include "libemb/results/stress_output.h"
 
 namespace emb::scene {
 
@@ -43,7 +43,7 @@ struct PartStresses {
 /// file without modal stresses (or without the surface that surface_field_times need), an
 /// unknown group, a node in none of the groups, a bad S-N curve, a non-finite field time,
 /// bad keys.
-std::vector<StressOutput> ReadStressOutputs(
+std::vector<results::StressOutput> ReadStressOutputs(
     const YAML::Node& list, const std::string& file, mbs::System* sys,
     const std::map<std::string, mbs::FlexiblePart>& body_file_parts,
     const std::map<std::string, PartStresses>& stresses);

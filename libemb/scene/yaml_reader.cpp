@@ -5,6 +5,7 @@
 
 #include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
+#include "libemb/scene/key_read_log.h"
 
 namespace emb::scene {
 
@@ -23,12 +24,13 @@ void RethrowWithPlace(const InputError& e, const std::string& file, const YAML::
   const std::string msg = e.what();
   if (msg.rfind(file, 0) == 0) throw e;  // a YAML reader's message: file:line already
   const bool named = msg.find("'" + name + "'") != std::string::npos;
-  EMB_THROW(InputError,
-            Where(file, node) << ": " << (named ? "" : kind + " '" + name + "': ") << msg);
+  EMB_THROW(InputError, Where(file, node)
+                            << ": " << (named ? "" : kind + " '" + name + "': ") << msg);
 }
 
-MapReader::MapReader(const YAML::Node& node, std::string file, std::string what)
-    : node_(node), file_(std::move(file)), what_(std::move(what)) {
+MapReader::MapReader(const YAML::Node& node, std::string file, std::string what,
+                     std::string section)
+    : node_(node), file_(std::move(file)), what_(std::move(what)), section_(std::move(section)) {
   EMB_THROW_IF(!node_.IsMap(), Where(file_, node_)
                                    << ": " << what_ << ": expected a map of key: value, got "
                                    << (node_.IsSequence() ? "a list"
@@ -37,12 +39,61 @@ MapReader::MapReader(const YAML::Node& node, std::string file, std::string what)
 }
 
 // Const lookups only: yaml-cpp's non-const operator[] would insert the key.
-bool MapReader::Has(const std::string& key) const {
+YAML::Node MapReader::Lookup(const std::string& key) const {
   const YAML::Node& n = node_;
-  return static_cast<bool>(n[key]);
+  return n[key];
+}
+
+bool MapReader::Has(const std::string& key) const { return static_cast<bool>(Lookup(key)); }
+
+void MapReader::Note(const std::string& key, KeyType type, const YAML::Node& n,
+                     const NumberRange* range, const std::string* fallback,
+                     const std::string* integer_range, const std::string* value) const {
+  if (!KeyReadLogActive()) return;
+  KeyRead read;
+  read.section = section_;
+  read.key = key;
+  read.type = type;
+  if (range) {
+    read.range_checked = true;
+    NumberRange bare = *range;
+    bare.unit.clear();
+    read.range = bare.Describe();
+    read.unit = range->unit;
+  } else if (integer_range) {
+    read.range_checked = true;
+    read.range = *integer_range;
+  }
+  if (!n && fallback) read.default_used = *fallback;
+  if (value) read.value = *value;
+  read.where = n ? Where(file_, n) : Where(file_, node_);
+  NoteKeyRead(std::move(read));
 }
 
 YAML::Node MapReader::Require(const std::string& key) {
+  YAML::Node n = RequireNode(key);
+  Note(key, KeyType::kAny, n);
+  return n;
+}
+
+YAML::Node MapReader::Optional(const std::string& key) {
+  YAML::Node n = OptionalNode(key);
+  Note(key, KeyType::kAny, n);
+  return n;
+}
+
+void MapReader::Ignore(const std::string& key) {
+  known_.insert(key);
+  if (!KeyReadLogActive()) return;
+  KeyRead read;
+  read.section = section_;
+  read.key = key;
+  read.ignored = true;
+  read.where = Where(file_, node_);
+  NoteKeyRead(std::move(read));
+}
+
+YAML::Node MapReader::RequireNode(const std::string& key) {
   known_.insert(key);
   const YAML::Node& map = node_;
   const YAML::Node n = map[key];
@@ -60,7 +111,7 @@ YAML::Node MapReader::Require(const std::string& key) {
   return n;
 }
 
-YAML::Node MapReader::Optional(const std::string& key) {
+YAML::Node MapReader::OptionalNode(const std::string& key) {
   known_.insert(key);
   const YAML::Node& map = node_;
   return map[key];
@@ -91,25 +142,40 @@ std::vector<double> AsDoubles(const YAML::Node& n, const std::string& file,
 }
 
 double MapReader::GetDouble(const std::string& key) {
-  return AsDouble(Require(key), file_, what_ + " '" + key + "'");
+  const YAML::Node n = RequireNode(key);
+  Note(key, KeyType::kNumber, n);
+  return AsDouble(n, file_, what_ + " '" + key + "'");
 }
 double MapReader::GetDouble(const std::string& key, double fallback) {
-  const YAML::Node n = Optional(key);
+  const YAML::Node n = OptionalNode(key);
+  if (KeyReadLogActive()) {
+    const std::string text = FormatDefault(fallback);
+    Note(key, KeyType::kNumber, n, nullptr, &text);
+  }
   return n ? AsDouble(n, file_, what_ + " '" + key + "'") : fallback;
 }
 double MapReader::GetDouble(const std::string& key, const NumberRange& range) {
-  const YAML::Node n = Require(key);
+  const YAML::Node n = RequireNode(key);
+  Note(key, KeyType::kNumber, n, &range);
   return CheckNumber(Where(file_, n) + ": " + what_ + " '" + key + "'",
                      AsDouble(n, file_, what_ + " '" + key + "'"), range);
 }
 double MapReader::GetDouble(const std::string& key, double fallback, const NumberRange& range) {
-  const YAML::Node n = Optional(key);
+  const YAML::Node n = OptionalNode(key);
+  if (KeyReadLogActive()) {
+    const std::string text = FormatDefault(fallback);
+    Note(key, KeyType::kNumber, n, &range, &text);
+  }
   if (!n) return fallback;
   return CheckNumber(Where(file_, n) + ": " + what_ + " '" + key + "'",
                      AsDouble(n, file_, what_ + " '" + key + "'"), range);
 }
 int MapReader::GetInt(const std::string& key, int fallback, long long lo, long long hi) {
-  const YAML::Node n = Optional(key);
+  const YAML::Node n = OptionalNode(key);
+  if (KeyReadLogActive()) {
+    const std::string text = std::to_string(fallback), range = FormatIntegerRange(lo, hi);
+    Note(key, KeyType::kInteger, n, nullptr, &text, &range);
+  }
   if (!n) return fallback;
   const double v = AsDouble(n, file_, what_ + " '" + key + "'");
   EMB_THROW_IF(v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi),
@@ -141,7 +207,11 @@ void CheckUniqueKeys(const YAML::Node& root, const std::string& file) {
   }
 }
 bool MapReader::GetBool(const std::string& key, bool fallback) {
-  const YAML::Node n = Optional(key);
+  const YAML::Node n = OptionalNode(key);
+  if (KeyReadLogActive()) {
+    const std::string text = FormatDefault(fallback);
+    Note(key, KeyType::kBool, n, nullptr, &text);
+  }
   if (!n) return fallback;
   try {
     return n.as<bool>();
@@ -151,16 +221,22 @@ bool MapReader::GetBool(const std::string& key, bool fallback) {
   }
 }
 std::string MapReader::GetString(const std::string& key) {
-  const YAML::Node n = Require(key);
+  const YAML::Node n = RequireNode(key);
+  const std::string word = n.IsScalar() ? n.Scalar() : std::string();
+  Note(key, KeyType::kString, n, nullptr, nullptr, nullptr, &word);
   EMB_THROW_IF(!n.IsScalar(), Where(file_, n)
                                   << ": " << what_ << " '" << key << "': expected a name or word");
   return n.Scalar();
 }
 std::string MapReader::GetString(const std::string& key, const std::string& fallback) {
-  return Has(key) ? GetString(key) : (known_.insert(key), fallback);
+  if (Has(key)) return GetString(key);
+  known_.insert(key);
+  Note(key, KeyType::kString, Lookup(key), nullptr, &fallback);
+  return fallback;
 }
 Eigen::Vector3d MapReader::GetVector3(const std::string& key) {
-  const YAML::Node n = Require(key);
+  const YAML::Node n = RequireNode(key);
+  Note(key, KeyType::kVector3, n);
   const std::vector<double> v = AsDoubles(n, file_, what_ + " '" + key + "'");
   EMB_THROW_IF(v.size() != 3, Where(file_, n)
                                   << ": " << what_ << " '" << key
@@ -168,10 +244,19 @@ Eigen::Vector3d MapReader::GetVector3(const std::string& key) {
   return {v[0], v[1], v[2]};
 }
 Eigen::Vector3d MapReader::GetVector3(const std::string& key, const Eigen::Vector3d& fallback) {
-  return Has(key) ? GetVector3(key) : (known_.insert(key), fallback);
+  if (Has(key)) return GetVector3(key);
+  known_.insert(key);
+  if (KeyReadLogActive()) {
+    const double v[3] = {fallback.x(), fallback.y(), fallback.z()};
+    const std::string text = FormatDefault(v);
+    Note(key, KeyType::kVector3, Lookup(key), nullptr, &text);
+  }
+  return fallback;
 }
 std::vector<double> MapReader::GetDoubles(const std::string& key) {
-  return AsDoubles(Require(key), file_, what_ + " '" + key + "'");
+  const YAML::Node n = RequireNode(key);
+  Note(key, KeyType::kNumbers, n);
+  return AsDoubles(n, file_, what_ + " '" + key + "'");
 }
 
 void MapReader::Finish() const {

@@ -2,7 +2,9 @@
 /// @file
 /// Strict reading of YAML scene nodes: every map is read through a MapReader that knows
 /// which keys the caller asked for, so an unknown key is an error with file:line and a
-/// did-you-mean; wrong types and missing keys name the key and the line.
+/// did-you-mean; wrong types and missing keys name the key and the line. Each reader belongs
+/// to a section of the key table (scene_keys.h); while a KeyReadLog (key_read_log.h) is
+/// alive, every key it marks as known is recorded there with what its getter checks.
 
 #include <yaml-cpp/yaml.h>
 
@@ -14,6 +16,7 @@
 
 #include "libemb/common/number_check.h"
 #include "libemb/common/error.h"
+#include "libemb/scene/scene_keys.h"
 
 namespace emb::scene {
 
@@ -23,8 +26,14 @@ std::string Where(const std::string& file, const YAML::Node& node);
 /// Reads one YAML map. Call Finish() after the last Get to reject unknown keys.
 class MapReader {
  public:
-  /// @throws InputError if `node` is not a map. `what` names it in messages ("body 'crank'").
-  MapReader(const YAML::Node& node, std::string file, std::string what);
+  /// @throws InputError if `node` is not a map. `what` names it in messages ("body 'crank'");
+  /// `section` is its section of the key table (SceneSection::id, e.g. "analysis").
+  MapReader(const YAML::Node& node, std::string file, std::string what, std::string section);
+
+  /// The section the keys read from now on belong to (e.g. "forces: bushing" once the
+  /// force's type is known).
+  void set_section(std::string section) { section_ = std::move(section); }
+  const std::string& section() const { return section_; }
 
   bool Has(const std::string& key) const;
   /// The child node (marks the key as known). @throws InputError if missing.
@@ -47,6 +56,9 @@ class MapReader {
   Eigen::Vector3d GetVector3(const std::string& key);
   Eigen::Vector3d GetVector3(const std::string& key, const Eigen::Vector3d& fallback);
   std::vector<double> GetDoubles(const std::string& key);
+  /// Accepts `key` without reading it: a key of another `model:` of a body entry, which may
+  /// stay so that one word switches the model.
+  void Ignore(const std::string& key);
 
   /// @throws InputError naming the first key not asked for, with a did-you-mean among the
   /// asked ones.
@@ -57,8 +69,21 @@ class MapReader {
   const YAML::Node& node() const { return node_; }
 
  private:
+  // The value at `key` (undefined if absent), without marking it known.
+  YAML::Node Lookup(const std::string& key) const;
+  // Require and Optional without recording (the typed getters record themselves).
+  YAML::Node RequireNode(const std::string& key);
+  YAML::Node OptionalNode(const std::string& key);
+  // Records the read in this thread's KeyReadLog, if one is alive. `n` is the key's value
+  // (undefined if absent), `range` the getter's check (or nullptr), `fallback` the default
+  // text used when the key is absent (or nullptr: the getter has none), `integer_range` the
+  // range text of an integer getter, `value` the word a text getter read.
+  void Note(const std::string& key, KeyType type, const YAML::Node& n,
+            const NumberRange* range = nullptr, const std::string* fallback = nullptr,
+            const std::string* integer_range = nullptr, const std::string* value = nullptr) const;
+
   YAML::Node node_;
-  std::string file_, what_;
+  std::string file_, what_, section_;
   std::set<std::string> known_;
 };
 
@@ -87,9 +112,9 @@ void ReadNamedList(const YAML::Node& list, const std::string& file, const std::s
                    const std::string& kind, Read&& read) {
   if (!list.IsSequence()) ThrowNotAList(list, file, section);
   for (const auto& node : list) {
-    MapReader r0(node, file, kind);
+    MapReader r0(node, file, kind, section);
     const std::string name = r0.GetString("name");
-    MapReader r(node, file, kind + " '" + name + "'");
+    MapReader r(node, file, kind + " '" + name + "'", section);
     r.GetString("name");
     try {
       read(r, name, node);

@@ -26,10 +26,14 @@ double ProcessCpuSeconds() {
 
 const char* Name(PointStatus status) {
   switch (status) {
-    case PointStatus::kConverged: return "converged";
-    case PointStatus::kNotConverged: return "not-converged";
-    case PointStatus::kFailed: return "failed";
-    case PointStatus::kRunUp: return "run-up";
+    case PointStatus::kConverged:
+      return "converged";
+    case PointStatus::kNotConverged:
+      return "not-converged";
+    case PointStatus::kFailed:
+      return "failed";
+    case PointStatus::kRunUp:
+      return "run-up";
   }
   return "failed";
 }
@@ -38,8 +42,10 @@ PointStatus ParsePointStatus(const std::string& name) {
   for (PointStatus s : {PointStatus::kConverged, PointStatus::kNotConverged, PointStatus::kFailed,
                         PointStatus::kRunUp})
     if (name == Name(s)) return s;
-  EMB_THROW(InputError, "operating point status: expected converged, not-converged, failed or run-up, "
-                        "got '" << name << "'");
+  EMB_THROW(InputError,
+            "operating point status: expected converged, not-converged, failed or run-up, "
+            "got '"
+                << name << "'");
 }
 
 OperatingPoint FailedPoint(double rpm, const std::string& message, const OrderSettings& settings) {
@@ -65,10 +71,10 @@ void CheckSweepable(const scene::Scene& scene, const OrderSettings& settings) {
                                "expected analysis.steady_state (period = one cycle, channels, "
                                "tolerance)");
   EMB_THROW_IF(settings.channels.empty(), "sweep: expected at least one channel");
-  (void)scene::ChannelSet(scene.system, settings.channels);  // names, with a did-you-mean
+  (void)results::ChannelSet(scene.system, settings.channels);  // names, with a did-you-mean
   EMB_THROW_IF(settings.orders.empty(), "sweep: expected at least one order");
-  EMB_THROW_IF(settings.samples_per_cycle < 8, "sweep: expected at least 8 samples per cycle, got "
-                                                   << settings.samples_per_cycle);
+  EMB_THROW_IF(settings.samples_per_cycle < 8,
+               "sweep: expected at least 8 samples per cycle, got " << settings.samples_per_cycle);
   for (double o : settings.orders)
     EMB_THROW_IF(!(o > 0.0) || std::abs(2 * o - std::round(2 * o)) > 1e-9 ||
                      o >= settings.samples_per_cycle / 4.0,
@@ -87,9 +93,9 @@ OperatingPoint RunOperatingPoint(const scene::Scene& scene, double rpm,
 
   mbs::AnalysisSettings st = scene.analysis;
   const mbs::PreparedRun run = mbs::PrepareRun(scene.system, st);
-  scene::SteadyStateMonitor steady(run.system, scene.steady_state, st.t_start, st.output_step);
+  results::SteadyStateMonitor steady(run.system, scene.steady_state, st.t_start, st.output_step);
   st.t_end = steady.t_end();
-  const scene::ChannelSet channels(run.system, settings.channels);
+  const results::ChannelSet channels(run.system, settings.channels);
   std::vector<double> time;
   std::vector<std::vector<double>> values(static_cast<std::size_t>(nc));
   bool at_steady_state = false;
@@ -104,7 +110,7 @@ OperatingPoint RunOperatingPoint(const scene::Scene& scene, double rpm,
       progress, [&] { return at_steady_state; });
   p.cpu_seconds = ProcessCpuSeconds() - cpu0;
   p.steps = r.ida_stats.steps;
-  const scene::SteadyStateReport& report = steady.report();
+  const results::SteadyStateReport& report = steady.report();
   p.cycles = report.cycles;
   p.change = report.change;
   if (!r.ok()) {
@@ -128,7 +134,7 @@ OperatingPoint RunOperatingPoint(const scene::Scene& scene, double rpm,
     angle.push_back(6.0 * rpm * (time[n] - st.t_start));
     ++n;
   }
-  scene::OrderSpectrumSettings os;
+  results::OrderSpectrumSettings os;
   os.cycles = 1;
   os.samples_per_cycle = settings.samples_per_cycle;
   os.max_order = 0.0;
@@ -136,10 +142,11 @@ OperatingPoint RunOperatingPoint(const scene::Scene& scene, double rpm,
   for (Eigen::Index c = 0; c < nc; ++c) {
     std::vector<double>& y = values[static_cast<std::size_t>(c)];
     y.resize(n);
-    const scene::OrderSpectrum sp = scene::CalcOrderSpectrum(angle, y, os);
+    const results::OrderSpectrum sp = results::CalcOrderSpectrum(angle, y, os);
     p.mean(c) = sp.mean;
     for (Eigen::Index k = 0; k < no; ++k) {
-      const auto line = static_cast<std::size_t>(std::lround(2.0 * settings.orders[static_cast<std::size_t>(k)]));
+      const auto line =
+          static_cast<std::size_t>(std::lround(2.0 * settings.orders[static_cast<std::size_t>(k)]));
       p.amplitude(c, k) = sp.lines.at(line).amplitude;
       p.phase_deg(c, k) = sp.lines.at(line).phase_deg;
     }

@@ -23,8 +23,8 @@ std::vector<OperatingPoint> TrackOrders(const std::vector<double>& time,
                "order tracking: expected " << settings.channels.size() << " channels, got "
                                            << values.size());
   for (const auto& v : values)
-    EMB_THROW_IF(v.size() != n, "order tracking: expected " << n << " values per channel, got "
-                                                            << v.size());
+    EMB_THROW_IF(v.size() != n,
+                 "order tracking: expected " << n << " values per channel, got " << v.size());
   EMB_THROW_IF(n < 4, "order tracking: expected at least 4 samples, got " << n);
   for (std::size_t i = 1; i < n; ++i)
     EMB_THROW_IF(!(angle_deg[i] > angle_deg[i - 1]) || !(time[i] > time[i - 1]),
@@ -38,11 +38,12 @@ std::vector<OperatingPoint> TrackOrders(const std::vector<double>& time,
                                           << settings.samples_per_cycle / 4.0);
     max_order = std::max(max_order, o);
   }
-  const int windows = static_cast<int>(std::floor((angle_deg.back() - angle_deg.front()) / kCycleDeg));
+  const int windows =
+      static_cast<int>(std::floor((angle_deg.back() - angle_deg.front()) / kCycleDeg));
   EMB_THROW_IF(windows < 1, "order tracking: the run covers "
                                 << angle_deg.back() - angle_deg.front()
                                 << " deg of crank angle, expected at least one 720-degree cycle");
-  scene::OrderSpectrumSettings os;
+  results::OrderSpectrumSettings os;
   os.cycles = 1;
   os.max_order = max_order;
   os.samples_per_cycle = settings.samples_per_cycle;
@@ -86,11 +87,11 @@ std::vector<OperatingPoint> TrackOrders(const std::vector<double>& time,
         y.back() = y[y.size() - 2] + f * (y.back() - y[y.size() - 2]);
         ac.back() = a1;
       }
-      const scene::OrderSpectrum sp = scene::CalcOrderSpectrum(ac, y, os);
+      const results::OrderSpectrum sp = results::CalcOrderSpectrum(ac, y, os);
       p.mean(c) = sp.mean;
       for (Eigen::Index k = 0; k < no; ++k) {
-        const auto line =
-            static_cast<std::size_t>(std::lround(2.0 * settings.orders[static_cast<std::size_t>(k)]));
+        const auto line = static_cast<std::size_t>(
+            std::lround(2.0 * settings.orders[static_cast<std::size_t>(k)]));
         p.amplitude(c, k) = sp.lines.at(line).amplitude;
         p.phase_deg(c, k) = sp.lines.at(line).phase_deg;
       }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "libemb/common/error.h"
@@ -88,7 +89,9 @@ void WriteSweepFile(const std::string& path, const SweepData& d) {
   }
   AtomicFile out(path);
   {
-    H5File h5(out.temp_path(), H5File::Mode::kCreate);
+    std::optional<H5File> file;
+    out.Create([&](const std::string& temp) { file.emplace(temp, H5File::Mode::kCreate); });
+    H5File& h5 = *file;
     h5.SetAttribute("/", "format", std::string(kSweepFormat));
     h5.SetAttribute("/", "version", static_cast<long long>(kSweepFormatVersion));
     h5.SetAttribute("/", "emb_version", std::string(EMB_VERSION));

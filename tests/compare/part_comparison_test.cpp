@@ -10,11 +10,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/compare/comparison_report.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/timoshenko_beam.h"
 
 namespace emb {
 namespace {
@@ -62,7 +64,8 @@ void ExpectOrdered(const PartComparison& c) {
     EXPECT_GT(r.num_unknowns, 0) << r.name;
   }
   const RouteResult &few = Route(c, "cms 2"), &many = Route(c, "cms 8");
-  const RouteResult &lumped = Route(c, "beam lumped, rigid webs"), &tmm = Route(c, "tmm, rigid webs");
+  const RouteResult &lumped = Route(c, "beam lumped, rigid webs"),
+                    &tmm = Route(c, "tmm, rigid webs");
   for (int j = 0; j < n; ++j) {
     const double e_few = few.Error(c.reference, j), e_many = many.Error(c.reference, j);
     ASSERT_TRUE(std::isfinite(e_few) && std::isfinite(e_many)) << "mode " << j + 1;
@@ -97,8 +100,9 @@ TEST(PartComparison, CrankshaftFreeFreeAndReport) {
   std::ifstream in(csv);
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header, "part,support,route,method,variant,unknowns,seconds,mode,reference_hz,"
-                    "section_deformation,beam_like,hz,error_pct,mac");
+  EXPECT_EQ(header,
+            "part,support,route,method,variant,unknowns,seconds,mode,reference_hz,"
+            "section_deformation,beam_like,hz,error_pct,mac");
   int rows = 0;
   for (std::string line; std::getline(in, line);) ++rows;
   EXPECT_EQ(rows, static_cast<int>(c.routes.size() * c.reference.size()));
@@ -125,14 +129,32 @@ TEST(PartComparison, TubeBendingPairedAndShellModesFlagged) {
   ASSERT_EQ(c.routes.size(), 6u);  // no webs: one beam model
   // The lowest modes of a free-free tube are its first bending pair; a beam represents it.
   const RouteResult& beam = Route(c, "beam consistent");
+  // The beam's error against the 3-D model is the error of beam theory: what Timoshenko's
+  // theory leaves out (3-D section effects, the shear coefficient's approximation) is a
+  // fraction of its own correction to Euler-Bernoulli, |f_EB - f_T| / f_T, for the tube's
+  // free-free first bending mode (tube.geo's defaults: L 1.5 m, D 90 mm, wall 2 mm). The
+  // routes' discretisation errors are far below it (Richardson: the 3-D mesh refined twofold
+  // in every direction moved the pair by 5e-6, beam elements of half the length by 5e-6).
+  const IsotropicMaterial steel;
+  const double length = 1.5, r_out = 0.045, r_in = 0.043, nu = steel.poisson_ratio;
+  const double area = std::numbers::pi * (r_out * r_out - r_in * r_in);
+  const double second_moment = std::numbers::pi / 4 * (std::pow(r_out, 4) - std::pow(r_in, 4));
+  const test::BeamSection section{steel.youngs_modulus, steel.youngs_modulus / (2 * (1 + nu)),
+                                  steel.density,        area,
+                                  second_moment,        test::KappaHollowCircle(nu, r_in, r_out)};
+  const double timoshenko = test::TimoshenkoFrequencies(section, length, test::BeamEnd::kFree,
+                                                        test::BeamEnd::kFree, 1)[0];
+  constexpr double kFreeFreeBetaL = 4.730040744862704;  // cos(bL) cosh(bL) = 1
+  const double euler_bernoulli =
+      kFreeFreeBetaL * kFreeFreeBetaL *
+      std::sqrt(section.E * section.I / (section.rho * section.A * std::pow(length, 4)));
+  const double beam_model_error = std::abs(euler_bernoulli - timoshenko) / timoshenko;
   for (int j : {0, 1}) {
     EXPECT_TRUE(c.reference[j].beam_like);
     // Pairing quality: a bending pair sampled at 16 stations, MAC over its degenerate group.
     constexpr double kPairedMac = 0.9;
     EXPECT_GE(beam.mac[j], kPairedMac) << "mode " << j + 1;
-    // Coarse 16 × 1 Hex20 wall against Timoshenko beams: a few % at most.
-    constexpr double kBendingPair = 0.05;
-    EXPECT_LE(std::abs(beam.Error(c.reference, j)), kBendingPair) << "mode " << j + 1;
+    EXPECT_LE(std::abs(beam.Error(c.reference, j)), beam_model_error) << "mode " << j + 1;
   }
   for (size_t i = 0; i < c.routes.size(); ++i) {
     const RouteSummary s = SummariseRoute(c, static_cast<int>(i));

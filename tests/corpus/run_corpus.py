@@ -14,7 +14,8 @@ case is also held to rules no case may break:
   - no hang: the command ends within the case's timeout (default 60 s);
   - no raw C++ failure text on stderr ("std::", "stod", "_M_range_check", "bad_alloc", ...);
   - the exact exit code expected (a bad input that exits 0 is a silent acceptance);
-  - no hidden temporaries (".*.tmp.*", ".emb-probe-*", ".*.lock") left by anything but SIGKILL.
+  - no hidden temporaries (".*.tmp.*", ".emb-probe-*") left by anything but SIGKILL, and no
+    lock file (".*.lock", which emb no longer makes) at all.
 Fixtures (a small part, its mesh, a body file, results files) are made once per run with
 the emb under test, into WORK/fix. Full-disk cases mount a small tmpfs when they can (root)
 and otherwise limit the file size with RLIMIT_FSIZE; read-only directories are a read-only
@@ -30,6 +31,7 @@ import json
 import os
 import shutil
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -217,13 +219,13 @@ def run_setup(step, ctx, case_dir, mounts, env):
                     f.flush()
         except OSError:
             pass
-    elif kind == "hold_lock":  # another emb process writing this output
-        lock = p(a[0])
-        fd = os.open(lock, os.O_RDWR | os.O_CREAT, 0o644)
-        import fcntl
-        fcntl.flock(fd, fcntl.LOCK_EX)
-        os.write(fd, b"424242")
-        env.setdefault("fds", []).append(fd)
+    elif kind == "hold_lock":  # another emb process writing this output: its lock's name
+        out = os.path.realpath(p(a[0]))  # (libemb/io/output_lock.h) bound by this process
+        st = os.stat(os.path.dirname(out))
+        holder = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        holder.bind(f"\0emb-output/{st.st_dev:x}/{st.st_ino:x}/{os.path.basename(out)}")
+        holder.listen(1)
+        env.setdefault("fds", []).append(holder)
     else:
         raise ValueError(f"unknown setup step {kind}")
 
@@ -276,6 +278,11 @@ def run_case(case, ctx):
             if proc.poll() is None:
                 sent = SIGNALS[sig["sig"]]
                 proc.send_signal(sent)
+                # A signal case is timing-dependent: where the signal lands depends on the
+                # machine's speed. Its report says when it was sent (the systematic sweep over
+                # every moment is tests/tools/signal_timing_test.py).
+                env["how"] = (f"timing-dependent: SIG{sig['sig']} sent "
+                              f"{time.monotonic() - start:.2f} s after the start")
                 if sig.get("again"):
                     time.sleep(float(sig["again"]))
                     if proc.poll() is None:
@@ -293,7 +300,9 @@ def run_case(case, ctx):
         expected = case["exit"]
         if sig and isinstance(expected, str) and expected == "signal":
             if sent is None:
-                problems.append("the command ended before the signal could be sent")
+                problems.append(f"the command ended after {time.monotonic() - start:.2f} s, "
+                                "before the signal could be sent (timing-dependent: this "
+                                "machine ran it faster than the case assumes)")
             elif rc != -sent:
                 problems.append(f"expected death by {sig['sig']}, got exit {rc}")
         elif rc < 0 and (sent is None or rc != -sent):
@@ -360,8 +369,8 @@ def run_case(case, ctx):
         return {"name": name, "category": case["category"], "rc": None, "seconds": 0.0,
                 "problems": [f"runner: {type(e).__name__}: {e}"], "stderr": "", "how": ""}
     finally:
-        for fd in env.get("fds", []):
-            os.close(fd)
+        for holder in env.get("fds", []):
+            holder.close()
         mounts.release()
 
 

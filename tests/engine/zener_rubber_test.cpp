@@ -15,7 +15,7 @@
 #include "libemb/common/error.h"
 #include "libemb/engine/torsional_damper.h"
 #include "libemb/engine/zener_rubber.h"
-#include "libemb/mbs/analysis/linearization.h"
+#include "libemb/mbs/dae/linearization.h"
 #include "libemb/mbs/constraints/assembly.h"
 
 namespace emb {

@@ -5,8 +5,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = emb::fuzz::WriteInput(data, size, "results.h5");
-  emb::fuzz::Expect([&] { emb::scene::ReadResultsStatus(path); });
-  emb::fuzz::Expect([&] { emb::scene::ReadResultsChannel(path, "disc.omega.x"); });
-  emb::fuzz::Expect([&] { emb::scene::ReadBodyRotationAngle(path, "disc", "x", 0.0); });
+  emb::fuzz::Expect([&] { emb::results::ReadResultsStatus(path); });
+  emb::fuzz::Expect([&] { emb::results::ReadResultsChannel(path, "disc.omega.x"); });
+  emb::fuzz::Expect([&] { emb::results::ReadBodyRotationAngle(path, "disc", "x", 0.0); });
   return 0;
 }

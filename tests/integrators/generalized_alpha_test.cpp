@@ -31,10 +31,11 @@ class OscillatorDae final : public DaeProblem {
     return true;
   }
   bool DoHasJacobian() const override { return true; }
-  void DoCalcJacobian(double, double cj, const Eigen::Ref<const Eigen::VectorXd>&,
+  bool DoCalcJacobian(double, double cj, const Eigen::Ref<const Eigen::VectorXd>&,
                       const Eigen::Ref<const Eigen::VectorXd>&,
                       Eigen::Ref<Eigen::MatrixXd> J) const override {
     J << cj, -1.0, w_ * w_, cj + 2.0 * z_ * w_;
+    return true;
   }
   Eigen::VectorXd DoDifferentialMask() const override { return Eigen::Vector2d(1.0, 1.0); }
 

@@ -45,14 +45,15 @@ class DecayDae final : public DaeProblem {
     return true;
   }
   bool DoHasJacobian() const override { return analytic_; }
-  void DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+  bool DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                       const Eigen::Ref<const Eigen::VectorXd>&,
                       Eigen::Ref<Eigen::MatrixXd> J) const override {
     J << cj + kRate, 0.0, -2.0 * Gate(t) * y[0], Gate(t);
+    return true;
   }
   bool DoHasSparseJacobian() const override { return sparse_; }
   // Three structural entries: J(0, 1) is zero for every state.
-  void DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+  bool DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                             const Eigen::Ref<const Eigen::VectorXd>&,
                             SparseMatrixd* J) const override {
     ++sparse_calls;
@@ -61,6 +62,7 @@ class DecayDae final : public DaeProblem {
     assembler_.Add(1, 0, -2.0 * Gate(t) * y[0]);
     assembler_.Add(1, 1, Gate(t));
     assembler_.Finish();
+    return true;
   }
   Eigen::VectorXd DoDifferentialMask() const override { return Eigen::Vector2d(1.0, 0.0); }
 

@@ -12,7 +12,7 @@
 #include "libemb/common/error.h"
 #include "libemb/results/rainflow.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 constexpr double kRoundOff = 1e-12;  // relative, a handful of flops
@@ -72,7 +72,8 @@ TEST(Fatigue, GoodmanMinerClosedForm) {
   EXPECT_EQ(GoodmanAmplitude(100e6, -400e6, sn.ultimate_strength), 100e6);  // no credit
   EXPECT_TRUE(std::isinf(GoodmanAmplitude(100e6, 800e6, sn.ultimate_strength)));
   // Miner: 2 cycles at (range 200, mean 0) + 0.5 at (range 200, mean 400 MPa).
-  const std::vector<RainflowCycle> cycles{{200e6, 0.0, 1.0}, {200e6, 0.0, 1.0}, {200e6, 400e6, 0.5}};
+  const std::vector<RainflowCycle> cycles{
+      {200e6, 0.0, 1.0}, {200e6, 0.0, 1.0}, {200e6, 400e6, 0.5}};
   const FatigueDamage d = CalcMinerDamage(cycles, sn);
   const double expected = 2.0 / 5e9 + 0.5 / 4.8828125e6;
   EXPECT_NEAR(d.damage, expected, kRoundOff * expected);
@@ -96,7 +97,8 @@ TEST(Fatigue, TabulatedSnCurveInterpolatesLogLog) {
   table.Validate("test");
   for (double s : {600e6, 450e6, 350e6, 250e6, 200e6})  // above the first point: extrapolated
     EXPECT_NEAR(table.CyclesToFailure(s), basquin.CyclesToFailure(s),
-                kRoundOff * basquin.CyclesToFailure(s)) << s;
+                kRoundOff * basquin.CyclesToFailure(s))
+        << s;
   EXPECT_TRUE(std::isinf(table.CyclesToFailure(199e6)));  // below the knee
   table.endurance_limit = 150e6;  // the last segment goes on to the endurance limit
   EXPECT_NEAR(table.CyclesToFailure(160e6), basquin.CyclesToFailure(160e6),
@@ -157,4 +159,4 @@ TEST(Fatigue, BadSnCurveIsNamed) {
 }
 
 }  // namespace
-}  // namespace emb::scene
+}  // namespace emb::results

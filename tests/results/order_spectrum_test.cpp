@@ -11,7 +11,7 @@
 
 #include "libemb/common/error.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -48,7 +48,8 @@ TEST(OrderSpectrum, RecoversKnownOrders) {
   // in floating point): still two cycles.
   {
     std::vector<double> a2, y2;
-    for (double t = 0.0; t <= 1440.0 - 1e-6; t += 720.0 / 360.0) a2.push_back(t), y2.push_back(Signal(t));
+    for (double t = 0.0; t <= 1440.0 - 1e-6; t += 720.0 / 360.0)
+      a2.push_back(t), y2.push_back(Signal(t));
     a2.back() = 1440.0 - 1e-3;
     EXPECT_EQ(CalcOrderSpectrum(a2, y2, s).cycles, 2);
   }
@@ -89,4 +90,4 @@ TEST(OrderSpectrum, OneCycleOnRequestAndBadInput) {
 }
 
 }  // namespace
-}  // namespace emb::scene
+}  // namespace emb::results

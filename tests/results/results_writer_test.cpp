@@ -16,17 +16,19 @@
 #include "libemb/scene/scene.h"
 #include "tests/support/temp_dir.h"
 
-namespace emb::scene {
+namespace emb::results {
 namespace {
 
 std::string TempPath(const std::string& name) {
   return testing::ProcessTempDir().File("results_" + name);
 }
 
-Scene Pendulum() { return LoadScene(std::string(EMB_SOURCE_DIR) + "/tools/scenes/pendulum.yaml"); }
+scene::Scene Pendulum() {
+  return scene::LoadScene(std::string(EMB_SOURCE_DIR) + "/tools/scenes/pendulum.yaml");
+}
 
 TEST(ResultsWriter, LayoutAndRows) {
-  Scene sc = Pendulum();
+  scene::Scene sc = Pendulum();
   sc.analysis.t_end = 0.5;
   sc.analysis.output_step = 0.05;
   const std::string path = TempPath("layout.h5");
@@ -51,8 +53,10 @@ TEST(ResultsWriter, LayoutAndRows) {
   const Eigen::Vector3d w_last = R_last * last.v.segment<3>(layout.angular_velocity(1));
   for (int c = 0; c < 3; ++c) {
     const std::string xyz = std::string(1, "xyz"[c]);
-    EXPECT_EQ(ReadResultsChannel(path, "rod.p." + xyz).values.back(), last.q[layout.position(1) + c]);
-    EXPECT_EQ(ReadResultsChannel(path, "rod.v." + xyz).values.back(), last.v[layout.velocity(1) + c]);
+    EXPECT_EQ(ReadResultsChannel(path, "rod.p." + xyz).values.back(),
+              last.q[layout.position(1) + c]);
+    EXPECT_EQ(ReadResultsChannel(path, "rod.v." + xyz).values.back(),
+              last.v[layout.velocity(1) + c]);
     // omega in W: the reader rotates omega_B by its own quaternion-to-matrix formula: a few
     // ulps apart.
     constexpr double kRotationRoundOff = 1e-13;
@@ -92,7 +96,8 @@ TEST(ResultsWriter, LayoutAndRows) {
 
 TEST(ResultsWriter, IntegratorFailureKeepsEarlierSamples) {
   // A torque step to 1e9 N m at t = 0.25 s exhausts IDA's step budget (the scene says).
-  const Scene sc = LoadScene(std::string(EMB_SOURCE_DIR) + "/tests/scene/data/spin_up.yaml");
+  const scene::Scene sc =
+      scene::LoadScene(std::string(EMB_SOURCE_DIR) + "/tests/scene/data/spin_up.yaml");
   const std::string path = TempPath("failure.h5");
   const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
   mbs::RunResult r;
@@ -141,13 +146,13 @@ TEST(ResultsWriter, IntegratorFailureKeepsEarlierSamples) {
 
 TEST(ResultsWriter, FreeBodyWithoutConstraints) {
   // No joints: zero multipliers and reactions still give well-formed (empty-row) datasets.
-  const Scene sc = ParseScene(R"(
+  const scene::Scene sc = scene::ParseScene(R"(
 bodies:
   - {name: ball, mass: 1.0, inertia: [0.1, 0.1, 0.1], velocity: [1, 2, 0], angular_velocity: [0, 0, 3]}
 gravity: [0, 0, -9.81]
 analysis: {type: dynamic, t_end: 0.5, output_step: 0.1}
 )",
-                              "free.yaml");
+                                            "free.yaml");
   const std::string path = TempPath("free.h5");
   const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
   mbs::Sample last;
@@ -171,7 +176,7 @@ analysis: {type: dynamic, t_end: 0.5, output_step: 0.1}
 
 TEST(ResultsWriter, CouplerReactionAtBothJoints) {
   // The gear pair: 2 joints, the motion and the coupler, plus the coupler's second port.
-  Scene sc = LoadScene(std::string(EMB_SOURCE_DIR) + "/tools/scenes/gear_pair.yaml");
+  scene::Scene sc = scene::LoadScene(std::string(EMB_SOURCE_DIR) + "/tools/scenes/gear_pair.yaml");
   sc.analysis.t_end = 0.05;
   const std::string path = TempPath("gears.h5"), csv_path = TempPath("gears.csv");
   const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
@@ -198,7 +203,7 @@ TEST(ResultsWriter, CouplerReactionAtBothJoints) {
 }
 
 TEST(CsvWriter, ChannelsAndUnknownChannel) {
-  Scene sc = Pendulum();
+  scene::Scene sc = Pendulum();
   sc.analysis.t_end = 0.1;
   sc.analysis.output_step = 0.05;
   const std::string path = TempPath("channels.csv");
@@ -224,4 +229,4 @@ TEST(CsvWriter, ChannelsAndUnknownChannel) {
 }
 
 }  // namespace
-}  // namespace emb::scene
+}  // namespace emb::results

@@ -4,6 +4,8 @@
 // rest point, X = F0 / sqrt((k - m w^2)^2 + (c w)^2); started from rest, the homogeneous
 // part decays by r = exp(-zeta w_n T) per forcing period T.
 
+#include "libemb/results/steady_state.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,17 +17,16 @@
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/forces/applied_load.h"
 #include "libemb/mbs/forces/spring_damper.h"
-#include "libemb/results/steady_state.h"
 
 namespace emb {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kMass = 1.0;                  // [kg]
-constexpr double kNatural = 2 * kPi * 10.0;    // w_n [rad/s]
-constexpr double kZeta = 0.05;                 // damping ratio
-constexpr double kForcing = 2 * kPi * 7.0;     // w [rad/s]
-constexpr double kForce = 10.0;                // F0 [N]
+constexpr double kMass = 1.0;                // [kg]
+constexpr double kNatural = 2 * kPi * 10.0;  // w_n [rad/s]
+constexpr double kZeta = 0.05;               // damping ratio
+constexpr double kForcing = 2 * kPi * 7.0;   // w [rad/s]
+constexpr double kForce = 10.0;              // F0 [N]
 constexpr int kSamplesPerCycle = 64;
 
 mbs::System DrivenOscillator() {
@@ -72,7 +73,7 @@ double CyclePhase(const std::vector<double>& x) {
 TEST(SteadyState, DrivenOscillatorReachesTheClosedFormResponse) {
   const mbs::System sys = DrivenOscillator();
   const double period = 2 * kPi / kForcing;
-  scene::SteadyStateSettings ss;
+  results::SteadyStateSettings ss;
   ss.period = period;
   ss.channels = {"mass.p.z", "mass.v.z"};
   ss.tolerance = 1e-4;
@@ -81,7 +82,7 @@ TEST(SteadyState, DrivenOscillatorReachesTheClosedFormResponse) {
   st.output_step = period / kSamplesPerCycle;
   st.ida.rtol = 1e-10;
   st.ida.atol = 1e-12;
-  scene::SteadyStateMonitor monitor(sys, ss, st.t_start, st.output_step);
+  results::SteadyStateMonitor monitor(sys, ss, st.t_start, st.output_step);
   st.t_end = monitor.t_end();
   const mbs::PreparedRun run = mbs::PrepareRun(sys, st);
   std::vector<double> z, t;
@@ -95,7 +96,7 @@ TEST(SteadyState, DrivenOscillatorReachesTheClosedFormResponse) {
       },
       {}, [&] { return steady; });
   ASSERT_TRUE(r.ok()) << r.message;
-  const scene::SteadyStateReport& rep = monitor.report();
+  const results::SteadyStateReport& rep = monitor.report();
   ASSERT_TRUE(rep.converged) << "cycles " << rep.cycles << " change " << rep.change << " in "
                              << rep.worst_channel << " t " << r.t_reached;
   EXPECT_TRUE(r.stopped);
@@ -158,12 +159,12 @@ TEST(SteadyState, DrivenOscillatorReachesTheClosedFormResponse) {
 // its own size the noise would never fall below the tolerance.
 TEST(SteadyState, ARoundOffChannelDoesNotHoldUpTheSteadyState) {
   const mbs::System sys = DrivenOscillator();
-  scene::SteadyStateSettings ss;
+  results::SteadyStateSettings ss;
   ss.period = 0.1;
   ss.channels = {"mass.p.x"};
   ss.tolerance = 1e-3;
   ss.min_cycles = 2;
-  scene::SteadyStateMonitor monitor(sys, ss, 0.0, 0.01);
+  results::SteadyStateMonitor monitor(sys, ss, 0.0, 0.01);
   mbs::Sample sample;
   sample.q = sys.InitialPositions();
   sample.v = Eigen::VectorXd::Zero(sys.layout().nv());
@@ -182,18 +183,18 @@ TEST(SteadyState, ARoundOffChannelDoesNotHoldUpTheSteadyState) {
 
 TEST(SteadyState, SettingsAreChecked) {
   const mbs::System sys = DrivenOscillator();
-  scene::SteadyStateSettings ss;
+  results::SteadyStateSettings ss;
   ss.period = 0.1;
   ss.channels = {"mass.p.z"};
-  EXPECT_THROW(scene::SteadyStateMonitor(sys, ss, 0.0, 0.03), InputError);  // not whole steps
+  EXPECT_THROW(results::SteadyStateMonitor(sys, ss, 0.0, 0.03), InputError);  // not whole steps
   ss.channels = {"mass.p.q"};
-  EXPECT_THROW(scene::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);  // unknown channel
+  EXPECT_THROW(results::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);  // unknown channel
   ss.channels = {"mass.p.z"};
   ss.min_cycles = 1;
-  EXPECT_THROW(scene::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);
+  EXPECT_THROW(results::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);
   ss.min_cycles = 2;
   ss.tolerance = 0.0;
-  EXPECT_THROW(scene::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);
+  EXPECT_THROW(results::SteadyStateMonitor(sys, ss, 0.0, 0.01), InputError);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include "libemb/common/error.h"
 #include "libemb/mbs/core/kinematics.h"
 #include "libemb/mbs/core/rotation.h"
-#include "libemb/mbs/flexible/beam_part.h"
+#include "libemb/mbs/parts/beam_part.h"
 #include "libemb/scene/scene.h"
 #include "tests/support/input_error.h"
 #include "tests/support/temp_dir.h"

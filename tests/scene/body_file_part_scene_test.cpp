@@ -1,7 +1,7 @@
 // Parts from body files in scenes (`model: rigid|cms`, `body_file:`): the YAML reading of
 // mbs/flexible/flexible_body.h's builders. Bad input: every error names the part (and the
 // file or the interface), says what was expected and, through the scene, where (file:line).
-// The builders' own errors are tested in C++ in tests/mbs/flexible/flexible_body_errors_test.cpp.
+// The builders' own errors are tested in C++ in tests/mbs/parts/flexible_body_errors_test.cpp.
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include "libemb/common/error.h"
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/core/rotation.h"
-#include "libemb/mbs/flexible/flexible_body.h"
+#include "libemb/mbs/parts/flexible_body.h"
 #include "libemb/scene/scene.h"
 #include "tests/support/flexible_bar.h"
 #include "tests/support/input_error.h"

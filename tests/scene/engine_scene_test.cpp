@@ -8,14 +8,14 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
-#include <vector>
 #include <numbers>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/analysis/analysis.h"
 #include "libemb/engine/cylinder_pressure.h"
+#include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/results/channels.h"
@@ -53,8 +53,9 @@ TEST_P(Inline4Scene, LoadsWithItsDofAndRuns) {
   double worst_speed = 0.0, worst_residual = 0.0;
   const mbs::RunResult run = mbs::RunAnalysis(
       mbs::PrepareRun(sc.system, sc.analysis), sc.analysis, [&](const mbs::Sample& s) {
-        const Eigen::Vector3d omega_W = mbs::RotationFromQuaternion(s.q.segment<4>(L.quaternion(crank))) *
-                                        s.v.segment<3>(L.angular_velocity(crank));
+        const Eigen::Vector3d omega_W =
+            mbs::RotationFromQuaternion(s.q.segment<4>(L.quaternion(crank))) *
+            s.v.segment<3>(L.angular_velocity(crank));
         worst_speed = std::max(worst_speed, std::abs(omega_W.x() / kCrankSpeed - 1.0));
         worst_residual = std::max(worst_residual, s.position_residual);
       });
@@ -67,8 +68,8 @@ TEST_P(Inline4Scene, LoadsWithItsDofAndRuns) {
   // engine (measured 3e-14 over these few steps).
   constexpr double kSpeedBand = 0.01;
   constexpr double kAssembledTolerance = 1e-6;  // [m or rad]
-  std::printf("%s: crank speed within %.2e of 3000 rpm, constraints within %.1e\n",
-              GetParam().file, worst_speed, worst_residual);
+  std::printf("%s: crank speed within %.2e of 3000 rpm, constraints within %.1e\n", GetParam().file,
+              worst_speed, worst_residual);
   EXPECT_LT(worst_speed, kSpeedBand) << GetParam().file;
   EXPECT_LT(worst_residual, kAssembledTolerance) << GetParam().file;
 }
@@ -91,7 +92,8 @@ TEST(Inline4Scene, GasForceFollowsTheFiringOrder) {
   for (const auto& [k, angle] : firing) {
     const std::string name = "gas_" + std::to_string(k);
     const auto& fes = sys.force_elements();
-    const auto it = std::find_if(fes.begin(), fes.end(), [&](const auto& fe) { return fe->name() == name; });
+    const auto it =
+        std::find_if(fes.begin(), fes.end(), [&](const auto& fe) { return fe->name() == name; });
     ASSERT_NE(it, fes.end()) << name;
     Eigen::VectorXd f = Eigen::VectorXd::Zero(sys.layout().nv());
     (*it)->AddForces({&sys, &bodies, 0.0, nullptr, -1}, f);
@@ -128,12 +130,14 @@ TEST(EngineSceneKeys, JournalBearing) {
       "forces:\n  - {name: main, type: journal-bearing, i: journal, j: shell, radius: 0.0275,\n"
       "     length: 0.024, clearance: 3.0e-5, viscosity: 0.01}\n";
   EXPECT_NO_THROW(ParseScene(std::string(kBase) + good, "good.yaml"));
-  ExpectError("forces:\n  - {name: main, type: journal-bearing, i: journal, j: shell, radius: 0.01,\n"
-              "     length: 0.024, clearance: 3.0e-5, viscosity: 0.01}\n",
-              {"bad.yaml:9", "journal bearing 'main'", "L/D"});
-  ExpectError("forces:\n  - {name: main, type: journal-bearing, i: journal, j: shell, radius: 0.0275,\n"
-              "     length: 0.024, clearance: 3.0e-5, viscosity: 0.01, viscosty: 1}\n",
-              {"viscosty", "did you mean"});
+  ExpectError(
+      "forces:\n  - {name: main, type: journal-bearing, i: journal, j: shell, radius: 0.01,\n"
+      "     length: 0.024, clearance: 3.0e-5, viscosity: 0.01}\n",
+      {"bad.yaml:9", "journal bearing 'main'", "L/D"});
+  ExpectError(
+      "forces:\n  - {name: main, type: journal-bearing, i: journal, j: shell, radius: 0.0275,\n"
+      "     length: 0.024, clearance: 3.0e-5, viscosity: 0.01, viscosty: 1}\n",
+      {"viscosty", "did you mean"});
   ExpectError("forces:\n  - {name: main, type: journal-baring, i: journal, j: shell}\n",
               {"did you mean 'journal-bearing'"});
 }
@@ -143,7 +147,7 @@ TEST(EngineSceneKeys, JournalBearing) {
 // and flywheel started 5 % fast or slow (the dynamometer's motion holds 3000 rpm, so the
 // coupling rings and the speed error decays): the steady cycles agree, whatever the start.
 struct SteadyCycle {
-  SteadyStateReport report;
+  results::SteadyStateReport report;
   std::vector<std::vector<double>> first, last;  // [channel][sample]: first and steady cycle
 };
 
@@ -168,11 +172,12 @@ SteadyCycle RunToSteadyState(double speed_factor) {
   scale("-0.80472", speed_factor);
   Scene sc = ParseScene(yaml, ScenePath("engine_1cyl_rigid.yaml"));
   EXPECT_TRUE(sc.steady_state.enabled());
-  SteadyStateMonitor monitor(sc.system, sc.steady_state, sc.analysis.t_start,
-                             sc.analysis.output_step);
+  results::SteadyStateMonitor monitor(sc.system, sc.steady_state, sc.analysis.t_start,
+                                      sc.analysis.output_step);
   sc.analysis.t_end = monitor.t_end();
-  const ChannelSet channels(sc.system, sc.steady_state.channels);
-  const int per_cycle = static_cast<int>(std::lround(sc.steady_state.period / sc.analysis.output_step));
+  const results::ChannelSet channels(sc.system, sc.steady_state.channels);
+  const int per_cycle =
+      static_cast<int>(std::lround(sc.steady_state.period / sc.analysis.output_step));
   SteadyCycle out;
   out.first.assign(static_cast<std::size_t>(channels.size()), {});
   std::vector<std::vector<double>> all(out.first.size());
@@ -216,9 +221,10 @@ TEST(SingleCylinderEngine, SteadyCycleIsIndependentOfTheInitialSpeedError) {
     ASSERT_TRUE(off.report.converged) << factor << ": " << off.report.change;
     const double start = CycleDifference(nominal.first, off.first);
     const double steady = CycleDifference(nominal.last, off.last);
-    std::printf("speed x %.2f: %d cycles (nominal %d); first cycles differ by %.3g, steady "
-                "cycles by %.3g (relative RMS)\n",
-                factor, off.report.cycles, nominal.report.cycles, start, steady);
+    std::printf(
+        "speed x %.2f: %d cycles (nominal %d); first cycles differ by %.3g, steady "
+        "cycles by %.3g (relative RMS)\n",
+        factor, off.report.cycles, nominal.report.cycles, start, steady);
     // Each steady cycle is within about change r / (1 - r) of the periodic solution
     // (steady_state.h; change <= the scene's tolerance 1e-4, r the decay per cycle, small
     // here: the coupling's torsional mode is 8 % damped) plus the integration error at rtol
@@ -233,9 +239,11 @@ TEST(SingleCylinderEngine, SteadyCycleIsIndependentOfTheInitialSpeedError) {
 TEST(EngineSceneKeys, CylinderPressure) {
   auto gas = [](const std::string& fn) {
     return "forces:\n  - {name: gas, type: force, marker: journal, direction: [0, 0, -1],\n"
-           "     function: " + fn + "}\n";
+           "     function: " +
+           fn + "}\n";
   };
-  EXPECT_NO_THROW(ParseScene(std::string(kBase) + gas("{cylinder_pressure: {fired: false}}"), "g.yaml"));
+  EXPECT_NO_THROW(
+      ParseScene(std::string(kBase) + gas("{cylinder_pressure: {fired: false}}"), "g.yaml"));
   ExpectError(gas("{cylinder_pressure: {heat_released: 1000, peak_pressure: 7.0e6}}"),
               {"at most one of heat_released, peak_pressure"});
   ExpectError(gas("{cylinder_pressure: {compression_ratio: 0.5}}"),
@@ -246,11 +254,11 @@ TEST(EngineSceneKeys, CylinderPressure) {
               {"'cubic' with periodic: true"});
 }
 
-
 TEST(EngineSceneKeys, TorsionalDamperRubber) {
   auto tvd = [](const std::string& rest) {
     return "forces:\n  - {name: tvd, type: torsional-damper, hub: journal, ring_mass: 1.0,\n"
-           "     ring_inertia: 4.0e-3, " + rest + "}\n";
+           "     ring_inertia: 4.0e-3, " +
+           rest + "}\n";
   };
   const std::string arms =
       "rubber: {static_stiffness: 1.8e4, arms: [{stiffness: 6.0e3, relaxation_time: 3.0e-4},\n"
@@ -270,10 +278,10 @@ TEST(EngineSceneKeys, TorsionalDamperRubber) {
   const auto& forces = a.system.force_elements();
   EXPECT_TRUE(std::any_of(forces.begin(), forces.end(),
                           [](const auto& e) { return e->name() == "tvd_arm2_dashpot"; }));
-  const Scene b = ParseScene(
-      std::string(kBase) +
-          tvd("rubber: {dynamic_stiffness: 2.5e4, loss_factor: 0.2, frequency_hz: 380}"),
-      "good.yaml");
+  const Scene b =
+      ParseScene(std::string(kBase) +
+                     tvd("rubber: {dynamic_stiffness: 2.5e4, loss_factor: 0.2, frequency_hz: 380}"),
+                 "good.yaml");
   EXPECT_GE(b.system.FindBody("tvd_junction1"), 0);
   ExpectError(tvd("stiffness: 2.0e4, " + arms), {"bad.yaml:9", "tvd", "either `rubber` or"});
   ExpectError(tvd("rubber: {static_stiffness: 1.0e4, loss_factor: 0.2}"),

@@ -16,7 +16,7 @@
 #include <sstream>
 
 #include "libemb/mbs/analysis/analysis.h"
-#include "libemb/mbs/analysis/linearization.h"
+#include "libemb/mbs/dae/linearization.h"
 #include "libemb/scene/scene.h"
 #include "tests/support/cli_fixture.h"
 

@@ -4,7 +4,9 @@
 // block on a translational joint between end stops. The effective inertia of x is
 // m = 1 / (1/J_1 + r^2/J_2), and J_1 w_1 + (J_2/r) w_2 is conserved by the mesh force.
 
+#include <algorithm>
 #include <memory>
+#include <vector>
 
 #include "libemb/driveline/lash.h"
 #include "libemb/mbs/analysis/analysis.h"
@@ -66,6 +68,35 @@ inline mbs::AnalysisSettings DynamicSettings(double t_end, double output_step, d
   st.ida.rtol = rtol;
   st.ida.atol = 1e-3 * rtol;
   return st;
+}
+
+// The contacts of the pair between its stops with no other force, in closed form: the first
+// onset after half the lash `width` at the closing speed v; then each contact lasts
+// `contact_duration(v)` and leaves the stop `dwell` of flight away (Kelvin-Voigt's tension
+// cut-off leaves it penetrated), and the flight across the lash at e v ends in the next onset,
+// on the other stop. The onsets up to t_end, their closing speeds, and the first onset after
+// t_end (the margin of the count: a run's onsets move by its timing error).
+struct ClosedFormContacts {
+  std::vector<double> onset, speed;  // [s], [rad/s or m/s]
+  double next_onset{0.0};            // [s], the first after t_end
+  // The distance of t_end from the nearest closed-form event it separates [s].
+  double CountMargin(double t_end) const {
+    return std::min(next_onset - t_end, onset.empty() ? t_end : t_end - onset.back());
+  }
+};
+template <class Duration>
+ClosedFormContacts FreeFlightContacts(double width, double v, double e, double dwell,
+                                      Duration contact_duration, double t_end) {
+  ClosedFormContacts c;
+  double t = 0.5 * width / v;
+  while (t <= t_end) {
+    c.onset.push_back(t);
+    c.speed.push_back(v);
+    t += contact_duration(v) + dwell + width / (e * v);
+    v *= e;
+  }
+  c.next_onset = t;
+  return c;
 }
 
 }  // namespace emb::driveline::testing

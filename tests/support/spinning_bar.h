@@ -8,7 +8,7 @@
 #include <Eigen/Dense>
 
 #include "libemb/mbs/core/system.h"
-#include "libemb/mbs/flexible/flexible_body.h"
+#include "libemb/mbs/parts/flexible_body.h"
 #include "tests/support/flexible_bar.h"
 
 namespace emb::testing {

@@ -6,7 +6,8 @@
 // With w = e^{sx}: EI κGA s⁴ + ω²(EI ρA + ρI κGA) s² + ρAω²(ρIω² − κGA) = 0, a quadratic in
 // s² with one positive root a² and one negative root −b² below the shear cut-off. The four
 // real solutions cosh(ax), sinh(ax), cos(bx), sin(bx) carry ψ from ψ' = w'' + k w,
-// k = ρAω²/(κGA). End conditions: clamped w = ψ = 0; free EIψ' = 0 and κGA(w' − ψ) = 0.
+// k = ρAω²/(κGA). End conditions: clamped w = ψ = 0; free EIψ' = 0 and κGA(w' − ψ) = 0;
+// pinned w = 0 and EIψ' = 0.
 // Natural frequencies are the sign changes of the 4×4 boundary determinant, bracketed on a
 // fine grid and refined by bisection.
 
@@ -23,7 +24,7 @@ struct BeamSection {
   double kappa;      // shear coefficient (use a huge value for Euler–Bernoulli)
 };
 
-enum class BeamEnd { kClamped, kFree };
+enum class BeamEnd { kClamped, kFree, kPinned };
 
 // Cowper's shear coefficients.
 inline double KappaRectangle(double nu) { return 10.0 * (1.0 + nu) / (12.0 + 11.0 * nu); }
@@ -57,8 +58,12 @@ inline double TimoshenkoDeterminant(const BeamSection& s, double L, BeamEnd left
   const Eigen::Matrix4d B0 = basis(0.0), BL = basis(L);
   Eigen::Matrix4d D;
   auto rows = [](const Eigen::Matrix4d& B, BeamEnd e, Eigen::Matrix<double, 2, 4>& out) {
-    if (e == BeamEnd::kClamped) out << B.row(0), B.row(1);
-    else out << B.row(2), B.row(3);
+    if (e == BeamEnd::kClamped)
+      out << B.row(0), B.row(1);
+    else if (e == BeamEnd::kPinned)
+      out << B.row(0), B.row(2);
+    else
+      out << B.row(2), B.row(3);
   };
   Eigen::Matrix<double, 2, 4> r0, rL;
   rows(B0, left, r0);

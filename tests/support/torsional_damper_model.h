@@ -13,7 +13,7 @@
 
 #include "libemb/engine/torsional_damper.h"
 #include "libemb/mbs/analysis/analysis.h"
-#include "libemb/mbs/analysis/linearization.h"
+#include "libemb/mbs/dae/linearization.h"
 #include "libemb/mbs/constraints/assembly.h"
 #include "libemb/mbs/forces/applied_load.h"
 #include "libemb/mbs/forces/spring_damper.h"

@@ -1,5 +1,5 @@
 // `emb campbell` and `emb tvd-tune` as a user meets them, on the Jeffcott disc scene
-// (tools/scenes/jeffcott_disc.yaml; closed form in tests/mbs/analysis/campbell_test.cpp):
+// (tools/scenes/jeffcott_disc.yaml; closed form in tests/mbs/linear/campbell_test.cpp):
 // the crossings table as JSON, the diagram file, the scene set to each speed; bad input gives
 // a message naming the thing and exit code 1.
 

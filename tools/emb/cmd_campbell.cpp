@@ -2,7 +2,7 @@
 // speed the scene is set to that speed (libemb/scene/scene_at_speed.h), linearised about its
 // assembled start with multipliers from the acceleration level (tools/emb/operating_modes.h)
 // and, by default, averaged over --angles angles of a revolution (--linearise cycle-average,
-// libemb/mbs/analysis/cycle_average.h; the spread of the frozen frequencies is reported),
+// libemb/mbs/linear/cycle_average.h; the spread of the frozen frequencies is reported),
 // its installed natural frequencies computed (first-order form, gyroscopic terms in the
 // stationary frame: forward/backward whirl split), the modes followed across speeds by MAC,
 // classified torsion/bending/axial on the rotor body, and the engine-order crossings listed.

@@ -218,6 +218,8 @@ struct ReduceCommand {
     cert.Add("orthonormality_limit", "orthonormality limit (scaled by cond M^)",
              ct.orthonormality_limit);
     cert.Add("k_diagonality_error", "K-diagonality error", ct.k_diagonality_error);
+    cert.Add("degenerate_coupling", "stiffness coupling of near-equal modes (<= 5e-9)",
+             ct.degenerate_coupling);
     cert.Add("rigid_stiffness", "rigid-motion strain residual", ct.rigid_stiffness);
     if (ct.reference_run) {
       cert.Add("fmax_hz", "compared up to [Hz]", ct.fmax_hz);

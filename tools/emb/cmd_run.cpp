@@ -21,7 +21,7 @@
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/results/results_writer.h"
 #include "libemb/scene/scene.h"
-#include "libemb/scene/stress_recorder.h"
+#include "libemb/results/stress_recorder.h"
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"
 #include "tools/emb/interrupt.h"
@@ -66,16 +66,16 @@ struct RunCommand {
                         st.type == mbs::AnalysisType::kDynamic;
     if (!series || force) return;
     const double samples = std::floor((st.t_end - st.t_start) / st.output_step) + 2.0;
-    const double bytes = samples * static_cast<double>(scene::ResultsWriter::BytesPerSample(sc.system));
-    EMB_THROW_IF(samples > scene::kMaxOutputSamples,
+    const double bytes = samples * static_cast<double>(results::ResultsWriter::BytesPerSample(sc.system));
+    EMB_THROW_IF(samples > results::kMaxOutputSamples,
                  "the run would write " << samples << " samples (t from " << st.t_start
                                         << " to " << st.t_end << " s every " << st.output_step
-                                        << " s); the limit is " << scene::kMaxOutputSamples
+                                        << " s); the limit is " << results::kMaxOutputSamples
                                         << ": use a larger output step (--dt), or --force");
-    EMB_THROW_IF(!no_output && bytes > scene::kMaxOutputBytes,
+    EMB_THROW_IF(!no_output && bytes > results::kMaxOutputBytes,
                  "the results file would grow to about " << bytes / 1e9 << " GB (" << samples
                                                           << " samples); the limit is "
-                                                          << scene::kMaxOutputBytes / 1e9
+                                                          << results::kMaxOutputBytes / 1e9
                                                           << " GB: use a larger output step "
                                                              "(--dt), or --force");
   }
@@ -108,7 +108,7 @@ struct RunCommand {
     CheckWritableOutput(fields_h5, "the stress fields beside the results");
     CheckWritableOutput(fields_xdmf, "the stress fields' XDMF beside the results");
     CheckDistinctFiles({h5, csv_path, fields_h5, fields_xdmf}, sc.inputs);
-    if (!csv_path.empty()) (void)scene::ChannelSet(sc.system, sc.output.channels);  // names
+    if (!csv_path.empty()) (void)results::ChannelSet(sc.system, sc.output.channels);  // names
     CheckOutputSize(sc, st);
     OutputLock h5_lock, csv_lock;
     if (!h5.empty()) h5_lock = OutputLock(h5);
@@ -121,15 +121,19 @@ struct RunCommand {
     ReportProgress(progress, "assembly", 0.0);
     const mbs::PreparedRun run = mbs::PrepareRun(sc.system, st);
     const double t_prepare = sw.seconds();
-    std::optional<scene::ResultsWriter> writer;
-    std::optional<scene::CsvWriter> csv_writer;
+    // From the results file's creation to its close, the first SIGINT/SIGTERM stops the run
+    // at the next sample (interrupt.h), so the file always ends with its status; a signal that
+    // comes after the last sample ends the process once the files are complete.
+    std::optional<GracefulStop> graceful(std::in_place);
+    std::optional<results::ResultsWriter> writer;
+    std::optional<results::CsvWriter> csv_writer;
     if (!h5.empty()) {
       writer.emplace(h5, run.system, sc.source, mbs::Name(st.type));
       writer->RecordTruncations(run.truncations);
     }
     if (!csv_path.empty()) csv_writer.emplace(csv_path, run.system, sc.output.channels);
-    scene::StressRecorder stress(run.system, sc.stress_outputs);
-    std::optional<scene::SteadyStateMonitor> steady;
+    results::StressRecorder stress(run.system, sc.stress_outputs);
+    std::optional<results::SteadyStateMonitor> steady;
     if (sc.steady_state.enabled() && st.type == mbs::AnalysisType::kDynamic) {
       steady.emplace(run.system, sc.steady_state, st.t_start, st.output_step);
       st.t_end = steady->t_end();
@@ -139,8 +143,6 @@ struct RunCommand {
     sw.Restart();
     mbs::RunResult r;
     {
-      // The first SIGINT/SIGTERM stops the run at the next sample (interrupt.h).
-      const GracefulStop graceful;
       try {
         r = mbs::RunAnalysis(
             run, st,
@@ -183,6 +185,10 @@ struct RunCommand {
     }
     if (csv_writer) csv_writer->Close();
     if (!fields_h5.empty()) stress.WriteFields(fields_h5, fields_xdmf);
+    graceful.reset();
+    if (const int sig = StopSignal())
+      throw Interrupted(sig, std::string("interrupted by ") + SignalName(sig) +
+                                 " after the run finished; its results are complete");
     FinishProgressLine();
     for (const auto& w : run.warnings) std::cerr << "emb: warning: " << w << "\n";
     for (const auto& w : r.warnings) std::cerr << "emb: warning: " << w << "\n";
@@ -228,7 +234,7 @@ struct RunCommand {
     if (!run.start_note.empty()) s.Add("elastic_start", "elastic start", run.start_note);
     s.Add("t_reached", "time reached [s]", r.t_reached);
     if (steady) {
-      const scene::SteadyStateReport& ss = steady->report();
+      const results::SteadyStateReport& ss = steady->report();
       s.Add("steady_state", "steady state",
             std::string(ss.converged ? "reached" : "NOT reached") + " after " +
                 std::to_string(ss.cycles) + " cycles of " + std::to_string(sc.steady_state.period) +
@@ -303,7 +309,7 @@ struct RunCommand {
          std::string("life [") + (periodic ? "cycles" : "runs") + "]", "rainflow cycles",
          "max range [Pa]", "max Goodman amplitude [Pa]"});
     if (stress.has_fatigue() && r.num_samples > 0) {
-      for (const scene::FatigueRow& f : stress.Fatigue(window_start, window_end, periodic))
+      for (const results::FatigueRow& f : stress.Fatigue(window_start, window_end, periodic))
         fatigue.AddRow({f.output, f.group, f.measure, static_cast<long long>(f.node), f.damage,
                         f.life, f.cycles, f.max_range, f.max_equivalent});
       s.Add("fatigue_window", "fatigue window [s]",

@@ -33,14 +33,15 @@ struct RunUpCommand {
     settings.channels = channels;
     settings.orders = sweep::ParseValueList(orders_text, "--orders");
     settings.samples_per_cycle = samples_per_cycle;
-    EMB_THROW_IF(samples_per_cycle < 8, "--samples-per-cycle: expected >= 8, got "
-                                            << samples_per_cycle);
+    EMB_THROW_IF(samples_per_cycle < 8,
+                 "--samples-per-cycle: expected >= 8, got " << samples_per_cycle);
     if (output.empty()) output = std::filesystem::path(file).stem().string() + "_runup.h5";
     const PreparedOutputs outputs({{output, "-o"}}, {file});
-    const scene::ResultsChannel theta = scene::ReadBodyRotationAngle(file, angle, axis, 0.0);
+    const results::ResultsChannel theta = results::ReadBodyRotationAngle(file, angle, axis, 0.0);
     if (!theta.warning.empty()) std::cerr << "emb: warning: " << theta.warning << "\n";
     std::vector<std::vector<double>> values;
-    for (const std::string& c : channels) values.push_back(scene::ReadResultsChannel(file, c).values);
+    for (const std::string& c : channels)
+      values.push_back(results::ReadResultsChannel(file, c).values);
     sweep::SweepData d;
     d.scene = file;
     d.settings = settings;
@@ -81,8 +82,7 @@ void RegisterRunUpCommand(CLI::App& app) {
   cmd->add_option("--orders", st->orders_text,
                   "Engine orders (multiples of 0.5): a range first:last:step or a list")
       ->capture_default_str();
-  cmd->add_option("--samples-per-cycle", st->samples_per_cycle,
-                  "Resampling points per 720 degrees")
+  cmd->add_option("--samples-per-cycle", st->samples_per_cycle, "Resampling points per 720 degrees")
       ->capture_default_str();
   cmd->add_option("-o,--output", st->output,
                   "Output (sweep file format); default RESULTS-stem_runup.h5 here")

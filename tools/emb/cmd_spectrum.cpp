@@ -3,10 +3,10 @@
 // body's rotation (--angle BODY [--axis x]), a revolute joint's angle (--angle JOINT) or a
 // constant speed (--rpm N).
 
-#include <sstream>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/common/number_check.h"
@@ -23,7 +23,7 @@ struct SpectrumCommand {
   std::string file, channel, angle_body, axis{"x"}, csv;
   std::optional<double> rpm;
   double angle_start{0.0};
-  scene::OrderSpectrumSettings settings;
+  results::OrderSpectrumSettings settings;
   OutputOptions out;
 
   void Run() const {
@@ -35,13 +35,14 @@ struct SpectrumCommand {
     CheckInteger("--cycles", settings.cycles, 0, 100000000);
     CheckNumber("--orders", settings.max_order, NumberRange::NonNegative());
     const PreparedOutputs outputs({{csv, "--csv"}}, {file});
-    const scene::ResultsChannel y = scene::ReadResultsChannel(file, channel);
+    const results::ResultsChannel y = results::ReadResultsChannel(file, channel);
     if (!y.warning.empty()) std::cerr << "emb: warning: " << y.warning << "\n";
     std::vector<double> angle;
     std::string angle_source;
     if (!angle_body.empty()) {
-      angle = scene::ReadBodyRotationAngle(file, angle_body, axis, angle_start).values;
-      angle_source = "rotation of '" + angle_body + "' about world " + axis + " (or its angle, "
+      angle = results::ReadBodyRotationAngle(file, angle_body, axis, angle_start).values;
+      angle_source = "rotation of '" + angle_body + "' about world " + axis +
+                     " (or its angle, "
                      "for a joint)";
     } else {
       for (double t : y.time) angle.push_back(angle_start + 6.0 * *rpm * (t - y.time.front()));
@@ -49,23 +50,23 @@ struct SpectrumCommand {
     }
     // A run that searched for its periodic steady state ended with the steady cycle: by
     // default that cycle alone is analysed (the earlier ones hold the start-up).
-    const scene::ResultsSteadyState steady = scene::ReadResultsSteadyState(file);
-    scene::OrderSpectrumSettings used = settings;
+    const results::ResultsSteadyState steady = results::ReadResultsSteadyState(file);
+    results::OrderSpectrumSettings used = settings;
     std::string window = used.cycles > 0 ? "the last " + std::to_string(used.cycles) + " (--cycles)"
                                          : "every whole cycle the data cover";
     if (steady.present && used.cycles == 0) {
       if (steady.converged) {
         used.cycles = 1;
         window = "the steady-state cycle " + std::to_string(steady.cycle_start) + " .. " +
-                 std::to_string(steady.cycle_end) + " s (change " +
-                 std::to_string(steady.change) + ")";
+                 std::to_string(steady.cycle_end) + " s (change " + std::to_string(steady.change) +
+                 ")";
       } else {
         std::cerr << "emb: warning: " << file << " did not reach its periodic steady state "
                   << "(last cycle-to-cycle change " << steady.change << ", tolerance "
                   << steady.tolerance << "): the spectrum holds start-up transients\n";
       }
     }
-    const scene::OrderSpectrum sp = scene::CalcOrderSpectrum(angle, y.values, used);
+    const results::OrderSpectrum sp = results::CalcOrderSpectrum(angle, y.values, used);
 
     Table t("Engine-order spectrum of " + channel, {"order", "amplitude", "phase_deg"},
             {"order", "amplitude", "phase [deg]"});
@@ -84,7 +85,8 @@ struct SpectrumCommand {
       std::ostringstream os;
       os.precision(10);
       os << "order,amplitude,phase_deg\n";
-      for (const auto& l : sp.lines) os << l.order << "," << l.amplitude << "," << l.phase_deg << "\n";
+      for (const auto& l : sp.lines)
+        os << l.order << "," << l.amplitude << "," << l.phase_deg << "\n";
       WriteTextFileAtomic(csv, os.str());
     }
     if (out.json) {
@@ -118,13 +120,15 @@ void RegisterSpectrumCommand(CLI::App& app) {
                   "revolute joint whose angle is (e.g. main_bearing)");
   cmd->add_option("--axis", st->axis, "World axis of the crank rotation: x, y or z")
       ->capture_default_str();
-  cmd->add_option("--rpm", st->rpm, "Instead of --angle: a constant speed [rpm] from the first sample");
+  cmd->add_option("--rpm", st->rpm,
+                  "Instead of --angle: a constant speed [rpm] from the first sample");
   cmd->add_option("--angle-start", st->angle_start,
                   "Crank angle at the first sample [deg] (0 = firing TDC of cylinder 1 in "
                   "the inline-4 scenes); sets the phase reference")
       ->capture_default_str();
   cmd->add_option("--cycles", st->settings.cycles,
-                  "Whole cycles to analyse, the last ones (0 = the steady-state cycle of a run that found one, else all the data cover)")
+                  "Whole cycles to analyse, the last ones (0 = the steady-state cycle of a run "
+                  "that found one, else all the data cover)")
       ->capture_default_str();
   cmd->add_option("--orders", st->settings.max_order, "Highest order (multiple of 0.5)")
       ->capture_default_str();

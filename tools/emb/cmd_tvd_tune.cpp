@@ -24,7 +24,7 @@
 #include "libemb/common/number_check.h"
 #include "libemb/engine/torsional_damper.h"
 #include "libemb/engine/zener_rubber.h"
-#include "libemb/mbs/analysis/cycle_average.h"
+#include "libemb/mbs/linear/cycle_average.h"
 #include "libemb/mbs/core/kinematics.h"
 #include "tools/emb/commands.h"
 #include "tools/emb/common_options.h"

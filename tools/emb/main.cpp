@@ -59,11 +59,19 @@ bool InstallGeoScriptDeadline() {
               << limit << " s (a loop or macro call that does not end?); if the file is yours "
               << "and only slow, run again with --trust-geo, or set EMB_GEO_SECONDS\n";
     std::cerr.flush();
-    emb::RemoveCleanupFilesNow();
+    emb::RemoveCleanupFilesForever();
     std::_Exit(emb::cli::kExitInput);
   });
   return true;
 }
+
+// SIGINT and SIGTERM are blocked before any library constructor runs (the loader runs an
+// executable's pre-initialisation functions first), so every thread a library starts
+// inherits the mask and only emb's own signal thread takes them (interrupt.h). OpenBLAS
+// starts its threads in its constructor, before main().
+void BlockInterruptsBeforeLibraries(int, char**, char**) { emb::cli::BlockInterrupts(); }
+__attribute__((section(".preinit_array"), used)) void (*const kBlockInterrupts)(
+    int, char**, char**) = BlockInterruptsBeforeLibraries;
 
 // A name for a standard exception that says what kind of failure it was.
 const char* ExceptionKind(const std::exception& e) {
@@ -78,7 +86,12 @@ const char* ExceptionKind(const std::exception& e) {
 int main(int argc, char** argv) {
   using namespace emb::cli;
   emb::DisableHdf5ExitCleanup();
-  InstallInterruptHandlers();
+  try {
+    InstallInterruptHandlers();
+  } catch (const emb::InternalError& e) {
+    std::cerr << "emb: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
   // emb never starts programs; forbid it unless the user trusts a geometry script (whose
   // SystemCall would then run, as asked).
   bool trust_geo = false;

@@ -6,7 +6,7 @@
 #include <Eigen/Dense>
 #include <string>
 
-#include "libemb/mbs/analysis/campbell.h"
+#include "libemb/mbs/linear/campbell.h"
 #include "libemb/scene/scene_at_speed.h"
 
 namespace emb::cli {

@@ -11,6 +11,7 @@
 #include <map>
 
 #include "libemb/common/error.h"
+#include "tools/emb/interrupt.h"
 
 namespace emb::cli {
 
@@ -25,7 +26,7 @@ void RunInChildProcesses(const std::vector<int>& jobs, int processes,
       std::cout.flush();
       std::cerr.flush();
       std::fflush(nullptr);
-      const pid_t pid = fork();
+      const pid_t pid = ForkWorker();  // a termination forwards its signal to it
       if (pid < 0) EMB_THROW(InternalError, "fork failed: " << std::strerror(errno));
       if (pid == 0) {
         int code = 4;
@@ -43,6 +44,7 @@ void RunInChildProcesses(const std::vector<int>& jobs, int processes,
     const pid_t pid = waitpid(-1, &status, 0);
     if (pid < 0 && errno == EINTR) continue;
     if (pid < 0) EMB_THROW(InternalError, "waitpid failed: " << std::strerror(errno));
+    ForgetWorker(pid);
     const auto it = running.find(pid);
     if (it == running.end()) continue;
     const int j = it->second;

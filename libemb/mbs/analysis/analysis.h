@@ -22,10 +22,10 @@
 
 #include "libemb/common/progress.h"
 #include "libemb/integrators/ida_solver.h"
-#include "libemb/mbs/analysis/basis_truncation.h"
-#include "libemb/mbs/analysis/installed_basis.h"
+#include "libemb/mbs/flexible/basis_truncation.h"
+#include "libemb/mbs/flexible/installed_basis.h"
 #include "libemb/mbs/constraints/assembly.h"
-#include "libemb/mbs/analysis/event_handling.h"
+#include "libemb/mbs/dae/event_handling.h"
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/mbs/core/dynamics.h"
 #include "libemb/mbs/core/system.h"
@@ -109,7 +109,7 @@ struct AnalysisSettings {
   /// of its energy). With one atol for both, a mode at f Hz has its velocity resolved 2 pi f
   /// times more finely than its displacement, and the lightly damped vibration of the
   /// highest kept modes, not the motion, sets the step (measured: a slider-crank with a
-  /// flexible rod at 60 rpm took 10 us steps, tests/mbs/flexible/near_singular_test.cpp).
+  /// flexible rod at 60 rpm took 10 us steps, tests/mbs/parts/near_singular_test.cpp).
   bool modal_velocity_atol_by_frequency{true};
   /// Dynamic analysis: IDA's Newton convergence factor (IdaOptions::newton_convergence_factor),
   /// tighter than SUNDIALS' 0.33 for the GGL DAE (measurements there).
@@ -266,9 +266,12 @@ RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
                       const SampleSink& sink, const ProgressFn& progress = {},
                       const StopFn& stop = {});
 
-/// A sample at (q, v, vdot, lambda, t), evaluating reactions, energies and residuals.
+/// A sample at (q, v, vdot, lambda, t), evaluating reactions, energies and residuals; the
+/// force elements' loads with their continuous states `z` (System::num_force_states()) when
+/// given, else their steady states.
 Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
                   const Eigen::VectorXd& v, const Eigen::VectorXd& vdot,
-                  const Eigen::VectorXd& lambda, ConstraintWorkspace* workspace);
+                  const Eigen::VectorXd& lambda, ConstraintWorkspace* workspace,
+                  const Eigen::VectorXd* z = nullptr);
 
 }  // namespace emb::mbs

@@ -9,7 +9,7 @@
 #include "libemb/mbs/analysis/analysis_internal.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
 #include "libemb/mbs/forces/force_jacobian.h"
-#include "libemb/mbs/analysis/linearization.h"
+#include "libemb/mbs/dae/linearization.h"
 #include "libemb/mbs/core/system.h"
 
 namespace emb::mbs::internal {

@@ -55,11 +55,15 @@ Eigen::VectorXd CalcElementForces(const System& system, const std::vector<BodyKi
 
 void AddElementForces(const System& system, const std::vector<BodyKinematics>& bodies,
                       const std::vector<MarkerKinematics>& markers, double t,
-                      ConstraintWorkspace* workspace, Eigen::Ref<Eigen::VectorXd> f) {
+                      ConstraintWorkspace* workspace, Eigen::Ref<Eigen::VectorXd> f,
+                      DomainFailure* failure, const double* z, const double* z_dot) {
   const auto& forces = system.force_elements();
   for (std::size_t k = 0; k < forces.size(); ++k) {
     ForceContext ctx{&system, &bodies, t, workspace, system.force_angle_slot(static_cast<int>(k))};
     ctx.markers = &markers;
+    ctx.failure = failure;
+    const int offset = system.force_state_offset(static_cast<int>(k));
+    if (z != nullptr && offset >= 0) ctx.z = z + offset, ctx.z_dot = z_dot + offset;
     forces[k]->AddForces(ctx, f);
   }
 }

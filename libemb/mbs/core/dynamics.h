@@ -16,6 +16,8 @@
 
 namespace emb::mbs {
 
+struct DomainFailure;  // force_element.h
+
 class System;
 class ConstraintWorkspace;
 
@@ -43,10 +45,15 @@ FlexibleTerms CalcBodyFlexibleTerms(const System& system, const BodyKinematics& 
 Eigen::VectorXd CalcElementForces(const System& system, const std::vector<BodyKinematics>& bodies,
                                   double t, ConstraintWorkspace* workspace = nullptr);
 /// Adds the force elements' part of f to `f` (size nv), with every marker's kinematics at
-/// that state given (CalcAllMarkerKinematics): no marker is evaluated twice.
+/// that state given (CalcAllMarkerKinematics): no marker is evaluated twice. An element that
+/// cannot be evaluated reports to `failure` if given (ForceContext::Fail), else throws.
+/// `z`, `z_dot`: all force elements' continuous states and rates (System::
+/// num_force_states(), element k's from System::force_state_offset(k)), or null.
 void AddElementForces(const System& system, const std::vector<BodyKinematics>& bodies,
                       const std::vector<MarkerKinematics>& markers, double t,
-                      ConstraintWorkspace* workspace, Eigen::Ref<Eigen::VectorXd> f);
+                      ConstraintWorkspace* workspace, Eigen::Ref<Eigen::VectorXd> f,
+                      DomainFailure* failure = nullptr, const double* z = nullptr,
+                      const double* z_dot = nullptr);
 
 /// Energies at one state [J]. Potential energy of gravity is -sum m_b g . p_WB.
 struct Energies {

@@ -158,10 +158,14 @@ FlexibleTerms CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d
                                 const Eigen::Vector3d& a_B, bool with_derivatives,
                                 const Eigen::VectorXd* accel) {
   FlexibleTerms t;
-  CalcFlexibleTerms(model, p_WB, R, v_WB, w, eta, eta_dot, g_W, a_B,
-                    kFlexibleMass | kFlexibleForce | kFlexibleEnergies |
-                        (with_derivatives ? kFlexibleDerivatives : 0u),
-                    accel, &t);
+  const unsigned parts = kFlexibleMass | kFlexibleForce | kFlexibleEnergies |
+                         (with_derivatives ? kFlexibleDerivatives : 0u);
+  if (accel != nullptr) {
+    const Eigen::Ref<const Eigen::VectorXd> a(*accel);
+    CalcFlexibleTerms(model, p_WB, R, v_WB, w, eta, eta_dot, g_W, a_B, parts, &a, &t);
+  } else {
+    CalcFlexibleTerms(model, p_WB, R, v_WB, w, eta, eta_dot, g_W, a_B, parts, nullptr, &t);
+  }
   return t;
 }
 

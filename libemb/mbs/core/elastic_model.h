@@ -128,7 +128,7 @@ struct FlexibleTerms {
 
   /// Scratch of the in-place evaluation (flexible_terms.cpp), kept between calls.
   struct Scratch {
-    Eigen::MatrixXd Bm, Mre, Mee, G, KG, W, Kc, P;
+    Eigen::MatrixXd Bm, Mre, Mee, G, KG, W, Kc, P, Kcd, Kae, WaT, dMre;
     Eigen::VectorXd trB, fe, Kg_eta, tmp;
   } scratch;
 };
@@ -154,7 +154,7 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
                        const Eigen::Vector3d& omega_B, const Eigen::Ref<const Eigen::VectorXd>& eta,
                        const Eigen::Ref<const Eigen::VectorXd>& eta_dot,
                        const Eigen::Vector3d& g_W, const Eigen::Vector3d& a_B, unsigned parts,
-                       const Eigen::VectorXd* accel, FlexibleTerms* out);
+                       const Eigen::Ref<const Eigen::VectorXd>* accel, FlexibleTerms* out);
 
 /// Evaluates FlexibleTerms (all parts; the derivatives if `with_derivatives`).
 FlexibleTerms CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,

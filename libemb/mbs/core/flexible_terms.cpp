@@ -18,7 +18,8 @@ Eigen::Matrix3d Block3(const Eigen::MatrixXd& Bm, int k) {
 }
 
 // Rows of Bm that give the axial vector of B_k - B_k^T, i.e. the column k of ∫ρ u x Phi_k.
-void AxialRows(const Eigen::MatrixXd& Bm, Eigen::MatrixXd* a) {
+template <typename Rows9>
+void AxialRows(const Eigen::MatrixBase<Rows9>& Bm, Eigen::MatrixXd* a) {
   a->resize(3, Bm.cols());
   a->row(0) = Bm.row(5) - Bm.row(7);
   a->row(1) = Bm.row(6) - Bm.row(2);
@@ -57,7 +58,7 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
                        const Eigen::Vector3d& w, const Eigen::Ref<const Eigen::VectorXd>& eta,
                        const Eigen::Ref<const Eigen::VectorXd>& eta_dot,
                        const Eigen::Vector3d& g_W, const Eigen::Vector3d& a_B, unsigned parts,
-                       const Eigen::VectorXd* accel, FlexibleTerms* out) {
+                       const Eigen::Ref<const Eigen::VectorXd>* accel, FlexibleTerms* out) {
   using Eigen::Matrix3d;
   using Eigen::Vector3d;
   FlexibleTerms& t = *out;
@@ -184,9 +185,12 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
     const Matrix3d Bk = Block3(x.Bm, k);
     dfe_dw.row(k) = -((Bk + Bk.transpose()) * w - 2.0 * x.trB[k] * w).transpose();
   }
-  dfe_dw.col(0).head(nd).noalias() -= 2.0 * (Sd(5) - Sd(7)).transpose() * eta_dot.head(nd);
-  dfe_dw.col(1).head(nd).noalias() -= 2.0 * (Sd(6) - Sd(2)).transpose() * eta_dot.head(nd);
-  dfe_dw.col(2).head(nd).noalias() -= 2.0 * (Sd(1) - Sd(3)).transpose() * eta_dot.head(nd);
+  // One product per matrix (a difference of matrices would be a temporary).
+  const int pairs[3][2] = {{5, 7}, {6, 2}, {1, 3}};
+  for (int k = 0; k < 3; ++k) {
+    dfe_dw.col(k).head(nd).noalias() -= 2.0 * (Sd(pairs[k][0]).transpose() * eta_dot.head(nd));
+    dfe_dw.col(k).head(nd).noalias() += 2.0 * (Sd(pairs[k][1]).transpose() * eta_dot.head(nd));
+  }
   // d(Q' w)/d eta' = P = sum_p (d c_p/d w)^T (K_p eta)^T (as d c_p / d w = 2 E_p w with
   // w^T E_p w = c_p): the transpose of the stiffening's d f_e / d w = -P^T.
   const Eigen::Matrix<double, 6, 3> dc = CentrifugalProductsDerivative(w);
@@ -212,10 +216,10 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
   }
   if (kg) {
     // d(w x Q w + Q' w)/d eta: d(Q w)/d eta = P, d(Q' w)/d eta = sum_p dc_p^T (K_p eta')^T.
-    Eigen::MatrixXd Kcd(ne, 6);
-    for (int p = 0; p < 6; ++p) Kcd.col(p).noalias() = model.kg_centrifugal[p] * eta_dot;
+    x.Kcd.resize(ne, 6);
+    for (int p = 0; p < 6; ++p) x.Kcd.col(p).noalias() = model.kg_centrifugal[p] * eta_dot;
     t.stiffness.block(3, 6, 3, ne).noalias() += Skew(w) * x.P;
-    t.stiffness.block(3, 6, 3, ne).noalias() += dc.transpose() * Kcd.transpose();
+    t.stiffness.block(3, 6, 3, ne).noalias() += dc.transpose() * x.Kcd.transpose();
   }
   auto Kee = t.stiffness.block(6, 6, ne, ne);
   Kee = -model.K;
@@ -230,11 +234,12 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
     Kee -= x.KG;
     // The translational geometric stiffness -sum_k a_B,k K_a,k eta turns with the frame:
     // a_B = R^T (a - g), d a_B / d delta pi = [a_B x].
-    Eigen::MatrixXd Kae(ne, 3);
-    for (int k = 0; k < 3; ++k) Kae.col(k).noalias() = model.kg_translational[k] * eta;
-    t.stiffness.block(6, 3, ne, 3).noalias() -= Kae * Skew(a_B);
+    x.Kae.resize(ne, 3);
+    for (int k = 0; k < 3; ++k) x.Kae.col(k).noalias() = model.kg_translational[k] * eta;
+    t.stiffness.block(6, 3, ne, 3).noalias() -= x.Kae * Skew(a_B);
     t.force_accel.setZero(n, n);
-    if (accel != nullptr) t.force_accel.block(6, 0, ne, 3).noalias() = -Kae * R.transpose();
+    if (accel != nullptr)
+      t.force_accel.block(6, 0, ne, 3).noalias() = x.Kae * (-R.transpose());
   } else {
     t.force_accel.setZero(n, n);
   }
@@ -252,16 +257,17 @@ void CalcFlexibleTerms(const ElasticModel& model, const Eigen::Vector3d& p_WB,
   t.inertia_stiffness.block(0, 6, 3, ne).noalias() = (R * Skew(a_w)) * model.St;
   // Rows w: [c x] R^T a_t + J a_w + Mre a_e.
   t.inertia_stiffness.block<3, 3>(3, 3) = Skew(c) * Skew(at_B);
-  Eigen::MatrixXd Wa = Eigen::MatrixXd::Zero(9, ne);  // Wa(r, l) = (S[r] a_e)_l
-  for (int r = 0; r < 9; ++r) Wa.row(r).head(nd).noalias() = (Sd(r) * a_e.head(nd)).transpose();
-  Eigen::MatrixXd dMre;
-  AxialRows(Wa, &dMre);
+  // Wa(r, l) = (S[r] a_e)_l, kept transposed (column r) so each product fills a column.
+  x.WaT.setZero(ne, 9);
+  for (int r = 0; r < 9; ++r) x.WaT.col(r).head(nd).noalias() = Sd(r) * a_e.head(nd);
+  AxialRows(x.WaT.transpose(), &x.dMre);
   for (int k = 0; k < ne; ++k) {
     const Matrix3d Bk = Block3(x.Bm, k);
     const Matrix3d dJ = 2.0 * x.trB[k] * Matrix3d::Identity() - Bk - Bk.transpose();
-    dMre.col(k) += dJ * a_w;
+    x.dMre.col(k) += dJ * a_w;
   }
-  t.inertia_stiffness.block(3, 6, 3, ne) = -Skew(at_B) * model.St + dMre;
+  t.inertia_stiffness.block(3, 6, 3, ne) = x.dMre;
+  t.inertia_stiffness.block(3, 6, 3, ne).noalias() -= Skew(at_B) * model.St;
   // Rows w also hold -Q(eta) a_w: d/d eta = -sum_p (d c_p/d w at a_w)^T (K_p eta)^T.
   if (kg)
     t.inertia_stiffness.block(3, 6, 3, ne).noalias() -=

@@ -5,6 +5,14 @@
 
 namespace emb::mbs {
 
+void ForceContext::Fail(const std::string& message) const {
+  if (failure == nullptr) throw NumericalError(message);
+  if (!failure->failed) {
+    failure->failed = true;
+    failure->message = message;
+  }
+}
+
 const MarkerKinematics& ForceContext::Marker(int m, MarkerKinematics* scratch) const {
   if (markers != nullptr) return (*markers)[m];
   CalcMarkerKinematics(*system, *bodies, m, scratch);
@@ -39,6 +47,26 @@ EventResponse ForceElement::SettleEventState(const ForceContext& ctx) const {
   EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr && ctx.workspace != nullptr &&
             ctx.vdot != nullptr);
   return DoSettleEventState(ctx);
+}
+
+void ForceElement::CalcStateResidual(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> r) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr && ctx.z != nullptr &&
+            ctx.z_dot != nullptr && r.size() == num_continuous_states());
+  DoCalcStateResidual(ctx, r);
+}
+
+void ForceElement::AddStateJacobian(const ForceContext& ctx, double cj,
+                                    StateJacobianSink* sink) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr && ctx.z != nullptr &&
+            ctx.z_dot != nullptr && sink != nullptr);
+  DoAddStateJacobian(ctx, cj, sink);
+}
+
+void ForceElement::CalcSteadyStates(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> z,
+                                    Eigen::Ref<Eigen::VectorXd> z_dot) const {
+  EMB_CHECK(ctx.system != nullptr && ctx.bodies != nullptr &&
+            z.size() == num_continuous_states() && z_dot.size() == z.size());
+  DoCalcSteadyStates(ctx, z, z_dot);
 }
 
 void AddWrench(const StateLayout& layout, const MarkerKinematics& M, const Eigen::Vector3d& p_WQ,

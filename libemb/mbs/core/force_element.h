@@ -16,6 +16,15 @@ namespace emb::mbs {
 
 class ConstraintWorkspace;
 class ForceJacobianSink;  // forces/force_jacobian.h
+class StateJacobianSink;  // forces/force_jacobian.h
+
+/// Where force elements report that they cannot be evaluated at a state (ForceContext::Fail):
+/// the first report is kept. The caller owns it and decides what a failure means (the GGL DAE:
+/// a recoverable failure, the integrator retries with a smaller step).
+struct DomainFailure {
+  bool failed{false};
+  std::string message;
+};
 
 /// What a force element may read: all body kinematics at (q, v), the time, and (for
 /// elements that follow a joint angle across turns) the run's workspace with the first of
@@ -33,6 +42,19 @@ struct ForceContext {
   const std::vector<MarkerKinematics>* markers{nullptr};
   /// Event functions only (may be null elsewhere): the accelerations v' (size nv).
   const Eigen::VectorXd* vdot{nullptr};
+  /// The caller's failure channel (may be null).
+  DomainFailure* failure{nullptr};
+  /// The element's continuous states z and their rates z' (num_continuous_states() each),
+  /// inside a dynamic run; null elsewhere (static and linear analyses, outputs from q and v
+  /// alone): an element with states then works with its steady states at the motion
+  /// (ForceElement::CalcSteadyStates).
+  const double* z{nullptr};
+  const double* z_dot{nullptr};
+
+  /// An element cannot be evaluated at this state (a journal at its shell, an angle at its
+  /// singularity): recorded in `failure` if the caller gave one (the element then returns
+  /// without adding anything), otherwise thrown as NumericalError.
+  void Fail(const std::string& message) const;
 
   /// Marker m at this state: the shared one, or evaluated into `scratch` (and returned).
   const MarkerKinematics& Marker(int m, MarkerKinematics* scratch) const;
@@ -118,6 +140,31 @@ class ForceElement {
   /// at a restart is not watched until it leaves zero). restart = true if it switched.
   EventResponse SettleEventState(const ForceContext& ctx) const;
 
+  /// Continuous states (a rubber arm's spring deflection, a film's fill fraction): an element
+  /// may own states z that are integrated with the bodies. The GGL DAE (ggl_dae.h) appends
+  /// them to its unknowns after the multipliers, with the element's own residual rows
+  ///   R(t, z, z', q, v) = 0   (num_continuous_states() rows),
+  /// in the iteration matrix with their exact derivatives (AddStateJacobian). Elements with
+  /// states: a non-zero count (constant).
+  int num_continuous_states() const { return DoNumContinuousStates(); }
+  /// R at the context's state; ctx.z and ctx.z_dot are set.
+  void CalcStateResidual(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> r) const;
+  /// dR/dz + cj dR/dz', dR/d(x, v) of the bodies and the forces' df/dz to `sink`
+  /// (force_jacobian.h), the same blocks at every state. ctx.z and ctx.z_dot are set.
+  void AddStateJacobian(const ForceContext& ctx, double cj, StateJacobianSink* sink) const;
+  /// The states at which the element is steady at the context's motion (R = 0 with z' = 0
+  /// where the states are differential), and their rates: the start of a dynamic run and
+  /// what the element uses where a context has no states.
+  void CalcSteadyStates(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> z,
+                        Eigen::Ref<Eigen::VectorXd> z_dot) const;
+  /// 1 for a state in the integrator's local error test, 0 for one excluded from it (an
+  /// algebraic state). Default: all 1.
+  double StateErrorWeight(int i) const { return DoStateErrorWeight(i); }
+  /// The integrator's absolute tolerance on state i (in its unit).
+  double StateTolerance(int i) const { return DoStateTolerance(i); }
+  /// "arm_1.deflection" for messages and the integrator's step-limiter report.
+  std::string StateName(int i) const { return DoStateName(i); }
+
  protected:
   virtual void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const = 0;
   virtual void DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const = 0;
@@ -135,6 +182,14 @@ class ForceElement {
   virtual void DoCalcEventFunctions(const ForceContext&, Eigen::Ref<Eigen::VectorXd>) const {}
   virtual EventResponse DoHandleEvent(const ForceContext&, const int*) const { return {}; }
   virtual EventResponse DoSettleEventState(const ForceContext&) const { return {}; }
+  virtual int DoNumContinuousStates() const { return 0; }
+  virtual void DoCalcStateResidual(const ForceContext&, Eigen::Ref<Eigen::VectorXd>) const {}
+  virtual void DoAddStateJacobian(const ForceContext&, double, StateJacobianSink*) const {}
+  virtual void DoCalcSteadyStates(const ForceContext&, Eigen::Ref<Eigen::VectorXd>,
+                                  Eigen::Ref<Eigen::VectorXd>) const {}
+  virtual double DoStateErrorWeight(int) const { return 1.0; }
+  virtual double DoStateTolerance(int) const { return 1e-8; }
+  virtual std::string DoStateName(int i) const { return "z[" + std::to_string(i) + "]"; }
 
  private:
   std::string name_;

@@ -127,21 +127,35 @@ void CalcMarkerKinematics(const System& system, const std::vector<BodyKinematics
 Eigen::MatrixXd CalcMarkerCurvature(const MarkerKinematics& M,
                                     const Eigen::Matrix<double, 6, 1>& g) {
   EMB_CHECK(M.flexible() && M.marker != nullptr);
+  const Eigen::Index n = 6 + M.marker->shape_t.cols();
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
+  ScratchMatrices scratch;
+  AddMarkerCurvature(M, g, K, &scratch);
+  return K;
+}
+
+void AddMarkerCurvature(const MarkerKinematics& M, const Eigen::Matrix<double, 6, 1>& g,
+                        Eigen::Ref<Eigen::MatrixXd> K, ScratchMatrices* scratch) {
+  EMB_CHECK(M.flexible() && M.marker != nullptr);
   const Eigen::MatrixXd& Phi = M.marker->shape_t;
   const Eigen::MatrixXd& Psi = M.marker->shape_r;
-  const int ne = static_cast<int>(Phi.cols());
+  const Eigen::Index ne = Phi.cols();
+  EMB_CHECK(K.rows() == 6 + ne && K.cols() == 6 + ne);
   const Eigen::Vector3d f_B = M.R_body.transpose() * g.head<3>();
   const Eigen::Vector3d n = M.R_body_marker * g.tail<3>();
   const Eigen::Matrix3d Sf = Skew(f_B), Sn = Skew(n);
-  const Eigen::MatrixXd JPsi = M.Jl * Psi;
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(6 + ne, 6 + ne);
-  K.block<3, 3>(3, 3) = Skew(M.s_body) * Sf;
-  K.block(3, 6, 3, ne) = -Sf * Phi - Sn * JPsi;
-  K.block(6, 3, ne, 3) = Phi.transpose() * Sf;
-  K.block(6, 6, ne, ne) =
-      Psi.transpose() * (LeftJacobianSO3ProductDerivative(M.psi, n, true) * Psi -
-                         M.Jl.transpose() * Sn * JPsi);
-  return K;
+  Eigen::Map<Eigen::MatrixXd> JPsi = scratch->View(4, 3, ne);
+  JPsi.noalias() = M.Jl * Psi;
+  K.block<3, 3>(3, 3) += Skew(M.s_body) * Sf;
+  K.block(3, 6, 3, ne).noalias() -= Sf * Phi;
+  K.block(3, 6, 3, ne).noalias() -= Sn * JPsi;
+  K.block(6, 3, ne, 3).noalias() += Phi.transpose() * Sf;
+  // Psi^T (D Psi - Jl^T Sn Jl Psi), D = LeftJacobianSO3ProductDerivative(psi, n).
+  const Eigen::Matrix3d inner =
+      LeftJacobianSO3ProductDerivative(M.psi, n, true) - M.Jl.transpose() * Sn * M.Jl;
+  Eigen::Map<Eigen::MatrixXd> inner_psi = scratch->View(5, 3, ne);
+  inner_psi.noalias() = inner * Psi;
+  K.block(6, 6, ne, ne).noalias() += Psi.transpose() * inner_psi;
 }
 
 Eigen::Matrix<double, 6, 1> VirtualBodyVelocity(const MarkerKinematics& M) {

@@ -6,6 +6,8 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "libemb/common/scratch_matrices.h"
+
 namespace emb::mbs {
 
 class System;
@@ -75,6 +77,10 @@ struct MarkerKinematics {
 /// map^T (dg/dx_M) map). @pre M.flexible(). Cost O(ne^2).
 Eigen::MatrixXd CalcMarkerCurvature(const MarkerKinematics& M,
                                     const Eigen::Matrix<double, 6, 1>& g);
+/// Adds CalcMarkerCurvature(M, g) to K ((6+ne)^2), its temporaries in `scratch` (buffers 4
+/// and up): no allocation once the sizes have been seen.
+void AddMarkerCurvature(const MarkerKinematics& M, const Eigen::Matrix<double, 6, 1>& g,
+                        Eigen::Ref<Eigen::MatrixXd> K, ScratchMatrices* scratch);
 
 /// The velocity [v', omega'_B] of the virtual rigid body that carries marker M (the body's
 /// [v_WB, omega_B] on a rigid body): the kernel Jacobian rows apply to it.

@@ -252,11 +252,18 @@ void System::Finalize() {
       ports_.push_back({c.name + ":" + c.second_joint, e, 1, c.marker_i2, c.marker_j2});
   }
   force_angle_slot_.clear();
+  force_state_offset_.clear();
+  num_force_states_ = 0;
   for (const auto& fe : forces_) {
     // Angle slots, then state slots (force_element.h).
     const int n = fe->num_angle_slots() + fe->num_state_slots();
     force_angle_slot_.push_back(n > 0 ? num_angle_slots_ : -1);
     num_angle_slots_ += n;
+    const int nz = fe->num_continuous_states();
+    EMB_THROW_IF(nz < 0, "force element '" << fe->name() << "': expected a number of continuous "
+                                            "states >= 0, got " << nz);
+    force_state_offset_.push_back(nz > 0 ? num_force_states_ : -1);
+    num_force_states_ += nz;
   }
   finalized_ = true;
 }

@@ -157,6 +157,10 @@ class System {
   /// First workspace slot of force element k (-1 if it needs none): its angle slots, then
   /// its state slots (ForceElement::num_state_slots).
   int force_angle_slot(int k) const { return force_angle_slot_.at(k); }
+  /// Continuous states of the force elements (ForceElement::num_continuous_states), element
+  /// after element: element k owns [force_state_offset(k), + its count); -1 if it has none.
+  int num_force_states() const { return num_force_states_; }
+  int force_state_offset(int k) const { return force_state_offset_.at(k); }
   /// Reaction ports (set by Finalize): port e < elements().size() is element e's first port;
   /// the second ports of the couplers follow in element order.
   const std::vector<ReactionPort>& reaction_ports() const { return ports_; }
@@ -195,6 +199,8 @@ class System {
   StateLayout layout_;
   int num_angle_slots_{0};
   std::vector<int> force_angle_slot_;
+  int num_force_states_{0};
+  std::vector<int> force_state_offset_;
   bool finalized_{false};
 };
 

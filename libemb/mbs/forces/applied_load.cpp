@@ -1,6 +1,8 @@
 #include "libemb/mbs/forces/applied_load.h"
 
+#include <array>
 #include <cmath>
+#include <optional>
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/forces/force_jacobian.h"
@@ -52,12 +54,24 @@ double AppliedLoad::CalcArgument(const ForceContext& ctx) const {
   return argument_.scale * angle + argument_.offset;
 }
 
+std::optional<FunctionValue> AppliedLoad::EvalMagnitude(const ForceContext& ctx,
+                                                        int derivatives) const {
+  try {
+    return magnitude_.Eval(CalcArgument(ctx), derivatives);
+  } catch (const NumericalError& e) {  // an expression outside its domain at this state
+    ctx.Fail("applied load '" + name() + "': " + e.what());
+    return std::nullopt;
+  }
+}
+
 void AppliedLoad::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const {
   const System& sys = *ctx.system;
   MarkerKinematics M_own;
   const MarkerKinematics& M = ctx.Marker(marker_, &M_own);
   const Eigen::Vector3d a_W = frame_ == Frame::kWorld ? direction_ : M.R_WM * direction_;
-  const Eigen::Vector3d load = magnitude_(CalcArgument(ctx)) * a_W;
+  const std::optional<FunctionValue> fx = EvalMagnitude(ctx, 0);
+  if (!fx) return;  // reported through the context
+  const Eigen::Vector3d load = fx->f * a_W;
   const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
   const Eigen::Vector3d F = kind_ == Kind::kForce ? load : zero;
   const Eigen::Vector3d T = kind_ == Kind::kTorque ? load : zero;
@@ -70,7 +84,7 @@ void AppliedLoad::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorX
 }
 
 void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
-  using Eigen::MatrixXd;
+  using MatrixXd = SlotRows<3>;  // fixed capacity: no allocation
   using Eigen::Vector3d;
   // Slots: the loaded marker's body, the reaction body, the argument joint's two bodies.
   MarkerKinematics M_own;
@@ -80,26 +94,29 @@ void AppliedLoad::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
   const MarkerKinematics* R = nullptr;
   const MarkerKinematics* AI = nullptr;
   const MarkerKinematics* AJ = nullptr;
-  std::vector<const MarkerKinematics*> slots{&M};
+  std::array<const MarkerKinematics*, kMaxForceSlots> slots{&M};
+  int num_slots = 1;
   if (reaction_marker_ >= 0) {
     R = &ctx.Marker(reaction_marker_, &R_own);
-    slots.push_back(R);
+    slots[num_slots++] = R;
   }
-  const int argument_slot = static_cast<int>(slots.size());
+  const int argument_slot = num_slots;
   if (argument_.joint_angle) {
     AI = &ctx.Marker(argument_.marker_i, &AI_own);
     AJ = &ctx.Marker(argument_.marker_j, &AJ_own);
-    slots.push_back(AI);
-    slots.push_back(AJ);
+    slots[num_slots++] = AI;
+    slots[num_slots++] = AJ;
   }
-  LocalForceJacobian jac(slots);
+  LocalForceJacobian jac(slots.data(), num_slots);
   const int n = jac.num_columns();
   const MarkerDerivatives dM = DifferentiateMarker(M, 0, jac.num_slots());
 
   const Vector3d a_W = frame_ == Frame::kWorld ? direction_ : Vector3d(M.R_WM * direction_);
   // df only where the load depends on the state (a joint angle): a load of time may have
   // kinks (an expression's derivatives are then never asked for).
-  const FunctionValue fx = magnitude_.Eval(CalcArgument(ctx), argument_.joint_angle ? 1 : 0);
+  const std::optional<FunctionValue> fx_or = EvalMagnitude(ctx, argument_.joint_angle ? 1 : 0);
+  if (!fx_or) return;  // reported through the context
+  const FunctionValue& fx = *fx_or;
   const Vector3d load = fx.f * a_W;
   MatrixXd dload = MatrixXd::Zero(3, n);
   if (frame_ == Frame::kMarker) dload = -fx.f * Skew(a_W) * dM.rotation_x;

@@ -4,6 +4,7 @@
 /// harmonic or a table such as cylinder pressure force over an engine cycle).
 
 #include <Eigen/Dense>
+#include <optional>
 
 #include "libemb/mbs/core/force_element.h"
 #include "libemb/mbs/core/time_function.h"
@@ -40,6 +41,10 @@ class AppliedLoad final : public ForceElement {
 
   /// The function's argument at this state (time, or the scaled continuous joint angle).
   double CalcArgument(const ForceContext& ctx) const;
+  /// The load function (and `derivatives` derivatives) at this state; an expression that
+  /// cannot be evaluated there is reported through the context (ForceContext::Fail) and
+  /// nothing is returned.
+  std::optional<FunctionValue> EvalMagnitude(const ForceContext& ctx, int derivatives) const;
 
  protected:
   void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const override;

@@ -57,7 +57,7 @@ void Bushing::DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f
 
 void Bushing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const {
   using Eigen::Matrix3d;
-  using Eigen::MatrixXd;
+  using MatrixXd = SlotMatrix;  // fixed capacity: no allocation
   using Eigen::Vector3d;
   const MarkerPair markers(ctx, i_, j_);
   const MarkerKinematics& I = markers.I;

@@ -12,7 +12,7 @@ DenseForceJacobian::DenseForceJacobian(const StateLayout& layout)
 
 namespace {
 
-void AddBodyBlock(const StateLayout& L, int a, int b, const Eigen::MatrixXd& K,
+void AddBodyBlock(const StateLayout& L, int a, int b, const Eigen::Ref<const Eigen::MatrixXd>& K,
                   Eigen::MatrixXd* out) {
   EMB_CHECK(K.rows() == L.body_nv(a) && K.cols() == L.body_nv(b));
   ForEachBodySubBlock(L, a, b, [&](int r, int c, int i0, int j0, int nr, int nc) {
@@ -22,21 +22,95 @@ void AddBodyBlock(const StateLayout& L, int a, int b, const Eigen::MatrixXd& K,
 
 }  // namespace
 
-void DenseForceJacobian::AddStiffness(int a, int b, const Eigen::MatrixXd& K) {
+void DenseForceJacobian::AddStiffness(int a, int b, const Eigen::Ref<const Eigen::MatrixXd>& K) {
   AddBodyBlock(layout_, a, b, K, &stiffness_);
 }
 
-void DenseForceJacobian::AddDamping(int a, int b, const Eigen::MatrixXd& D) {
+void DenseForceJacobian::AddDamping(int a, int b, const Eigen::Ref<const Eigen::MatrixXd>& D) {
   AddBodyBlock(layout_, a, b, D, &damping_);
 }
 
-LocalForceJacobian::LocalForceJacobian(std::vector<const MarkerKinematics*> slot_markers)
-    : stiffness(Eigen::MatrixXd::Zero(6 * slot_markers.size(), 6 * slot_markers.size())),
-      damping(Eigen::MatrixXd::Zero(6 * slot_markers.size(), 6 * slot_markers.size())),
-      markers_(std::move(slot_markers)),
-      slot_force_(Eigen::VectorXd::Zero(6 * markers_.size())),
-      slot_force_set_(markers_.size(), false) {
-  for (const auto* m : markers_) EMB_CHECK(m != nullptr);
+void ForceJacobianSink::AddMarkerBlocks(const MarkerKinematics& Ma, const MarkerKinematics& Mb,
+                                        const Eigen::Ref<const Matrix6d>& K,
+                                        const Eigen::Ref<const Matrix6d>& D,
+                                        const Eigen::Matrix<double, 6, 1>* curvature_force) {
+  if (!Ma.flexible() && !Mb.flexible()) {
+    AddStiffness(Ma.body, Mb.body, K);
+    AddDamping(Ma.body, Mb.body, D);
+    return;
+  }
+  // K_ab -> map_a^T (K map_b + D map_rate_b) + Curvature_a,  D_ab -> map_a^T D map_b, with
+  // the identity for a rigid side.
+  const Eigen::Index na = Ma.flexible() ? Ma.map.cols() : 6;
+  const Eigen::Index nb = Mb.flexible() ? Mb.map.cols() : 6;
+  ScratchMatrices& w = *scratch_;
+  Eigen::Map<Eigen::MatrixXd> Kb = w.View(0, 6, nb), Db = w.View(1, 6, nb);
+  if (Mb.flexible()) {
+    Kb.noalias() = K * Mb.map;
+    Kb.noalias() += D * Mb.map_rate;
+    Db.noalias() = D * Mb.map;
+  } else {
+    Kb = K;
+    Db = D;
+  }
+  Eigen::Map<Eigen::MatrixXd> Kab = w.View(2, na, nb), Dab = w.View(3, na, nb);
+  if (Ma.flexible()) {
+    Kab.noalias() = Ma.map.transpose() * Kb;
+    Dab.noalias() = Ma.map.transpose() * Db;
+  } else {
+    Kab = Kb;
+    Dab = Db;
+  }
+  if (curvature_force) AddMarkerCurvature(Ma, *curvature_force, Kab, &w);
+  AddStiffness(Ma.body, Mb.body, Kab);
+  AddDamping(Ma.body, Mb.body, Dab);
+}
+
+void StateJacobianSink::AddMarkerStateRows(int row, const MarkerKinematics& M,
+                                           const Eigen::Ref<const Eigen::MatrixXd>& dR_dX,
+                                           const Eigen::Ref<const Eigen::MatrixXd>& dR_dV) {
+  EMB_CHECK(dR_dX.cols() == 6 && dR_dV.cols() == 6 && dR_dX.rows() == dR_dV.rows());
+  if (M.body == 0) return;
+  if (!M.flexible()) {
+    AddStateStiffness(row, M.body, dR_dX);
+    AddStateDamping(row, M.body, dR_dV);
+    return;
+  }
+  const Eigen::Index n = M.map.cols();
+  Eigen::Map<Eigen::MatrixXd> K = scratch_->View(0, dR_dX.rows(), n);
+  Eigen::Map<Eigen::MatrixXd> D = scratch_->View(1, dR_dX.rows(), n);
+  K.noalias() = dR_dX * M.map;
+  K.noalias() += dR_dV * M.map_rate;
+  D.noalias() = dR_dV * M.map;
+  AddStateStiffness(row, M.body, K);
+  AddStateDamping(row, M.body, D);
+}
+
+void StateJacobianSink::AddMarkerForceByState(const MarkerKinematics& M, int col,
+                                              const Eigen::Ref<const Eigen::MatrixXd>& df6_dz) {
+  EMB_CHECK(df6_dz.rows() == 6);
+  if (M.body == 0) return;
+  if (!M.flexible()) {
+    AddForceByState(M.body, col, df6_dz);
+    return;
+  }
+  Eigen::Map<Eigen::MatrixXd> F = scratch_->View(2, M.map.cols(), df6_dz.cols());
+  F.noalias() = M.map.transpose() * df6_dz;
+  AddForceByState(M.body, col, F);
+}
+
+LocalForceJacobian::LocalForceJacobian(std::initializer_list<const MarkerKinematics*> slot_markers)
+    : LocalForceJacobian(slot_markers.begin(), static_cast<int>(slot_markers.size())) {}
+
+LocalForceJacobian::LocalForceJacobian(const MarkerKinematics* const* slot_markers, int count)
+    : num_slots_(count) {
+  EMB_CHECK(count >= 0 && count <= kMaxForceSlots);
+  for (int s = 0; s < count; ++s) {
+    EMB_CHECK(slot_markers[s] != nullptr);
+    markers_[s] = slot_markers[s];
+  }
+  stiffness.setZero(6 * count, 6 * count);
+  damping.setZero(6 * count, 6 * count);
 }
 
 void LocalForceJacobian::SetSlotForce(int slot, const Eigen::Matrix<double, 6, 1>& f6) {
@@ -51,20 +125,13 @@ void LocalForceJacobian::ScatterTo(ForceJacobianSink* sink) const {
     const MarkerKinematics& Ma = *markers_[a];
     if (Ma.body == 0) continue;
     EMB_CHECK(!Ma.flexible() || slot_force_set_[a]);
+    const Eigen::Matrix<double, 6, 1> f_a = slot_force_.segment<6>(6 * a);
     for (int b = 0; b < num_slots(); ++b) {
       const MarkerKinematics& Mb = *markers_[b];
       if (Mb.body == 0) continue;
-      Eigen::MatrixXd K = stiffness.block<6, 6>(6 * a, 6 * b);
-      Eigen::MatrixXd D = damping.block<6, 6>(6 * a, 6 * b);
-      if (Ma.flexible()) K = Ma.map.transpose() * K, D = Ma.map.transpose() * D;
-      if (Mb.flexible()) {
-        K = K * Mb.map + D * Mb.map_rate;
-        D = D * Mb.map;
-      }
-      if (a == b && Ma.flexible())
-        K += CalcMarkerCurvature(Ma, slot_force_.segment<6>(6 * a));
-      sink->AddStiffness(Ma.body, Mb.body, K);
-      sink->AddDamping(Ma.body, Mb.body, D);
+      const Matrix6d K = stiffness.block<6, 6>(6 * a, 6 * b);
+      const Matrix6d D = damping.block<6, 6>(6 * a, 6 * b);
+      sink->AddMarkerBlocks(Ma, Mb, K, D, a == b && Ma.flexible() ? &f_a : nullptr);
     }
   }
 }
@@ -77,10 +144,11 @@ Eigen::Matrix<double, 6, 1> WrenchForce(const Eigen::Matrix3d& R_WB, const Eigen
 }
 
 MarkerDerivatives DifferentiateMarker(const MarkerKinematics& M, int slot, int num_slots) {
+  EMB_CHECK(num_slots >= 1 && num_slots <= kMaxForceSlots && slot >= 0 && slot < num_slots);
   const int n = 6 * num_slots, c = 6 * slot;
   MarkerDerivatives d;
-  for (Eigen::MatrixXd* m : {&d.point_x, &d.arm_x, &d.rotation_x, &d.velocity_x, &d.velocity_v,
-                             &d.omega_x, &d.omega_v})
+  for (SlotRows<3>* m : {&d.point_x, &d.arm_x, &d.rotation_x, &d.velocity_x, &d.velocity_v,
+                         &d.omega_x, &d.omega_v})
     m->setZero(3, n);
   const Eigen::Matrix3d& R = M.R_WB;
   const Eigen::Matrix3d arm = -Skew(M.s_W) * R;
@@ -96,23 +164,22 @@ MarkerDerivatives DifferentiateMarker(const MarkerKinematics& M, int slot, int n
   return d;
 }
 
-Eigen::MatrixXd WrenchStiffness(const Eigen::Matrix3d& R_WB, int slot_a, const Eigen::Vector3d& F,
-                                const Eigen::Vector3d& T, const Eigen::Vector3d& r,
-                                const Eigen::MatrixXd& dF, const Eigen::MatrixXd& dT,
-                                const Eigen::MatrixXd& dr) {
-  Eigen::MatrixXd out(6, dF.cols());
+SlotRows<6> WrenchStiffness(const Eigen::Matrix3d& R_WB, int slot_a, const Eigen::Vector3d& F,
+                            const Eigen::Vector3d& T, const Eigen::Vector3d& r,
+                            const SlotRows<3>& dF, const SlotRows<3>& dT, const SlotRows<3>& dr) {
+  SlotRows<6> out(6, dF.cols());
   out.topRows<3>() = dF;
-  out.bottomRows<3>() = R_WB.transpose() * (dT + Skew(r) * dF - Skew(F) * dr);
+  out.bottomRows<3>().noalias() = R_WB.transpose() * (dT + Skew(r) * dF - Skew(F) * dr);
   const Eigen::Vector3d n_B = R_WB.transpose() * (T + r.cross(F));
   out.block<3, 3>(3, 6 * slot_a + 3) += Skew(n_B);
   return out;
 }
 
-Eigen::MatrixXd WrenchDamping(const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& r,
-                              const Eigen::MatrixXd& dF, const Eigen::MatrixXd& dT) {
-  Eigen::MatrixXd out(6, dF.cols());
+SlotRows<6> WrenchDamping(const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& r,
+                          const SlotRows<3>& dF, const SlotRows<3>& dT) {
+  SlotRows<6> out(6, dF.cols());
   out.topRows<3>() = dF;
-  out.bottomRows<3>() = R_WB.transpose() * (dT + Skew(r) * dF);
+  out.bottomRows<3>().noalias() = R_WB.transpose() * (dT + Skew(r) * dF);
   return out;
 }
 

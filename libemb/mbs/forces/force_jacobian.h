@@ -20,14 +20,32 @@
 ///   d f_a = [dF; R_a^T (dT + [r x] dF - [F x] dr)] + [0; [n_a x] d pi_a],  n_a = R_a^T (T + r x F).
 
 #include <Eigen/Dense>
+#include <array>
+#include <initializer_list>
 #include <vector>
 
 #include "libemb/mbs/core/kinematics.h"
 #include "libemb/mbs/core/state_layout.h"
 
+#include "libemb/common/scratch_matrices.h"
+
 namespace emb::mbs {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+/// At most kMaxForceSlots local slots per element (two markers per joint coordinate of a
+/// driveline coordinate of two joints; an applied load with a reaction and an argument joint).
+/// Derivatives in the slots are fixed-capacity matrices: they live on the stack, so an
+/// iteration matrix allocates nothing (ggl_workspace.h).
+inline constexpr int kMaxForceSlots = 4;
+inline constexpr int kMaxSlotColumns = 6 * kMaxForceSlots;
+/// Rows x (6 x slots) derivatives, fixed capacity.
+template <int Rows>
+using SlotRows = Eigen::Matrix<double, Rows, Eigen::Dynamic,
+                               Rows == 1 ? Eigen::RowMajor : Eigen::ColMajor, Rows, kMaxSlotColumns>;
+/// (6 x slots) x (6 x slots), fixed capacity.
+using SlotMatrix =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSlotColumns, kMaxSlotColumns>;
 
 /// Receives the blocks of the force elements' derivatives; never called for the ground.
 /// A block of bodies (a, b) is body_nv(a) x body_nv(b) (state_layout.h): rows and columns
@@ -37,17 +55,73 @@ class ForceJacobianSink {
  public:
   virtual ~ForceJacobianSink() = default;
   /// K_ab = d f_a / d x_b.
-  virtual void AddStiffness(int body_a, int body_b, const Eigen::MatrixXd& K) = 0;
+  virtual void AddStiffness(int body_a, int body_b, const Eigen::Ref<const Eigen::MatrixXd>& K) = 0;
   /// D_ab = d f_a / d v_b.
-  virtual void AddDamping(int body_a, int body_b, const Eigen::MatrixXd& D) = 0;
+  virtual void AddDamping(int body_a, int body_b, const Eigen::Ref<const Eigen::MatrixXd>& D) = 0;
+
+  /// The blocks of a force on the virtual body of marker Ma by the motion of the virtual body
+  /// of Mb (6 x 6 each: K_ab = d f_a/d x_b, D_ab = d f_a/d v_b), taken to the bodies'
+  /// coordinates by the chain rule through the marker maps (LocalForceJacobian::ScatterTo);
+  /// `curvature_force` (a == b on a flexible marker) is the generalised force f_a whose
+  /// curvature term map's second derivative adds. Temporaries in the sink's own scratch:
+  /// nothing is allocated once their sizes have been seen.
+  void AddMarkerBlocks(const MarkerKinematics& Ma, const MarkerKinematics& Mb,
+                       const Eigen::Ref<const Matrix6d>& K, const Eigen::Ref<const Matrix6d>& D,
+                       const Eigen::Matrix<double, 6, 1>* curvature_force);
+
+ protected:
+  /// Where AddMarkerBlocks keeps its temporaries (a sink that lives for one evaluation passes
+  /// longer-lived storage, e.g. the DAE workspace's).
+  void UseScratch(ScratchMatrices* scratch) { scratch_ = scratch; }
+
+ private:
+  ScratchMatrices own_scratch_;
+  ScratchMatrices* scratch_{&own_scratch_};
+};
+
+/// Receives the iteration-matrix blocks of an element's continuous states (ForceElement::
+/// AddStateJacobian), in the element's own state numbering: R its state residual rows, z its
+/// states, f_a the generalised force on body a (force_jacobian.h's blocks, body_nv columns
+/// or rows). Never called for the ground.
+class StateJacobianSink {
+ public:
+  virtual ~StateJacobianSink() = default;
+  /// dR/dz + cj dR/dz' for the rows from `row` and the columns from `col`.
+  virtual void AddStateBlock(int row, int col, const Eigen::Ref<const Eigen::MatrixXd>& block) = 0;
+  /// dR/dx_b (rows from `row`, body_nv(b) columns in [delta p, delta pi, eta]).
+  virtual void AddStateStiffness(int row, int body,
+                                 const Eigen::Ref<const Eigen::MatrixXd>& block) = 0;
+  /// dR/dv_b (rows from `row`, body_nv(b) columns).
+  virtual void AddStateDamping(int row, int body,
+                               const Eigen::Ref<const Eigen::MatrixXd>& block) = 0;
+  /// df_a/dz (body_nv(a) rows, the states from `col`).
+  virtual void AddForceByState(int body, int col,
+                               const Eigen::Ref<const Eigen::MatrixXd>& block) = 0;
+
+  /// dR/dX_M and dR/dV_M of the virtual body of marker M (rows x 6) taken to its body's
+  /// coordinates through the marker map (kinematics.h): dR/dx_b = dR/dX map + dR/dV map_rate,
+  /// dR/dv_b = dR/dV map (the identity on a rigid body). Nothing for the ground.
+  void AddMarkerStateRows(int row, const MarkerKinematics& M,
+                          const Eigen::Ref<const Eigen::MatrixXd>& dR_dX,
+                          const Eigen::Ref<const Eigen::MatrixXd>& dR_dV);
+  /// df6/dz of a generalised force f6 on M's virtual body (6 x cols): map^T df6/dz on its body.
+  void AddMarkerForceByState(const MarkerKinematics& M, int col,
+                             const Eigen::Ref<const Eigen::MatrixXd>& df6_dz);
+
+ protected:
+  void UseScratch(ScratchMatrices* scratch) { scratch_ = scratch; }
+
+ private:
+  ScratchMatrices own_scratch_;
+  ScratchMatrices* scratch_{&own_scratch_};
 };
 
 /// Dense nv x nv stiffness df/dx and damping df/dv (statics, tests). Cost O(nv^2) memory.
 class DenseForceJacobian final : public ForceJacobianSink {
  public:
   explicit DenseForceJacobian(const StateLayout& layout);
-  void AddStiffness(int body_a, int body_b, const Eigen::MatrixXd& K) override;
-  void AddDamping(int body_a, int body_b, const Eigen::MatrixXd& D) override;
+  void AddStiffness(int body_a, int body_b, const Eigen::Ref<const Eigen::MatrixXd>& K) override;
+  void AddDamping(int body_a, int body_b, const Eigen::Ref<const Eigen::MatrixXd>& D) override;
   const Eigen::MatrixXd& stiffness() const { return stiffness_; }
   const Eigen::MatrixXd& damping() const { return damping_; }
 
@@ -66,12 +140,15 @@ class DenseForceJacobian final : public ForceJacobianSink {
 /// every slot on a flexible body) and a rigid slot's map is the identity.
 class LocalForceJacobian {
  public:
-  /// `slot_markers[s]` is the marker of slot s (its body may be the ground).
-  explicit LocalForceJacobian(std::vector<const MarkerKinematics*> slot_markers);
-  int num_slots() const { return static_cast<int>(markers_.size()); }
+  /// `slot_markers[s]` is the marker of slot s (its body may be the ground); at most
+  /// kMaxForceSlots (an InternalError otherwise).
+  LocalForceJacobian(std::initializer_list<const MarkerKinematics*> slot_markers);
+  /// The same from the first `count` of an array.
+  LocalForceJacobian(const MarkerKinematics* const* slot_markers, int count);
+  int num_slots() const { return num_slots_; }
   int num_columns() const { return 6 * num_slots(); }
-  /// Rows of f_a (slot a), columns X or V: 6 s x 6 s.
-  Eigen::MatrixXd stiffness, damping;
+  /// Rows of f_a (slot a), columns X or V: 6 s x 6 s, zero at construction.
+  SlotMatrix stiffness, damping;
   /// The generalised force [F (W); moment about the slot's origin in its axes] the element
   /// applies to slot `slot` (WrenchForce), for the curvature of a flexible slot's map.
   void SetSlotForce(int slot, const Eigen::Matrix<double, 6, 1>& f6);
@@ -81,9 +158,11 @@ class LocalForceJacobian {
   void ScatterTo(ForceJacobianSink* sink) const;
 
  private:
-  std::vector<const MarkerKinematics*> markers_;
-  Eigen::VectorXd slot_force_;
-  std::vector<bool> slot_force_set_;
+  std::array<const MarkerKinematics*, kMaxForceSlots> markers_{};
+  int num_slots_{0};
+  Eigen::Matrix<double, kMaxSlotColumns, 1> slot_force_{
+      Eigen::Matrix<double, kMaxSlotColumns, 1>::Zero()};
+  std::array<bool, kMaxForceSlots> slot_force_set_{};
 };
 
 /// [F; R_WB^T (T + r x F)]: the generalised force on a (virtual) body of axes R_WB of a force
@@ -93,25 +172,24 @@ Eigen::Matrix<double, 6, 1> WrenchForce(const Eigen::Matrix3d& R_WB, const Eigen
 
 /// World-frame derivatives of marker M on the body of slot `slot` (3 x 6 num_slots each).
 struct MarkerDerivatives {
-  Eigen::MatrixXd point_x;     ///< d p_WM / dX
-  Eigen::MatrixXd arm_x;       ///< d s_W / dX (s_W = p_WM - p_WB)
-  Eigen::MatrixXd rotation_x;  ///< d phi / dX, the body's virtual rotation in W
-  Eigen::MatrixXd velocity_x;  ///< d v_WM / dX
-  Eigen::MatrixXd velocity_v;  ///< d v_WM / dV
-  Eigen::MatrixXd omega_x;     ///< d omega_W / dX
-  Eigen::MatrixXd omega_v;     ///< d omega_W / dV
+  SlotRows<3> point_x;     ///< d p_WM / dX
+  SlotRows<3> arm_x;       ///< d s_W / dX (s_W = p_WM - p_WB)
+  SlotRows<3> rotation_x;  ///< d phi / dX, the body's virtual rotation in W
+  SlotRows<3> velocity_x;  ///< d v_WM / dX
+  SlotRows<3> velocity_v;  ///< d v_WM / dV
+  SlotRows<3> omega_x;     ///< d omega_W / dX
+  SlotRows<3> omega_v;     ///< d omega_W / dV
 };
 MarkerDerivatives DifferentiateMarker(const MarkerKinematics& M, int slot, int num_slots);
 
 /// d f_a / dX for f_a = [F; R_a^T (T + r x F)] on the body of slot `slot_a` (6 x N), given
 /// dF, dT and dr (3 x N) with respect to the same X.
-Eigen::MatrixXd WrenchStiffness(const Eigen::Matrix3d& R_WB, int slot_a, const Eigen::Vector3d& F,
-                                const Eigen::Vector3d& T, const Eigen::Vector3d& r,
-                                const Eigen::MatrixXd& dF, const Eigen::MatrixXd& dT,
-                                const Eigen::MatrixXd& dr);
+SlotRows<6> WrenchStiffness(const Eigen::Matrix3d& R_WB, int slot_a, const Eigen::Vector3d& F,
+                            const Eigen::Vector3d& T, const Eigen::Vector3d& r,
+                            const SlotRows<3>& dF, const SlotRows<3>& dT, const SlotRows<3>& dr);
 
 /// d f_a / dV for the same wrench (the arm and R_a do not depend on V) (6 x N).
-Eigen::MatrixXd WrenchDamping(const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& r,
-                              const Eigen::MatrixXd& dF, const Eigen::MatrixXd& dT);
+SlotRows<6> WrenchDamping(const Eigen::Matrix3d& R_WB, const Eigen::Vector3d& r,
+                          const SlotRows<3>& dF, const SlotRows<3>& dT);
 
 }  // namespace emb::mbs

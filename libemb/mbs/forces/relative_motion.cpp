@@ -28,8 +28,8 @@ RelativeMotionDerivatives DifferentiateRelativeMotion(const RelativeMotion& rel,
                                                       const MarkerDerivatives& dJ) {
   const Eigen::Matrix3d& R_JW = rel.R_JW;
   const Eigen::Matrix3d d_x = Skew(rel.d_W);
-  const Eigen::MatrixXd dd_x = dI.point_x - dJ.point_x;
-  const Eigen::MatrixXd dy_x =
+  const SlotRows<3> dd_x = dI.point_x - dJ.point_x;
+  const SlotRows<3> dy_x =
       dI.velocity_x - dJ.velocity_x + d_x * dJ.omega_x - Skew(J.omega_W) * dd_x;
   RelativeMotionDerivatives r;
   r.x_x = R_JW * (dd_x + d_x * dJ.rotation_x);
@@ -50,13 +50,13 @@ void AddWrenchPair(const StateLayout& layout, const MarkerKinematics& I, const M
 void ScatterWrenchPairJacobian(const MarkerKinematics& I, const MarkerKinematics& J,
                                const MarkerDerivatives& dI, const MarkerDerivatives& dJ,
                                const Eigen::Vector3d& F, const Eigen::Vector3d& T,
-                               const Eigen::MatrixXd& dF_x, const Eigen::MatrixXd& dT_x,
-                               const Eigen::MatrixXd& dF_v, const Eigen::MatrixXd& dT_v,
+                               const SlotRows<3>& dF_x, const SlotRows<3>& dT_x,
+                               const SlotRows<3>& dF_v, const SlotRows<3>& dT_v,
                                ForceJacobianSink* sink) {
   // Both loads act at p_WI: arm s_WI on I's body, p_WI − p_WJbody on J's, with
   // d p_WJbody = d p_WJ − d s_WJ.
   const Eigen::Vector3d r_j = I.p_WM - (J.p_WM - J.s_W);
-  const Eigen::MatrixXd dr_j = dI.point_x - (dJ.point_x - dJ.arm_x);
+  const SlotRows<3> dr_j = dI.point_x - (dJ.point_x - dJ.arm_x);
   LocalForceJacobian jac({&I, &J});
   EMB_CHECK(jac.num_columns() == dF_x.cols());
   jac.stiffness.topRows<6>() = WrenchStiffness(I.R_WB, 0, F, T, I.s_W, dF_x, dT_x, dI.arm_x);

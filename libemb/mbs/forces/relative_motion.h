@@ -62,7 +62,7 @@ inline RelativeMotion CalcRelativeMotion(const MarkerPair& m) {
 
 /// d(x, x', w)/d(X, V) in the two local slots (3 × 12 each).
 struct RelativeMotionDerivatives {
-  Eigen::MatrixXd x_x, x_dot_x, x_dot_v, w_x, w_v;
+  SlotRows<3> x_x, x_dot_x, x_dot_v, w_x, w_v;
 };
 RelativeMotionDerivatives DifferentiateRelativeMotion(const RelativeMotion& rel,
                                                       const MarkerKinematics& I,
@@ -81,8 +81,8 @@ void AddWrenchPair(const StateLayout& layout, const MarkerKinematics& I, const M
 void ScatterWrenchPairJacobian(const MarkerKinematics& I, const MarkerKinematics& J,
                                const MarkerDerivatives& dI, const MarkerDerivatives& dJ,
                                const Eigen::Vector3d& F, const Eigen::Vector3d& T,
-                               const Eigen::MatrixXd& dF_x, const Eigen::MatrixXd& dT_x,
-                               const Eigen::MatrixXd& dF_v, const Eigen::MatrixXd& dT_v,
+                               const SlotRows<3>& dF_x, const SlotRows<3>& dT_x,
+                               const SlotRows<3>& dF_v, const SlotRows<3>& dT_v,
                                ForceJacobianSink* sink);
 
 }  // namespace emb::mbs

@@ -1,9 +1,11 @@
 #include "libemb/mbs/forces/spring_damper.h"
 
 #include <cmath>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/mbs/forces/force_jacobian.h"
+#include "libemb/mbs/forces/joint_angle.h"
 #include "libemb/mbs/constraints/constraint_eval.h"
 #include "libemb/mbs/constraints/primitive.h"
 #include "libemb/mbs/core/rotation.h"
@@ -73,12 +75,12 @@ void TranslationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
         -s.u * (k_ * s.u.transpose() + c_ * d_dot.transpose() * P / s.length) -
         tension * P / s.length;
     const Eigen::Matrix3d B = -c_ * s.u * s.u.transpose();
-    const Eigen::MatrixXd dF_x =
+    const SlotRows<3> dF_x =
         A * (dI.point_x - dJ.point_x) + B * (dI.velocity_x - dJ.velocity_x);
-    const Eigen::MatrixXd dF_v = B * (dI.velocity_v - dJ.velocity_v);
+    const SlotRows<3> dF_v = B * (dI.velocity_v - dJ.velocity_v);
     const Eigen::Vector3d F = -tension * s.u;  // on I, at p_I; -F on J, at p_J
     const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
-    const Eigen::MatrixXd zero_d = Eigen::MatrixXd::Zero(3, 12);
+    const SlotRows<3> zero_d = SlotRows<3>::Zero(3, 12);
     jac.stiffness.topRows<6>() = WrenchStiffness(I.R_WB, 0, F, zero, I.s_W, dF_x, zero_d, dI.arm_x);
     jac.stiffness.bottomRows<6>() =
         WrenchStiffness(J.R_WB, 1, -F, zero, J.s_W, -dF_x, zero_d, dJ.arm_x);
@@ -113,40 +115,14 @@ RotationalSpringDamper::RotationalSpringDamper(std::string name, int marker_i, i
                                                  << "': expected stiffness and damping >= 0");
 }
 
-RotationalSpringDamper::State RotationalSpringDamper::Calc(const ForceContext& ctx) const {
-  MarkerKinematics I_own;
-  const MarkerKinematics& I = ctx.Marker(i_, &I_own);
-  MarkerKinematics J_own;
-  const MarkerKinematics& J = ctx.Marker(j_, &J_own);
-  // x_I closer than this to z_J (|x_I x z_J|^2, i.e. 1e-4 rad) leaves the angle undefined.
-  constexpr double kMinProjection = 1e-8;
-  const Eigen::Vector3d x_I = I.R_WM.col(0), z_J = J.R_WM.col(2);
-  const double projection = x_I.cross(z_J).squaredNorm();
-  if (!(projection >= kMinProjection))
-    EMB_THROW(NumericalError, "rotational spring-damper '"
-                                  << name() << "': its angle about z_J is undefined, x_I is "
-                                  << std::sqrt(projection)
-                                  << " rad from z_J; expected markers whose x_I stays away from "
-                                     "z_J (e.g. across a revolute or cylindrical joint)");
-  const KernelEval g = EvalKernel({KernelKind::kAngle, 0, 0}, I, J);
-  State s;
-  if (ctx.workspace != nullptr && ctx.angle_slot >= 0) {
-    // Start on the branch nearest the free angle, then follow the turns.
-    s.angle = ctx.workspace->Unwrap(ctx.angle_slot, g.value, a0_ + WrapAngle(g.value - a0_)) - a0_;
-  } else {
-    s.angle = WrapAngle(g.value - a0_);
-  }
-  s.gradient << g.d_i, g.d_j;
-  s.velocity << VirtualBodyVelocity(I), VirtualBodyVelocity(J);
-  s.rate = s.gradient.dot(s.velocity);
-  s.body_i = I.body;
-  s.body_j = J.body;
-  return s;
+JointAngle RotationalSpringDamper::Calc(const ForceContext& ctx) const {
+  return CalcJointAngle(ctx, i_, j_, a0_, "rotational spring-damper", name());
 }
 
 void RotationalSpringDamper::DoAddForces(const ForceContext& ctx,
                                          Eigen::Ref<Eigen::VectorXd> f) const {
-  const State s = Calc(ctx);
+  const JointAngle s = Calc(ctx);
+  if (!s.defined) return;
   const double tau = k_ * s.angle + c_ * s.rate;
   const StateLayout& L = ctx.system->layout();
   MarkerKinematics I_own;
@@ -159,7 +135,8 @@ void RotationalSpringDamper::DoAddForces(const ForceContext& ctx,
 
 void RotationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
                                                 ForceJacobianSink* sink) const {
-  const State s = Calc(ctx);
+  const JointAngle s = Calc(ctx);
+  if (!s.defined) return;
   MarkerKinematics I_own;
   const MarkerKinematics& I = ctx.Marker(i_, &I_own);
   MarkerKinematics J_own;
@@ -176,13 +153,13 @@ void RotationalSpringDamper::DoAddForceJacobian(const ForceContext& ctx,
 }
 
 double RotationalSpringDamper::DoCalcPotentialEnergy(const ForceContext& ctx) const {
-  const double a = Calc(ctx).angle;
-  return 0.5 * k_ * a * a;
+  const JointAngle s = Calc(ctx);
+  return s.defined ? 0.5 * k_ * s.angle * s.angle : 0.0;
 }
 
 double RotationalSpringDamper::DoCalcDissipatedPower(const ForceContext& ctx) const {
-  const double rate = Calc(ctx).rate;
-  return c_ * rate * rate;
+  const JointAngle s = Calc(ctx);
+  return s.defined ? c_ * s.rate * s.rate : 0.0;
 }
 
 }  // namespace emb::mbs

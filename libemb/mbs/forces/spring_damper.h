@@ -3,6 +3,7 @@
 /// Translational and rotational spring-dampers between two markers I and J.
 
 #include "libemb/mbs/core/force_element.h"
+#include "libemb/mbs/forces/joint_angle.h"
 
 namespace emb::mbs {
 
@@ -50,7 +51,8 @@ class TranslationalSpringDamper final : public ForceElement {
 ///   df/dx = -(da/dx)^T (k da/dx + c v^T H) - tau H,   df/dv = -c (da/dx)^T (da/dx),
 /// H = d^2 a/dx^2 (EvalKernelHessian). k [N m/rad], c [N m s/rad], a0 [rad].
 /// Precondition: x_I not along z_J, where a is undefined; within kMinProjection of it
-/// (|x_I x z_J|^2 < 1e-8, i.e. 1e-4 rad) the element throws NumericalError naming itself.
+/// (|x_I x z_J|^2 < 1e-8, i.e. 1e-4 rad) the element reports a failure naming itself through
+/// its context (ForceContext::Fail: a NumericalError where the caller has no channel).
 class RotationalSpringDamper final : public ForceElement {
  public:
   RotationalSpringDamper(std::string name, int marker_i, int marker_j, double stiffness,
@@ -67,14 +69,9 @@ class RotationalSpringDamper final : public ForceElement {
   int DoNumAngleSlots() const override { return 1; }
 
  private:
-  struct State {
-    double angle;  ///< a - a0 [rad]
-    double rate;   ///< a' [rad/s]
-    Eigen::Matrix<double, 1, 12> gradient;  ///< da/dx = [d_i, d_j]
-    Eigen::Matrix<double, 12, 1> velocity;  ///< [v_i, omega_Bi, v_j, omega_Bj]
-    int body_i, body_j;
-  };
-  State Calc(const ForceContext& ctx) const;
+  /// The angle and its derivatives (joint_angle.h); `defined` false (reported through the
+  /// context) where x_I is along z_J.
+  JointAngle Calc(const ForceContext& ctx) const;
   int i_, j_;
   double k_, c_, a0_;
 };

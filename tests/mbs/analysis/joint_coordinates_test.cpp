@@ -71,7 +71,7 @@ TEST(JointCoordinates, RevoluteAngleFollowsTheSpinUpAcrossTurns) {
     ASSERT_GE(samples.size(), 10u);
     // The kinematic solve closes the motion equation to the assembly tolerance (1e-10
     // rad); the expression's derivatives are good to ~1e-11 relative (velocities, rad/s).
-    constexpr double kAngleTolerance = 1e-8;          // [rad] over 9 turns
+    constexpr double kAngleTolerance = 1e-8;             // [rad] over 9 turns
     constexpr double kRateTolerance = 1e-8 * 100 * kPi;  // [rad/s]
     for (const Sample& s : samples) {
       const auto want = closed(s.t);
@@ -127,14 +127,14 @@ analysis: {type: kinematic, t_end: 0.2, output_step: 0.01}
   for (const Sample& s : RunScene(sc)) {
     EXPECT_NEAR(s.joints(guide, kJointTravel), a * std::sin(w * s.t), 1e-10) << s.t;
     EXPECT_NEAR(s.joints(guide, kJointTravelRate), a * w * std::cos(w * s.t), 1e-9) << s.t;
-    EXPECT_NEAR(s.q[1], a * std::sin(w * s.t), 1e-10);  // the body's y is the travel
+    EXPECT_NEAR(s.q[1], a * std::sin(w * s.t), 1e-10);      // the body's y is the travel
     EXPECT_TRUE(std::isnan(s.joints(guide, kJointAngle)));  // no rotation coordinate
   }
   // As channels: guide.travel and guide.travel_rate exist, guide.angle does not.
-  const scene::ChannelSet ch(sc.system, {"guide.travel", "guide.travel_rate"});
+  const results::ChannelSet ch(sc.system, {"guide.travel", "guide.travel_rate"});
   EXPECT_EQ(ch.size(), 2);
   try {
-    scene::ChannelSet(sc.system, {"guide.angle"});
+    results::ChannelSet(sc.system, {"guide.angle"});
     ADD_FAILURE() << "guide.angle accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("'guide' has guide.travel, guide.travel_rate"),

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "libemb/mbs/analysis/analysis.h"
-#include "libemb/mbs/flexible/flexible_body.h"
+#include "libemb/mbs/parts/flexible_body.h"
 #include "libemb/mbs/forces/applied_load.h"
 #include "tests/support/spinning_bar.h"
 

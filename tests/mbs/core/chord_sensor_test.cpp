@@ -1,6 +1,8 @@
 // The deflection-relative-to-chord sensor (mbs/core/chord_sensor.h) against closed forms of
-// rigid geometry, its degenerate chord, its bad input, and its scene form (`sensors:` entry
-// `type: chord`) with its channels.
+// rigid geometry, its degenerate chord and its bad input (its scene form: the scene's
+// sensor_reader_test.cpp).
+
+#include "libemb/mbs/core/chord_sensor.h"
 
 #include <gtest/gtest.h>
 
@@ -9,12 +11,9 @@
 #include <random>
 
 #include "libemb/common/error.h"
-#include "libemb/mbs/core/chord_sensor.h"
 #include "libemb/mbs/core/kinematics.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/core/system.h"
-#include "libemb/results/channels.h"
-#include "libemb/scene/scene.h"
 #include "tests/support/input_error.h"
 
 namespace emb {
@@ -95,8 +94,7 @@ TEST(ChordSensor, GroundPointAgainstATurnedChord) {
     EXPECT_NEAR(c[1], dy, kRoundOff) << theta;
     EXPECT_NEAR(c[2], z0, kRoundOff) << theta;
     EXPECT_NEAR(c[3], std::hypot(dy, z0), kRoundOff) << theta;
-    EXPECT_NEAR(c[4], (x0 * std::cos(theta) + y0 * std::sin(theta)) / kLength, kRoundOff)
-        << theta;
+    EXPECT_NEAR(c[4], (x0 * std::cos(theta) + y0 * std::sin(theta)) / kLength, kRoundOff) << theta;
   }
 }
 
@@ -116,67 +114,10 @@ TEST(ChordSensor, ThreeDifferentMarkersAreRequired) {
   sys.AddBody(Rod(Vector3d::Zero(), Eigen::Matrix3d::Identity()));
   sys.AddMarker("A", "rod", Vector3d(0.1, 0, 0), Eigen::Matrix3d::Identity());
   sys.AddMarker("B", "rod", Vector3d(0.3, 0, 0), Eigen::Matrix3d::Identity());
-  EXPECT_TRUE(test::ContainsAll(
-      test::InputErrorMessage([&] { mbs::ChordSensor(sys, "bend", 0, 0, 1); }),
-      {"chord sensor 'bend'", "three different markers", "'A'"}));
+  EXPECT_TRUE(
+      test::ContainsAll(test::InputErrorMessage([&] { mbs::ChordSensor(sys, "bend", 0, 0, 1); }),
+                        {"chord sensor 'bend'", "three different markers", "'A'"}));
   EXPECT_THROW(mbs::ChordSensor(sys, "bend", 0, 1, 7), InputError);
-}
-
-// The scene's form: a rod turned 90 degrees about z (chord along world y) and a ground
-// point 0.05 m off it in world -x, i.e. A's axes: the body's x is world y, y is world -x.
-constexpr const char* kScene = R"(bodies:
-  - {name: rod, mass: 1.0, inertia: [1.0e-4, 0.05, 0.05], position: [0, 0.4, 0],
-     orientation: {euler313: [1.5707963267948966, 0, 0]}}
-markers:
-  - {name: A, body: rod, position: [-0.4, 0, 0]}
-  - {name: B, body: rod, position: [0.4, 0, 0]}
-  - {name: P, body: ground, frame: world, position: [-0.05, 0.2, 0]}
-sensors:
-  - {name: pose, i: P, j: A}
-)";
-
-TEST(ChordSensorScene, ChannelsOfTheSceneForm) {
-  const scene::Scene sc = scene::ParseScene(
-      std::string(kScene) + "  - {name: bend, type: chord, point: P, chord: [A, B]}\n",
-      "chord.yaml");
-  ASSERT_EQ(sc.system.probes().size(), 1u);
-  const Eigen::VectorXd c = Channels(sc.system, 0);
-  // Round-off of pi/2 in the Euler angles at 0.4 m.
-  constexpr double kEulerRoundOff = 1e-15;
-  EXPECT_NEAR(c[0], 0.0, kEulerRoundOff);
-  EXPECT_NEAR(c[1], 0.05, kEulerRoundOff);
-  EXPECT_NEAR(c[2], 0.0, kEulerRoundOff);
-  EXPECT_NEAR(c[3], 0.05, kEulerRoundOff);
-  EXPECT_NEAR(c[4], 0.25, kEulerRoundOff);
-  // Its channels are output and steady-state channels like any other.
-  const std::vector<std::string> names = scene::ValidChannelNames(sc.system);
-  for (const char* ch : {"bend.dx", "bend.dy", "bend.dz", "bend.norm", "bend.s", "pose.dx"})
-    EXPECT_NE(std::find(names.begin(), names.end(), ch), names.end()) << ch;
-  EXPECT_NO_THROW(scene::ChannelSet(sc.system, {"bend.norm", "bend.dy"}));
-}
-
-TEST(ChordSensorScene, BadInputIsNamed) {
-  auto message = [](const std::string& entry) {
-    return test::InputErrorMessage(
-        [&] { scene::ParseScene(std::string(kScene) + entry, "chord.yaml"); });
-  };
-  EXPECT_TRUE(test::ContainsAll(
-      message("  - {name: bend, type: chord, point: P, chord: [A]}\n"),
-      {"chord.yaml:", "sensor 'bend'", "chord", "expected the two markers"}));
-  EXPECT_TRUE(test::ContainsAll(message("  - {name: bend, type: chord, point: P, chord: A}\n"),
-                                {"sensor 'bend'", "expected the two markers"}));
-  EXPECT_TRUE(test::ContainsAll(
-      message("  - {name: bend, type: chord, point: Q, chord: [A, B]}\n"), {"'Q'"}));
-  EXPECT_TRUE(test::ContainsAll(
-      message("  - {name: bend, type: chord, point: A, chord: [A, B]}\n"),
-      {"sensor 'bend'", "three different markers"}));
-  EXPECT_TRUE(test::ContainsAll(message("  - {name: bend, type: chrod, point: P, chord: [A, B]}\n"),
-                                {"sensor 'bend'", "expected 'pose'", "'chord'", "'chrod'"}));
-  EXPECT_TRUE(test::ContainsAll(message("  - {name: bend, type: chord, point: P, chord: [A, B], "
-                                        "i: P}\n"),
-                                {"sensor 'bend'", "unknown key 'i'"}));
-  EXPECT_TRUE(test::ContainsAll(message("  - {name: pose, type: chord, point: P, chord: [A, B]}\n"),
-                                {"sensor 'pose'", "defined twice"}));
 }
 
 }  // namespace

@@ -17,7 +17,7 @@
 
 #include "libemb/cms/geometric_stiffening.h"
 #include "libemb/mbs/core/rotation.h"
-#include "libemb/mbs/flexible/flexible_body.h"
+#include "libemb/mbs/parts/flexible_body.h"
 #include "tests/support/flexible_bar.h"
 
 namespace emb {

@@ -1,0 +1,263 @@
+// The GGL DAE evaluates its residual and iteration matrix without touching the heap once its
+// workspace has been through one of each (ggl_workspace.h): counted here with a replaced
+// global operator new, on a model with every kind of term an engine run has (a flexible body
+// with interface markers, a revolute joint, a bushing, a spring-damper, a torsional
+// spring-damper, a journal bearing, an applied load with a time function), over many states
+// and over IDA steps.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdlib>
+#include <memory>
+
+#include "libemb/engine/journal_bearing.h"
+#include "libemb/integrators/ida_solver.h"
+#include "libemb/mbs/analysis/analysis.h"
+#include "libemb/mbs/dae/ggl_dae.h"
+#include "libemb/mbs/forces/applied_load.h"
+#include "libemb/mbs/forces/bushing.h"
+#include "libemb/mbs/forces/maxwell_arm.h"
+#include "libemb/mbs/forces/spring_damper.h"
+#include "libemb/mbs/parts/flexible_body.h"
+#include "tests/support/flexible_bar.h"
+
+// Every heap allocation goes through malloc (operator new and Eigen's dynamic matrices
+// alike): this test binary replaces the malloc family by counting wrappers around glibc's.
+extern "C" {
+void* __libc_malloc(std::size_t);
+void* __libc_calloc(std::size_t, std::size_t);
+void* __libc_realloc(void*, std::size_t);
+void* __libc_memalign(std::size_t, std::size_t);
+}
+
+namespace {
+std::atomic<bool> g_counting{false};
+std::atomic<long> g_allocations{0};
+
+void Count() {
+  if (g_counting.load(std::memory_order_relaxed))
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
+}
+
+// Counts the allocations made (by any thread) while it lives.
+class CountAllocations {
+ public:
+  CountAllocations() {
+    g_allocations = 0;
+    g_counting = true;
+  }
+  ~CountAllocations() { g_counting = false; }
+  long count() const { return g_allocations.load(); }
+};
+}  // namespace
+
+extern "C" {
+void* malloc(std::size_t size) {
+  Count();
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t n, std::size_t size) {
+  Count();
+  return __libc_calloc(n, size);
+}
+void* realloc(void* p, std::size_t size) {
+  Count();
+  return __libc_realloc(p, size);
+}
+void* memalign(std::size_t alignment, std::size_t size) {
+  Count();
+  return __libc_memalign(alignment, size);
+}
+void* aligned_alloc(std::size_t alignment, std::size_t size) {
+  Count();
+  return __libc_memalign(alignment, size);
+}
+int posix_memalign(void** out, std::size_t alignment, std::size_t size) {
+  Count();
+  *out = __libc_memalign(alignment, size);
+  return *out ? 0 : ENOMEM;
+}
+}
+
+namespace emb {
+namespace {
+
+// A flexible bar pinned at x0, spinning about the pin, held at x1 by a bushing and a
+// spring-damper to the ground, with a rigid disc on a journal bearing beside it whose shaft is
+// loaded by a harmonic force, a torsional spring and a Maxwell arm (a state of its own).
+mbs::System Model() {
+  testing::BarSpec bar;
+  bar.interfaces = {"x0:rbe2", "x1:rbe3"};
+  bar.modes = 4;
+  bar.damping_ratio = 0.02;
+  mbs::System sys;
+  sys.SetGravity(Eigen::Vector3d(0, 0, -9.81));
+  mbs::PartPlacement placement;
+  placement.omega_W = Eigen::Vector3d(0, 30, 0);
+  const mbs::FlexiblePart part =
+      mbs::AddFlexibleBody(&sys, "bar", testing::FlexibleBar(bar), "bar", {}, placement);
+  const Eigen::Matrix3d pin_axes = testing::Axes(Eigen::Vector3d::UnitY());
+  mbs::AddInterfaceMarker(&sys, part, "root", "x0", pin_axes);
+  const int tip = mbs::AddInterfaceMarker(&sys, part, "tip", "x1");
+  sys.AddMarker("pivot", "ground", Eigen::Vector3d(0, 0.02, 0.015), pin_axes);
+  const int spring_end = sys.AddMarker("spring_end", "ground", Eigen::Vector3d(0.62, 0.02, 0.015),
+                                       Eigen::Matrix3d::Identity());
+  sys.AddJoint("pin", mbs::JointType::kRevolute, "root", "pivot");
+  Eigen::Matrix<double, 6, 6> K = Eigen::Matrix<double, 6, 6>::Zero();
+  K.diagonal() << 1.0e5, 2.0e5, 3.0e5, 10, 20, 30;
+  sys.AddForceElement(std::make_shared<mbs::Bushing>("tip_mount", tip, spring_end, K, 1.0e-3 * K));
+  sys.AddForceElement(std::make_shared<mbs::TranslationalSpringDamper>("tip_spring", tip, spring_end,
+                                                                       2.0e3, 5.0, 0.01));
+  // A disc on a journal bearing (Ocvirk), its shaft axis z, spinning.
+  mbs::RigidBody disc;
+  disc.name = "disc";
+  disc.mass = 2.0;
+  disc.inertia_B = Eigen::Vector3d(2e-3, 2e-3, 3e-3).asDiagonal();
+  disc.p_WB = Eigen::Vector3d(1.0, 0.5, 0.0);
+  disc.omega_W = Eigen::Vector3d(0, 0, 200.0);
+  sys.AddBody(disc);
+  const int shaft = sys.AddMarker("shaft", "disc", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
+  const int bore = sys.AddMarker("bore", "ground", Eigen::Vector3d(1.0, 0.5, 0.0),
+                                 Eigen::Matrix3d::Identity());
+  sys.AddJoint("disc_plane", mbs::JointType::kPlanar, "shaft", "bore");
+  mbs::JournalBearingParameters jb;
+  jb.radius = 0.02;
+  jb.length = 0.015;
+  jb.clearance = 5e-5;
+  jb.viscosity = 0.01;
+  sys.AddForceElement(std::make_shared<mbs::JournalBearing>("bearing", shaft, bore, jb));
+  sys.AddForceElement(std::make_shared<mbs::RotationalSpringDamper>("torsion", shaft, bore, 50.0,
+                                                                    0.1, 0.0));
+  // An element with a continuous state (force_element.h): its rows and blocks too.
+  sys.AddForceElement(std::make_shared<mbs::MaxwellArm>("rubber", shaft, bore, 30.0, 0.05));
+  sys.AddForceElement(std::make_shared<mbs::AppliedLoad>(
+      "shake", mbs::AppliedLoad::Kind::kForce, shaft, Eigen::Vector3d::UnitX(),
+      mbs::AppliedLoad::Frame::kWorld, mbs::TimeFunction::Harmonic(20.0, 50.0, 0.0, 0.0)));
+  sys.Finalize();
+  return sys;
+}
+
+TEST(GglDaeAllocation, ResidualAndIterationMatrixAllocateNothing) {
+  const mbs::System sys = Model();
+  // The caller's workspace (Model/Data): the DAE fills it and nothing else.
+  mbs::GglWorkspace data(sys);
+  const mbs::GglDae dae(sys, &data);
+  ASSERT_EQ(&dae.data(), &data);
+  mbs::AnalysisSettings s;
+  const mbs::PreparedRun run = mbs::PrepareRun(sys, s);
+  mbs::ConstraintWorkspace& ws = dae.workspace();
+  const mbs::AccelerationSolution acc = mbs::SolveAccelerations(sys, run.q0, run.v0, 0.0, &ws);
+  Eigen::VectorXd y, yp;
+  dae.MakeInitialValues(run.q0, run.v0, acc.vdot, acc.lambda, &y, &yp);
+  const int n = dae.size();
+  Eigen::VectorXd r(n);
+  Eigen::MatrixXd J(n, n);
+  SparseMatrixd Js;
+  // Warm-up: one of each sizes the workspace and fixes the sparse structure.
+  ASSERT_TRUE(dae.CalcResidual(0.0, y, yp, r));
+  dae.CalcJacobian(0.0, 100.0, y, yp, J);
+  dae.CalcSparseJacobian(0.0, 100.0, y, yp, &Js);
+  constexpr int kStates = 20;
+  Eigen::VectorXd y1 = y, yp1 = yp;
+  long residual_allocations = 0, dense_allocations = 0, sparse_allocations = 0;
+  for (int k = 0; k < kStates; ++k) {
+    for (int i = 0; i < n; ++i) y1[i] = y[i] + 1e-6 * std::sin(1.0 + i + 7.0 * k);
+    const double t = 1e-3 * k;
+    {
+      const CountAllocations count;
+      ASSERT_TRUE(dae.CalcResidual(t, y1, yp1, r));
+      residual_allocations += count.count();
+    }
+    {
+      const CountAllocations count;
+      dae.CalcJacobian(t, 100.0 + k, y1, yp1, J);
+      dense_allocations += count.count();
+    }
+    {
+      const CountAllocations count;
+      dae.CalcSparseJacobian(t, 100.0 + k, y1, yp1, &Js);
+      sparse_allocations += count.count();
+    }
+  }
+  EXPECT_EQ(residual_allocations, 0) << "over " << kStates << " residuals";
+  EXPECT_EQ(dense_allocations, 0) << "over " << kStates << " dense iteration matrices";
+  EXPECT_EQ(sparse_allocations, 0) << "over " << kStates << " sparse iteration matrices";
+}
+
+// The GGL DAE behind a DaeProblem that counts the allocations made inside its residual and
+// iteration-matrix evaluations only (not the integrator's or the linear solver's own work).
+class CountingDae final : public DaeProblem {
+ public:
+  explicit CountingDae(const mbs::GglDae& dae) : dae_(dae) {}
+  long allocations() const { return allocations_; }
+  long evaluations() const { return evaluations_; }
+
+ protected:
+  int DoSize() const override { return dae_.size(); }
+  bool DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                      const Eigen::Ref<const Eigen::VectorXd>& yp,
+                      Eigen::Ref<Eigen::VectorXd> r) const override {
+    return Counted([&] { return dae_.CalcResidual(t, y, yp, r); });
+  }
+  bool DoHasJacobian() const override { return true; }
+  bool DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                      const Eigen::Ref<const Eigen::VectorXd>& yp,
+                      Eigen::Ref<Eigen::MatrixXd> J) const override {
+    return Counted([&] { return dae_.CalcJacobian(t, cj, y, yp, J); });
+  }
+  bool DoHasSparseJacobian() const override { return true; }
+  bool DoCalcSparseJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
+                            const Eigen::Ref<const Eigen::VectorXd>& yp,
+                            SparseMatrixd* J) const override {
+    // The first call builds the structure (allocates by design): not counted.
+    if (J->nonZeros() == 0) return dae_.CalcSparseJacobian(t, cj, y, yp, J);
+    return Counted([&] { return dae_.CalcSparseJacobian(t, cj, y, yp, J); });
+  }
+  Eigen::VectorXd DoDifferentialMask() const override { return dae_.DifferentialMask(); }
+  std::vector<std::vector<int>> DoDenseBlocks() const override { return dae_.DenseBlocks(); }
+
+ private:
+  template <class Fn>
+  bool Counted(Fn&& fn) const {
+    const CountAllocations count;
+    const bool ok = fn();
+    // The first evaluation of each kind sizes the workspace: counted from the second on.
+    if (++evaluations_ > 2) allocations_ += count.count();
+    return ok;
+  }
+  const mbs::GglDae& dae_;
+  mutable long allocations_{0}, evaluations_{0};
+};
+
+// Over IDA steps (dense and KLU iteration matrices): every residual and iteration matrix the
+// integrator asks for, at the states it visits, allocates nothing.
+TEST(GglDaeAllocation, NoAllocationInTheEvaluationsOfIdaSteps) {
+  const mbs::System sys = Model();
+  for (const LinearSolverKind solver : {LinearSolverKind::kDense, LinearSolverKind::kKlu}) {
+    const mbs::GglDae dae(sys);
+    mbs::AnalysisSettings s;
+    const mbs::PreparedRun run = mbs::PrepareRun(sys, s);
+    const mbs::AccelerationSolution acc =
+        mbs::SolveAccelerations(sys, run.q0, run.v0, 0.0, &dae.workspace());
+    Eigen::VectorXd y, yp;
+    dae.MakeInitialValues(run.q0, run.v0, acc.vdot, acc.lambda, &y, &yp);
+    const CountingDae counting(dae);
+    IdaOptions o;
+    o.rtol = 1e-6;
+    o.atol = 1e-8;
+    o.algebraic_atol = 1e-3;
+    o.linear_solver = solver;
+    IdaSolver ida(counting, 0.0, y, yp, o);
+    const IntegratorReport rep = ida.AdvanceTo(0.02);
+    ASSERT_TRUE(rep.ok()) << rep.message;
+    ASSERT_GT(ida.stats().steps, 20) << "too few steps to say anything";
+    EXPECT_EQ(counting.allocations(), 0)
+        << Name(solver) << ": over " << ida.stats().steps << " steps and "
+        << counting.evaluations() << " evaluations";
+  }
+}
+
+}  // namespace
+}  // namespace emb
