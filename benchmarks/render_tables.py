@@ -776,6 +776,53 @@ def order_cuts_inline4(res):
     return lines, [doc]
 
 
+def reynolds_bearing_grids(res):
+    doc = res("reynolds_bearing")
+    d = doc["data"]
+    rows = []
+    for r in d["grids"]:
+        rows.append([r["name"], r["unknowns"], sig3(r["eval_jacobian_us"]), sig3(r["eval_us"]),
+                     sig3(r["cold_eval_jacobian_us"]),
+                     f"{r['iterations_warm']:.2f} / {r['iterations_cold']:.1f}",
+                     num(r["load_error_pct"], ".2f"), num(r["h_min_error_pct"], ".2f"),
+                     num(r["p_max_error_pct"], ".1f"),
+                     "**yes**" if r["name"] == d["converged_grid"] else ""])
+    return table(["grid N × Nz", "unknowns", "eval + Jacobian µs", "eval µs",
+                  "cold eval + Jacobian µs", "Newton iterations warm / cold",
+                  "load error %", "h_min error %", "p_max error %", "first within 1 %"],
+                 rows), [doc]
+
+
+def reynolds_bearing_reference(res):
+    doc = res("reynolds_bearing")
+    d = doc["data"]
+    rows = [[f"{r['load_n'] / 1e3:g}", num(r["eccentricity_ratio"], ".3f"), num(r["h_min_um"], ".2f"),
+             num(r["p_max_mpa"], ".1f"), num(r["friction_power_w"], ".0f"),
+             num(r["side_flow_l_per_min"], ".2f")] for r in d["reference"]]
+    return table(["load kN", "eccentricity ratio", "h_min µm", "p_max MPa", "friction power W",
+                  "side flow l/min"], rows), [doc]
+
+
+def reynolds_bearing_solvers(res):
+    doc = res("reynolds_bearing")
+    rows = [[r["name"], r["grid"], num(r["cold_iterations"], ".2f"), sig3(r["cold_us"]),
+             num(r["warm_iterations"], ".2f"), sig3(r["warm_us"]),
+             num(r["force_vs_switch_rel"], ".1e")] for r in doc["data"]["solvers"]]
+    return table(["complementarity solver", "grid", "cold iterations", "cold µs (with Jacobian)",
+                  "warm iterations", "warm µs (with Jacobian)", "\\|ΔF\\|/F vs switch"], rows), [doc]
+
+
+def reynolds_bearing_ocvirk(res):
+    doc = res("reynolds_bearing")
+    o = doc["data"]["ocvirk"]
+    ref = {r["load_n"]: r for r in doc["data"]["reference"]}
+    rows = [[f"{r['load_n'] / 1e3:g}", num(ref[r["load_n"]]["h_min_um"], ".2f"), num(r["h_min_um"], ".2f"),
+             num(r["h_min_error_pct"], "+.1f"), num(r["load_error_pct"], "+.1f")] for r in o["loads"]]
+    return table(["load kN", "h_min µm, finite width (reference)", "h_min µm, Ocvirk",
+                  "Ocvirk h_min error %", "Ocvirk force error at the reference eccentricity %"],
+                 rows), [doc]
+
+
 def validation_status(res):
     """The README's status of validation: one row per yardstick, the worst agreement its
     benchmark measured, the results file and the page that has the whole table."""
@@ -857,7 +904,8 @@ TABLES = {f.__name__: f for f in [
     beam_vs_cms, beam_web_width, inline4_flex_modes, inline4_flex_tolerance, inline4_models,
     inline4_beam, inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule,
     mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state, sweep_inline4, runup_vs_sweep,
-    order_cuts_inline4, validation_status]}
+    order_cuts_inline4, validation_status, reynolds_bearing_grids, reynolds_bearing_reference,
+    reynolds_bearing_solvers, reynolds_bearing_ocvirk]}
 
 
 def render_table(name, res):

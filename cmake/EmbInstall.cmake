@@ -15,8 +15,9 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 # Every library target of libemb, by its exported name (emb_<name> -> emb::<name>).
-set(EMB_EXPORTED_MODULES common mesh linalg fe beam io cms compare integrators mbs_core
-    mbs_constraints mbs_forces mbs_dae mbs_flexible mbs_analysis mbs_linear mbs_parts mbs engine driveline results scene sweep)
+set(EMB_EXPORTED_MODULES common mesh linalg fe beam io cms compare tribology integrators mbs_core
+    mbs_constraints mbs_forces mbs_dae mbs_flexible mbs_analysis mbs_linear mbs_parts mbs engine
+    driveline results scene sweep)
 foreach(m IN LISTS EMB_EXPORTED_MODULES)
   set_target_properties(emb_${m} PROPERTIES EXPORT_NAME ${m})
   add_library(emb::${m} ALIAS emb_${m})

@@ -22,6 +22,7 @@ DEPENDS = {
     "beam": ["common", "mesh", "linalg", "fe"],
     "compare": ["beam", "cms"],
     "integrators": ["common"],
+    "tribology": ["common"],
     "mbs/core": ["common"],
     "mbs/constraints": ["mbs/core"],
     "mbs/forces": ["mbs/constraints"],

@@ -1,0 +1,68 @@
+#include "libemb/tribology/reynolds_bearing.h"
+
+#include <cmath>
+#include <utility>
+
+#include "libemb/common/error.h"
+
+namespace emb::tribology {
+namespace {
+
+constexpr int kMinCircumferential = 8;
+constexpr int kMinAxialIntervals = 2;
+
+// The geometry checks run before any member that uses the geometry is built.
+const ReynoldsBearingParameters& Checked(const ReynoldsBearingParameters& p,
+                                         const std::string& who) {
+  auto positive = [&](double v, const char* key) {
+    EMB_THROW_IF(!(std::isfinite(v) && v > 0.0),
+                 who << ": expected a positive " << key << ", got " << v << " m");
+  };
+  positive(p.radius, "radius");
+  positive(p.length, "length");
+  positive(p.clearance, "clearance");
+  EMB_THROW_IF(p.clearance >= p.radius, who << ": expected a clearance smaller than the radius, "
+                                               "got c = " << p.clearance << " m, R = "
+                                            << p.radius << " m");
+  EMB_THROW_IF(p.grid.circumferential < kMinCircumferential,
+               who << ": expected grid.circumferential >= " << kMinCircumferential << ", got "
+                   << p.grid.circumferential);
+  EMB_THROW_IF(p.grid.axial < kMinAxialIntervals,
+               who << ": expected grid.axial >= " << kMinAxialIntervals << " intervals, got "
+                   << p.grid.axial);
+  return p;
+}
+
+}  // namespace
+
+ReynoldsBearing::ReynoldsBearing(std::string name, const ReynoldsBearingParameters& p)
+    : name_(std::move(name)),
+      who_("bearing '" + name_ + "'"),
+      p_(Checked(p, who_)),
+      grid_(p.radius, p.length, p.grid),
+      lubricant_(p.lubricant, who_),
+      supply_(MarkSupplyNodes(grid_, p.oil_holes, p.grooves, who_)) {
+  EMB_THROW_IF(!(p.bore_tilt.allFinite()),
+               who_ << ": expected a finite bore_tilt, got (" << p.bore_tilt.transpose() << ")");
+  const double edge_offset = p.bore_tilt.norm() * 0.5 * p.length;
+  EMB_THROW_IF(edge_offset >= p.clearance,
+               who_ << ": the bore's misalignment takes up the clearance at an edge: expected "
+                       "|bore_tilt| L/2 < c = " << p.clearance << " m, got " << edge_offset
+                    << " m");
+  EMB_THROW_IF(!(std::isfinite(p.pressure_scale) && p.pressure_scale > 0.0),
+               who_ << ": expected a positive pressure_scale, got " << p.pressure_scale << " Pa");
+  EMB_THROW_IF(!(std::isfinite(p.film_floor) && p.film_floor > 0.0),
+               who_ << ": expected a positive film_floor, got " << p.film_floor);
+  EMB_THROW_IF(p.max_iterations < 1,
+               who_ << ": expected max_iterations >= 1, got " << p.max_iterations);
+  for (double ps : supply_.pressure) {
+    const double psi = lubricant_.ReducedPressure(ps);
+    EMB_THROW_IF(!(psi < lubricant_.reduced_pressure_limit()),
+                 who_ << ": a supply pressure of " << ps
+                      << " Pa is beyond the pressure-viscosity law's range");
+    supply_u_.push_back(psi / p.pressure_scale);
+  }
+  if (p.asperity_contact) contact_.emplace(*p.asperity_contact, who_);
+}
+
+}  // namespace emb::tribology

@@ -1,0 +1,95 @@
+#pragma once
+/// @file
+/// A finite-width journal bearing solved by the Reynolds equation (notation.h): the immutable
+/// model. Its parameters are checked once here; evaluations (film_solver.h for the quasi-
+/// static and time-stepped film, film_dae.h for the film as DAE states) only read it.
+///
+/// Cavitation models, all on the one grid and unknown (notation.h, T5):
+///   kMassConserving  JFO (T2, T3): theta is transported by the Couette flow and stored in
+///                    the film; rupture and reformation conserve mass. The only model with
+///                    history (the fill fraction of the cavitated zone).
+///   kReynolds        Swift-Stieber: p >= 0 and the full-film residual >= 0 where p = 0 (a
+///                    complementarity problem); no theta transport, not mass-conserving.
+///   kHalfSommerfeld  Guembel: the full film solved, sub-ambient pressures dropped from the
+///                    loads (not mass-conserving; Ocvirk's closed form uses it).
+///   kFullSommerfeld  no cavitation: sub-ambient pressures kept.
+/// The complementarity (T3) is solved by semismooth Newton on the Elrod-Adams switch (the
+/// default; finite termination when the active set settles) or by Fischer-Burmeister-Newton
+/// (Woloszynski et al., Tribol. Lett. 2015); the measurements behind the default are in
+/// film_solver.h.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "libemb/tribology/asperity_contact.h"
+#include "libemb/tribology/bearing_grid.h"
+#include "libemb/tribology/lubricant.h"
+#include "libemb/tribology/supply_features.h"
+
+namespace emb::tribology {
+
+enum class CavitationModel { kMassConserving, kReynolds, kHalfSommerfeld, kFullSommerfeld };
+enum class ComplementaritySolver { kElrodAdamsSwitch, kFischerBurmeister };
+
+struct ReynoldsBearingParameters {
+  double radius{0.0};     ///< R, journal radius [m]
+  double length{0.0};     ///< L, bearing length [m]
+  double clearance{0.0};  ///< c, radial clearance [m], < R
+  GridSize grid;
+  LubricantParameters lubricant;
+  std::vector<OilHole> oil_holes;
+  std::vector<Groove> grooves;
+  CavitationModel cavitation{CavitationModel::kMassConserving};
+  ComplementaritySolver complementarity{ComplementaritySolver::kElrodAdamsSwitch};
+  /// Greenwood-Tripp asperity contact; without it a film h <= 0 anywhere is a failed
+  /// evaluation (FilmStatus::kJournalTouchesShell).
+  std::optional<AsperityContactParameters> asperity_contact;
+  /// With contact, the hydrodynamic film is max(h, film_floor * sigma) so that the Reynolds
+  /// terms stay finite when the journal goes through its nominal clearance [-].
+  double film_floor{0.1};
+  /// gamma_b: static tilt of the bore axis in the shell frame (slopes, T1) [rad].
+  Eigen::Vector2d bore_tilt{0.0, 0.0};
+  /// p_ref: pressure of u = 1 (T5) [Pa]; only scales the unknowns (conditioning, DAE error
+  /// weights).
+  double pressure_scale{1e6};
+  /// Newton iterations allowed per evaluation (each one factorisation).
+  int max_iterations{50};
+};
+
+class ReynoldsBearing {
+ public:
+  /// @param name names the bearing in every message.
+  /// @throws InputError ("bearing '<name>': expected X, got Y") for R, L, c not positive and
+  ///   finite, c >= R, a grid with N < 8 or Nz < 2, lubricant and supply-feature errors
+  ///   (lubricant.h, supply_features.h), |gamma_b| L/2 >= c (the bore's own misalignment
+  ///   takes up the clearance at an edge), a non-positive pressure scale, film floor or
+  ///   iteration limit, and Step/DAE use with a model other than kMassConserving (there).
+  ReynoldsBearing(std::string name, const ReynoldsBearingParameters& p);
+
+  const std::string& name() const { return name_; }
+  /// "bearing '<name>'", the prefix of every message.
+  const std::string& who() const { return who_; }
+  const ReynoldsBearingParameters& parameters() const { return p_; }
+  const BearingGrid& grid() const { return grid_; }
+  const Lubricant& lubricant() const { return lubricant_; }
+  const SupplyMap& supply() const { return supply_; }
+  const std::optional<AsperityContact>& contact() const { return contact_; }
+  /// Unknown u of a supply node at pressure p: Psi(p) / p_ref (>= 0: flooded).
+  double SupplyUnknown(int k) const { return supply_u_[supply_.feature[k]]; }
+  bool is_supply(int k) const { return supply_.feature[k] >= 0; }
+  int num_unknowns() const { return grid_.num_unknowns(); }
+
+ private:
+  std::string name_, who_;
+  ReynoldsBearingParameters p_;
+  BearingGrid grid_;
+  Lubricant lubricant_;
+  SupplyMap supply_;
+  std::vector<double> supply_u_;
+  std::optional<AsperityContact> contact_;
+};
+
+}  // namespace emb::tribology

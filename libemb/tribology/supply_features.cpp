@@ -1,0 +1,134 @@
+#include "libemb/tribology/supply_features.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "libemb/common/error.h"
+
+namespace emb::tribology {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// Features are tested against node coordinates; a node exactly on a feature's border (a
+// groove of width 2 dz centred on a node row) must count despite round-off in z_j and phi_i,
+// which are sums of a few terms: 1e-9 of the spacing is far above that and far below any
+// physical tolerance.
+constexpr double kBorderSlack = 1e-9;
+
+// (-pi, pi]
+double WrapSigned(double a) {
+  a = std::fmod(a, kTwoPi);
+  if (a > std::numbers::pi) a -= kTwoPi;
+  if (a <= -std::numbers::pi) a += kTwoPi;
+  return a;
+}
+
+// [0, 2 pi)
+double WrapPositive(double a) {
+  a = std::fmod(a, kTwoPi);
+  return a < 0.0 ? a + kTwoPi : a;
+}
+
+}  // namespace
+
+SupplyMap MarkSupplyNodes(const BearingGrid& grid, const std::vector<OilHole>& holes,
+                          const std::vector<Groove>& grooves, const std::string& who) {
+  SupplyMap map;
+  map.feature.assign(grid.num_unknowns(), -1);
+  const double half_length = 0.5 * grid.length();
+  const double R = grid.radius();
+  auto finite = [&](double v, const std::string& key) {
+    EMB_THROW_IF(!std::isfinite(v), who << ": expected a finite " << key << ", got " << v);
+  };
+  auto positive = [&](double v, const std::string& key, const char* unit) {
+    EMB_THROW_IF(!(std::isfinite(v) && v > 0.0),
+                 who << ": expected a positive " << key << ", got " << v << " " << unit);
+  };
+  auto pressure = [&](double v, const std::string& key) {
+    EMB_THROW_IF(!(std::isfinite(v) && v >= 0.0),
+                 who << ": expected a supply pressure >= 0 Pa (gauge) for " << key << ", got "
+                     << v << " Pa");
+  };
+  // Marks the interior nodes for which `inside(i, j)` holds; returns how many.
+  auto mark = [&](int feature, const std::string& key, auto inside) {
+    int count = 0;
+    for (int i = 0; i < grid.num_circumferential(); ++i)
+      for (int j = 1; j < grid.num_axial_intervals(); ++j) {
+        if (!inside(i, j)) continue;
+        const int k = grid.Unknown(i, j);
+        const int other = map.feature[k];
+        EMB_THROW_IF(other >= 0 && map.pressure[other] != map.pressure[feature],
+                     who << ": " << key << " overlaps another supply feature at a different "
+                         "pressure (expected one supply pressure per node, got "
+                         << map.pressure[other] << " Pa and " << map.pressure[feature]
+                         << " Pa at phi = " << grid.angle(i) << " rad, z = " << grid.axial(j)
+                         << " m)");
+        map.feature[k] = feature;
+        ++count;
+      }
+    return count;
+  };
+
+  for (size_t h = 0; h < holes.size(); ++h) {
+    const OilHole& o = holes[h];
+    const std::string key = "oil_holes[" + std::to_string(h) + "]";
+    finite(o.angle, key + ".angle");
+    finite(o.axial_position, key + ".axial_position");
+    positive(o.diameter, key + ".diameter", "m");
+    pressure(o.supply_pressure, key + ".supply_pressure");
+    EMB_THROW_IF(std::abs(o.axial_position) + 0.5 * o.diameter > half_length * (1 + kBorderSlack),
+                 who << ": " << key << " reaches outside the bearing: expected |axial_position| "
+                        "+ diameter/2 <= L/2 = " << half_length << " m, got "
+                     << std::abs(o.axial_position) + 0.5 * o.diameter << " m");
+    map.pressure.push_back(o.supply_pressure);
+    const double r2 = 0.25 * o.diameter * o.diameter * (1.0 + kBorderSlack);
+    const int count = mark(static_cast<int>(h), key, [&](int i, int j) {
+      const double s = R * WrapSigned(grid.angle(i) - o.angle);
+      const double dz = grid.axial(j) - o.axial_position;
+      return s * s + dz * dz <= r2;
+    });
+    EMB_THROW_IF(count == 0,
+                 who << ": the grid is too coarse for " << key << " (diameter " << o.diameter
+                     << " m): expected at least one interior node inside it, got none (node "
+                        "spacing R dphi = " << R * grid.dphi() << " m, dz = " << grid.dz()
+                     << " m)");
+  }
+  for (size_t g = 0; g < grooves.size(); ++g) {
+    const Groove& o = grooves[g];
+    const std::string key = "grooves[" + std::to_string(g) + "]";
+    finite(o.axial_position, key + ".axial_position");
+    finite(o.start_angle, key + ".start_angle");
+    positive(o.width, key + ".width", "m");
+    EMB_THROW_IF(!(std::isfinite(o.angular_extent) && o.angular_extent > 0.0 &&
+                   o.angular_extent <= kTwoPi * (1 + kBorderSlack)),
+                 who << ": expected " << key << ".angular_extent in (0, 2 pi] rad, got "
+                     << o.angular_extent);
+    pressure(o.supply_pressure, key + ".supply_pressure");
+    EMB_THROW_IF(std::abs(o.axial_position) + 0.5 * o.width > half_length * (1 + kBorderSlack),
+                 who << ": " << key << " reaches outside the bearing: expected |axial_position| "
+                        "+ width/2 <= L/2 = " << half_length << " m, got "
+                     << std::abs(o.axial_position) + 0.5 * o.width << " m");
+    const int feature = static_cast<int>(holes.size() + g);
+    map.pressure.push_back(o.supply_pressure);
+    const double half_width = 0.5 * o.width + kBorderSlack * grid.dz();
+    const bool full = o.angular_extent >= kTwoPi * (1 - kBorderSlack);
+    const double extent = o.angular_extent + kBorderSlack * grid.dphi();
+    const int count = mark(feature, key, [&](int i, int j) {
+      if (std::abs(grid.axial(j) - o.axial_position) > half_width) return false;
+      return full || WrapPositive(grid.angle(i) - o.start_angle) <= extent ||
+             WrapPositive(grid.angle(i) - o.start_angle) >= kTwoPi - kBorderSlack * grid.dphi();
+    });
+    EMB_THROW_IF(count == 0,
+                 who << ": the grid is too coarse for " << key << " (width " << o.width
+                     << " m, extent " << o.angular_extent
+                     << " rad): expected at least one interior node inside it, got none (node "
+                        "spacing dz = " << grid.dz() << " m, R dphi = " << R * grid.dphi()
+                     << " m)");
+  }
+  for (int k = 0; k < grid.num_unknowns(); ++k)
+    if (map.feature[k] >= 0) map.nodes.push_back(k);
+  return map;
+}
+
+}  // namespace emb::tribology

@@ -1,0 +1,70 @@
+#pragma once
+// Bearings and closed forms shared by the tribology tests.
+
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Dense>
+
+#include "libemb/tribology/film_solver.h"
+
+namespace emb::tribology::test {
+
+constexpr double kPi = std::numbers::pi;
+
+// A passenger-car main bearing (R = 30 mm, L = 20 mm, c = 30 um) on a hot 10W-30
+// (mu = 8.6 mPa s) at 3000 rpm.
+constexpr double kMainRadius = 0.03, kMainLength = 0.02, kMainClearance = 30e-6;
+constexpr double kMainViscosity = 0.0086;
+constexpr double kMainSpeed = 3000.0 * 2.0 * kPi / 60.0;
+
+inline ReynoldsBearingParameters Plain(double radius, double length, double clearance,
+                                       GridSize grid, CavitationModel model,
+                                       double viscosity = kMainViscosity) {
+  ReynoldsBearingParameters p;
+  p.radius = radius;
+  p.length = length;
+  p.clearance = clearance;
+  p.grid = grid;
+  p.lubricant.viscosity = viscosity;
+  p.cavitation = model;
+  return p;
+}
+
+inline ReynoldsBearingParameters MainBearing(GridSize grid, CavitationModel model) {
+  return Plain(kMainRadius, kMainLength, kMainClearance, grid, model);
+}
+
+inline JournalKinematics Rotating(const Eigen::Vector2d& e, double omega) {
+  JournalKinematics k;
+  k.eccentricity = e;
+  k.journal_speed = omega;
+  return k;
+}
+
+// Components of the film force F along e (radial) and along z x e (tangential).
+struct Components {
+  double radial, tangential;
+};
+inline Components Split(const Eigen::Vector2d& F, const Eigen::Vector2d& e) {
+  const Eigen::Vector2d a = e.normalized(), b(-a.y(), a.x());
+  return {F.dot(a), F.dot(b)};
+}
+
+// Attitude angle [deg]: between the load the bearing carries, W = -F, and the line of
+// centres (journal rotating +z).
+inline double AttitudeDeg(const Eigen::Vector2d& F, const Eigen::Vector2d& e) {
+  const Components c = Split(F, e);
+  return std::atan2(c.tangential, -c.radial) * 180.0 / kPi;
+}
+
+// Butenschoen's (DIN 31652) Sommerfeld number So = W psi^2 / (L D mu omega), psi = c / R.
+inline double Sommerfeld(double W, double radius, double length, double clearance, double mu,
+                         double omega) {
+  return W * clearance * clearance / (2.0 * std::pow(radius, 3) * length * mu * omega);
+}
+
+// Observed order from three errors of a sequence refined by 2: log2(e_h / e_{h/2}).
+inline double Order(double coarse, double fine) { return std::log2(coarse / fine); }
+
+}  // namespace emb::tribology::test

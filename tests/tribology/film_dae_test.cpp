@@ -1,0 +1,198 @@
+// The film as DAE states: the residual vanishes at the quasi-static film (a consistent start
+// with u_dot = 0); its sum telescopes to the mass balance; every Jacobian block a DAE needs
+// (dr/du, dr/du_dot, dr/dx, dr/dv and the loads' partials) against central differences;
+// which states are differential.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "libemb/common/error.h"
+#include "libemb/tribology/film_dae.h"
+#include "tests/tribology/bearing_cases.h"
+
+namespace emb::tribology {
+namespace {
+
+using Eigen::Vector2d;
+using Eigen::VectorXd;
+using namespace test;
+
+// The quasi-static solve leaves residuals at the round-off of the flux sums.
+constexpr double kConsistencyTolerance = 1e-12;
+// Telescoping sums: round-off of n flux terms.
+constexpr double kBalanceTolerance = 1e-11;
+// Central differences with relative steps 1e-6 of blocks that are piecewise polynomial in
+// the inputs (h^3): truncation ~1e-12, cancellation ~1e-10 of the entries' scale.
+constexpr double kJacobianTolerance = 1e-6;
+
+ReynoldsBearingParameters Supplied() {
+  ReynoldsBearingParameters p = MainBearing({24, 6}, CavitationModel::kMassConserving);
+  p.oil_holes.push_back({0.5 * kPi, 0.0, 5e-3, 3e5});
+  p.lubricant.pressure_law = PressureViscosityLaw::kBarus;
+  p.lubricant.pressure_viscosity_coefficient = 1.5e-8;
+  return p;
+}
+
+JournalKinematics Moving() {
+  JournalKinematics k;
+  k.eccentricity = Vector2d(0.15, -0.6) * kMainClearance;
+  k.tilt = Vector2d(0.4e-3, -0.25e-3);
+  k.eccentricity_rate = Vector2d(0.02, 0.015) * kMainClearance * kMainSpeed;
+  k.tilt_rate = Vector2d(-0.1e-3, 0.05e-3) * kMainSpeed;
+  k.journal_speed = kMainSpeed;
+  k.shell_speed = 0.1 * kMainSpeed;
+  return k;
+}
+
+// A state near the quasi-static film: u from the solve, a random u_dot of the film's time
+// scale; no u within 1e-4 of the switch (central differences must not cross it).
+void State(const ReynoldsBearing& b, VectorXd* u, VectorXd* u_dot) {
+  FilmSolver s(b);
+  BearingLoads l;
+  ASSERT_TRUE(s.SolveQuasiStatic(Moving(), &l).ok());
+  *u = s.universal();
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  u_dot->resize(u->size());
+  for (int k = 0; k < u->size(); ++k) {
+    if (std::abs((*u)[k]) < 1e-4 && !b.is_supply(k)) (*u)[k] = -1e-3;
+    (*u_dot)[k] = b.is_supply(k) ? 0.0 : 10.0 * kMainSpeed * U(rng) * 1e-2;
+  }
+}
+
+TEST(FilmDae, QuasiStaticFilmIsAConsistentStart) {
+  const ReynoldsBearing b("main_1", Supplied());
+  FilmSolver s(b);
+  BearingLoads ls, ld;
+  ASSERT_TRUE(s.SolveQuasiStatic(Moving(), &ls).ok());
+  FilmDae dae(b);
+  VectorXd r;
+  ASSERT_TRUE(dae.CalcResidual(s.universal(), VectorXd::Zero(dae.size()), Moving(), &r, &ld).ok());
+  const double scale = std::abs(ls.side_flow) + std::abs(ls.supply_flow);
+  EXPECT_LT(r.cwiseAbs().maxCoeff(), kConsistencyTolerance * scale);
+  EXPECT_LT((ls.Stacked() - ld.Stacked()).norm(), kConsistencyTolerance * ls.Stacked().norm());
+}
+
+TEST(FilmDae, ResidualSumIsTheMassBalance) {
+  const ReynoldsBearing b("main_1", Supplied());
+  VectorXd u, u_dot, r;
+  State(b, &u, &u_dot);
+  FilmDae dae(b);
+  BearingLoads l;
+  ASSERT_TRUE(dae.CalcResidual(u, u_dot, Moving(), &r, &l).ok());
+  double sum = 0.0;
+  for (int k = 0; k < dae.size(); ++k)
+    if (!b.is_supply(k)) sum += r[k];
+  const double scale = std::abs(l.side_flow) + std::abs(l.supply_flow) + std::abs(l.storage_rate);
+  EXPECT_NEAR(sum, l.storage_rate + l.side_flow - l.supply_flow, kBalanceTolerance * scale);
+}
+
+TEST(FilmDae, JacobianBlocksMatchCentralDifferences) {
+  using KL = KinematicsLayout;
+  const ReynoldsBearing b("main_1", Supplied());
+  VectorXd u, u_dot;
+  State(b, &u, &u_dot);
+  FilmDae dae(b);
+  FilmDaeJacobian J;
+  ASSERT_TRUE(dae.CalcJacobian(u, u_dot, Moving(), &J).ok());
+  const int n = dae.size();
+  const Eigen::MatrixXd dr_du = Eigen::MatrixXd(J.dr_du);
+  auto eval = [&](const VectorXd& uu, const VectorXd& ud, const JournalKinematics& k,
+                  VectorXd* r, Eigen::Matrix<double, 6, 1>* y) {
+    BearingLoads l;
+    EXPECT_TRUE(dae.CalcResidual(uu, ud, k, r, &l).ok());
+    *y = l.Stacked();
+  };
+  VectorXd rp, rm;
+  Eigen::Matrix<double, 6, 1> yp, ym;
+  const double r_scale = std::max(dr_du.cwiseAbs().maxCoeff(), 1e-300);
+  for (int k = 0; k < n; ++k) {
+    const double h = 1e-6 * std::max(1.0, std::abs(u[k]));
+    VectorXd up = u, um = u;
+    up[k] += h;
+    um[k] -= h;
+    eval(up, u_dot, Moving(), &rp, &yp);
+    eval(um, u_dot, Moving(), &rm, &ym);
+    const VectorXd col = (rp - rm) / (2 * h);
+    EXPECT_LT((col - dr_du.col(k)).cwiseAbs().maxCoeff(), kJacobianTolerance * r_scale) << k;
+    const Eigen::Matrix<double, 6, 1> ycol = (yp - ym) / (2 * h);
+    for (int row = 0; row < 6; ++row) {
+      const double scale = std::max(J.loads.d_unknowns.row(row).cwiseAbs().maxCoeff(), 1e-300);
+      EXPECT_NEAR(J.loads.d_unknowns(row, k), ycol[row], kJacobianTolerance * scale) << k;
+    }
+    // dr/du_dot is diagonal.
+    const double hd = 1e-6 * kMainSpeed;
+    VectorXd dp = u_dot, dm = u_dot;
+    dp[k] += hd;
+    dm[k] -= hd;
+    eval(u, dp, Moving(), &rp, &yp);
+    eval(u, dm, Moving(), &rm, &ym);
+    VectorXd dcol = (rp - rm) / (2 * hd);
+    EXPECT_NEAR(dcol[k], J.dr_du_dot[k], kJacobianTolerance * J.dr_du_dot.cwiseAbs().maxCoeff());
+    dcol[k] = 0.0;
+    EXPECT_LT(dcol.cwiseAbs().maxCoeff(), 1e-12 * J.dr_du_dot.cwiseAbs().maxCoeff() + 1e-300);
+  }
+  // Kinematics.
+  const double c = kMainClearance, L = kMainLength, w = kMainSpeed;
+  const double steps[10] = {1e-6 * c, 1e-6 * c, 1e-6 * c / L, 1e-6 * c / L, 1e-6 * c * w,
+                            1e-6 * c * w, 1e-6 * c / L * w, 1e-6 * c / L * w, 1e-6 * w, 1e-6 * w};
+  Eigen::MatrixXd dr_dk(n, 10);
+  dr_dk << J.dr_dx, J.dr_dv;
+  Eigen::Matrix<double, 6, 10> dy_dk;
+  dy_dk << J.loads.d_position, J.loads.d_velocity;
+  for (int col = 0; col < 10; ++col) {
+    JournalKinematics kp = Moving(), km = Moving();
+    for (auto [k, sign] : {std::pair{&kp, 1.0}, {&km, -1.0}}) {
+      const double d = sign * steps[col];
+      switch (col) {
+        case KL::kEx: k->eccentricity.x() += d; break;
+        case KL::kEy: k->eccentricity.y() += d; break;
+        case KL::kTiltX: k->tilt.x() += d; break;
+        case KL::kTiltY: k->tilt.y() += d; break;
+        case 4 + KL::kEdotX: k->eccentricity_rate.x() += d; break;
+        case 4 + KL::kEdotY: k->eccentricity_rate.y() += d; break;
+        case 4 + KL::kTiltDotX: k->tilt_rate.x() += d; break;
+        case 4 + KL::kTiltDotY: k->tilt_rate.y() += d; break;
+        case 4 + KL::kOmegaJournal: k->journal_speed += d; break;
+        case 4 + KL::kOmegaShell: k->shell_speed += d; break;
+      }
+    }
+    eval(u, u_dot, kp, &rp, &yp);
+    eval(u, u_dot, km, &rm, &ym);
+    const VectorXd col_r = (rp - rm) / (2 * steps[col]);
+    const double scale_r = std::max(dr_dk.col(col).cwiseAbs().maxCoeff(), col_r.cwiseAbs().maxCoeff());
+    EXPECT_LT((col_r - dr_dk.col(col)).cwiseAbs().maxCoeff(), kJacobianTolerance * scale_r + 1e-300)
+        << "dr/d(input " << col << ")";
+    const Eigen::Matrix<double, 6, 1> col_y = (yp - ym) / (2 * steps[col]);
+    for (int row = 0; row < 6; ++row) {
+      const double scale = std::max({dy_dk.row(row).cwiseAbs().maxCoeff(), std::abs(col_y[row]), 1e-300});
+      EXPECT_NEAR(dy_dk(row, col), col_y[row], kJacobianTolerance * scale)
+          << "d(load " << row << ")/d(input " << col << ")";
+    }
+  }
+}
+
+TEST(FilmDae, CavitatedStatesAreTheDifferentialOnes) {
+  const ReynoldsBearing b("main_1", Supplied());
+  VectorXd u, u_dot, id;
+  State(b, &u, &u_dot);
+  FilmDae dae(b);
+  dae.DifferentialStates(u, &id);
+  int differential = 0;
+  for (int k = 0; k < dae.size(); ++k) {
+    EXPECT_EQ(id[k], (!b.is_supply(k) && u[k] < 0.0) ? 1.0 : 0.0);
+    differential += id[k] > 0.0;
+  }
+  EXPECT_GT(differential, 0);
+  EXPECT_LT(differential, dae.size());
+}
+
+TEST(FilmDae, RefusesANonConservingModel) {
+  const ReynoldsBearing b("main_1", MainBearing({24, 6}, CavitationModel::kReynolds));
+  EXPECT_THROW(FilmDae dae(b), InputError);
+}
+
+}  // namespace
+}  // namespace emb::tribology
