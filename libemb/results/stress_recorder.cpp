@@ -83,6 +83,7 @@ StressRecorder::StressRecorder(const mbs::System& system, std::vector<StressOutp
     next_field_.push_back(0);
     next_surface_.push_back(0);
     surfaces_.emplace_back();
+    snapshots_.emplace_back();
     for (std::size_t g = 0; g < probe->groups().size(); ++g)
       groups_.push_back({static_cast<int>(o), static_cast<int>(g), {}, {}, {}, {}});
   }
@@ -110,12 +111,19 @@ void StressRecorder::Add(const mbs::Sample& s) {
     surfaces_[o].field.push_back(
         probe.SurfaceStresses(s.q.segment(L.elastic_q(b), L.num_elastic(b))));
   }
+  // Each output's probe evaluated once per sample, for all of its groups.
+  std::vector<char> evaluated(outputs_.size(), 0);
   for (Group& g : groups_) {
-    const StressOutput& out = outputs_[static_cast<std::size_t>(g.output)];
-    if (!out.fatigue && !take_field[static_cast<std::size_t>(g.output)]) continue;
-    const mbs::StressProbe& probe = *probes_[static_cast<std::size_t>(g.output)];
-    const int b = probe.body();
-    const mbs::StressSnapshot& snap = probe.Evaluate(s.q.segment(L.elastic_q(b), L.num_elastic(b)));
+    const auto o = static_cast<std::size_t>(g.output);
+    const StressOutput& out = outputs_[o];
+    if (!out.fatigue && !take_field[o]) continue;
+    mbs::StressSnapshot& snap = snapshots_[o];
+    if (!evaluated[o]) {
+      const mbs::StressProbe& probe = *probes_[o];
+      const int b = probe.body();
+      probe.Evaluate(s.q.segment(L.elastic_q(b), L.num_elastic(b)), &snap);
+      evaluated[o] = 1;
+    }
     const auto gi = static_cast<std::size_t>(g.index);
     if (out.fatigue) {
       g.t.push_back(s.t);

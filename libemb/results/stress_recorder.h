@@ -73,9 +73,10 @@ class StressRecorder {
   const mbs::System& system_;
   std::vector<StressOutput> outputs_;
   std::vector<std::shared_ptr<const mbs::StressProbe>> probes_;
-  std::vector<std::size_t> next_field_;    // per output: next field time to take
-  std::vector<std::size_t> next_surface_;  // per output: next surface field time to take
-  std::vector<Surface> surfaces_;          // per output
+  std::vector<mbs::StressSnapshot> snapshots_;  // per output: the last sample's stresses
+  std::vector<std::size_t> next_field_;         // per output: next field time to take
+  std::vector<std::size_t> next_surface_;       // per output: next surface field time to take
+  std::vector<Surface> surfaces_;               // per output
   std::vector<Group> groups_;
 };
 

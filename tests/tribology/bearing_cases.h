@@ -42,6 +42,19 @@ inline JournalKinematics Rotating(const Eigen::Vector2d& e, double omega) {
   return k;
 }
 
+// The main bearing's journal off-centre, tilted and moving, the shell turning too: every term
+// of the film is active.
+inline JournalKinematics Moving() {
+  JournalKinematics k;
+  k.eccentricity = Eigen::Vector2d(0.15, -0.6) * kMainClearance;
+  k.tilt = Eigen::Vector2d(0.4e-3, -0.25e-3);
+  k.eccentricity_rate = Eigen::Vector2d(0.02, 0.015) * kMainClearance * kMainSpeed;
+  k.tilt_rate = Eigen::Vector2d(-0.1e-3, 0.05e-3) * kMainSpeed;
+  k.journal_speed = kMainSpeed;
+  k.shell_speed = 0.1 * kMainSpeed;
+  return k;
+}
+
 // Components of the film force F along e (radial) and along z x e (tangential).
 struct Components {
   double radial, tangential;

@@ -35,17 +35,6 @@ ReynoldsBearingParameters Supplied() {
   return p;
 }
 
-JournalKinematics Moving() {
-  JournalKinematics k;
-  k.eccentricity = Vector2d(0.15, -0.6) * kMainClearance;
-  k.tilt = Vector2d(0.4e-3, -0.25e-3);
-  k.eccentricity_rate = Vector2d(0.02, 0.015) * kMainClearance * kMainSpeed;
-  k.tilt_rate = Vector2d(-0.1e-3, 0.05e-3) * kMainSpeed;
-  k.journal_speed = kMainSpeed;
-  k.shell_speed = 0.1 * kMainSpeed;
-  return k;
-}
-
 // A state near the quasi-static film: u from the solve, a random u_dot of the film's time
 // scale; no u within 1e-4 of the switch (central differences must not cross it).
 void State(const ReynoldsBearing& b, VectorXd* u, VectorXd* u_dot) {

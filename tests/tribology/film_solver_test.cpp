@@ -32,18 +32,6 @@ ReynoldsBearingParameters Case(CavitationModel model) {
   return p;
 }
 
-// A journal off-centre, tilted and moving: every term of the film is active.
-JournalKinematics Moving() {
-  JournalKinematics k;
-  k.eccentricity = Vector2d(0.15, -0.6) * kMainClearance;
-  k.tilt = Vector2d(0.4e-3, -0.25e-3);
-  k.eccentricity_rate = Vector2d(0.02, 0.015) * kMainClearance * kMainSpeed;
-  k.tilt_rate = Vector2d(-0.1e-3, 0.05e-3) * kMainSpeed;
-  k.journal_speed = kMainSpeed;
-  k.shell_speed = 0.1 * kMainSpeed;
-  return k;
-}
-
 Eigen::Matrix<double, 6, 1> Loads(FilmSolver& s, const JournalKinematics& k) {
   BearingLoads l;
   const FilmSolveInfo info = s.SolveQuasiStatic(k, &l);

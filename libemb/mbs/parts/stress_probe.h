@@ -77,10 +77,11 @@ class StressProbe final : public Probe {
   /// Stresses (6 x s, column i = surface node i) on the whole surface at `eta`. Cost
   /// O(6 s n). @pre has_surface().
   Eigen::MatrixXd SurfaceStresses(const Eigen::VectorXd& eta) const;
-  /// All groups' stresses and measures at elastic coordinates `eta`; the same `eta` as the
-  /// last call returns the kept result (valid until the next call with another eta).
-  /// Not thread-safe (one run per process: emb's sweeps fork).
-  const StressSnapshot& Evaluate(const Eigen::VectorXd& eta) const;
+  /// All groups' stresses and measures at elastic coordinates `eta`, into the caller's
+  /// snapshot (its vectors reused). The probe keeps nothing: it lives in the immutable
+  /// System, so a caller that reads one sample several times (the stress recorder) keeps the
+  /// snapshot itself.
+  void Evaluate(const Eigen::VectorXd& eta, StressSnapshot* out) const;
 
  protected:
   void DoEval(const System& system, const std::vector<BodyKinematics>& bodies,
@@ -92,8 +93,6 @@ class StressProbe final : public Probe {
   std::vector<int> nodes_;                         // component nodes
   std::vector<std::pair<int, int>> node_slots_;    // (group, index in the group) per node
   StressRows surface_;                             // whole surface (rows empty: none)
-  mutable Eigen::VectorXd last_eta_;               // the eta of snapshot_ (empty: none yet)
-  mutable StressSnapshot snapshot_;
 };
 
 /// The probe of `spec` on `part` from the body file's modal stress groups `file_groups`

@@ -21,7 +21,7 @@
 #include "libemb/mbs/forces/maxwell_arm.h"
 #include "libemb/mbs/forces/spring_damper.h"
 #include "libemb/mbs/parts/flexible_body.h"
-#include "tests/support/flexible_bar.h"
+#include "tests/support/pinned_bar.h"
 
 // Every heap allocation goes through malloc (operator new and Eigen's dynamic matrices
 // alike): this test binary replaces the malloc family by counting wrappers around glibc's.
@@ -88,26 +88,9 @@ namespace {
 // spring-damper to the ground, with a rigid disc on a journal bearing beside it whose shaft is
 // loaded by a harmonic force, a torsional spring and a Maxwell arm (a state of its own).
 mbs::System Model() {
-  testing::BarSpec bar;
-  bar.interfaces = {"x0:rbe2", "x1:rbe3"};
-  bar.modes = 4;
-  bar.damping_ratio = 0.02;
-  mbs::System sys;
-  sys.SetGravity(Eigen::Vector3d(0, 0, -9.81));
-  mbs::PartPlacement placement;
-  placement.omega_W = Eigen::Vector3d(0, 30, 0);
-  const mbs::FlexiblePart part =
-      mbs::AddFlexibleBody(&sys, "bar", testing::FlexibleBar(bar), "bar", {}, placement);
-  const Eigen::Matrix3d pin_axes = testing::Axes(Eigen::Vector3d::UnitY());
-  mbs::AddInterfaceMarker(&sys, part, "root", "x0", pin_axes);
-  const int tip = mbs::AddInterfaceMarker(&sys, part, "tip", "x1");
-  sys.AddMarker("pivot", "ground", Eigen::Vector3d(0, 0.02, 0.015), pin_axes);
-  const int spring_end = sys.AddMarker("spring_end", "ground", Eigen::Vector3d(0.62, 0.02, 0.015),
-                                       Eigen::Matrix3d::Identity());
-  sys.AddJoint("pin", mbs::JointType::kRevolute, "root", "pivot");
-  Eigen::Matrix<double, 6, 6> K = Eigen::Matrix<double, 6, 6>::Zero();
-  K.diagonal() << 1.0e5, 2.0e5, 3.0e5, 10, 20, 30;
-  sys.AddForceElement(std::make_shared<mbs::Bushing>("tip_mount", tip, spring_end, K, 1.0e-3 * K));
+  testing::PinnedBar m = testing::PinnedSpinningBar();
+  mbs::System& sys = m.sys;
+  const int tip = m.tip, spring_end = m.spring_end;
   sys.AddForceElement(std::make_shared<mbs::TranslationalSpringDamper>("tip_spring", tip, spring_end,
                                                                        2.0e3, 5.0, 0.01));
   // A disc on a journal bearing (Ocvirk), its shaft axis z, spinning.
@@ -136,7 +119,7 @@ mbs::System Model() {
       "shake", mbs::AppliedLoad::Kind::kForce, shaft, Eigen::Vector3d::UnitX(),
       mbs::AppliedLoad::Frame::kWorld, mbs::TimeFunction::Harmonic(20.0, 50.0, 0.0, 0.0)));
   sys.Finalize();
-  return sys;
+  return std::move(m.sys);
 }
 
 TEST(GglDaeAllocation, ResidualAndIterationMatrixAllocateNothing) {

@@ -11,37 +11,16 @@
 #include "libemb/mbs/parts/flexible_body.h"
 #include "libemb/mbs/forces/bushing.h"
 #include "tests/support/dae_differences.h"
-#include "tests/support/flexible_bar.h"
+#include "tests/support/pinned_bar.h"
 
 namespace emb {
 namespace {
 
-// A flexible bar pinned at x0, held at x1 by a bushing, spinning about the pin, with
-// gravity: every flexible term (inertia coupling, constraints and force elements through
-// interface markers) is active. Built in C++ (mbs/flexible/flexible_body.h).
+// The pinned spinning bar (tests/support/pinned_bar.h) as it is.
 mbs::System Model() {
-  testing::BarSpec bar;
-  bar.interfaces = {"x0:rbe2", "x1:rbe3"};
-  bar.modes = 4;
-  bar.damping_ratio = 0.02;
-  mbs::System sys;
-  sys.SetGravity(Eigen::Vector3d(0, 0, -9.81));
-  mbs::PartPlacement placement;
-  placement.omega_W = Eigen::Vector3d(0, 30, 0);
-  const mbs::FlexiblePart part =
-      mbs::AddFlexibleBody(&sys, "bar", testing::FlexibleBar(bar), "bar", {}, placement);
-  const Eigen::Matrix3d pin_axes = testing::Axes(Eigen::Vector3d::UnitY());
-  mbs::AddInterfaceMarker(&sys, part, "root", "x0", pin_axes);
-  const int tip = mbs::AddInterfaceMarker(&sys, part, "tip", "x1");
-  sys.AddMarker("pivot", "ground", Eigen::Vector3d(0, 0.02, 0.015), pin_axes);
-  const int spring_end = sys.AddMarker("spring_end", "ground", Eigen::Vector3d(0.62, 0.02, 0.015),
-                                       Eigen::Matrix3d::Identity());
-  sys.AddJoint("pin", mbs::JointType::kRevolute, "root", "pivot");
-  Eigen::Matrix<double, 6, 6> K = Eigen::Matrix<double, 6, 6>::Zero();
-  K.diagonal() << 1.0e5, 2.0e5, 3.0e5, 10, 20, 30;
-  sys.AddForceElement(std::make_shared<mbs::Bushing>("tip_mount", tip, spring_end, K, 1.0e-3 * K));
-  sys.Finalize();
-  return sys;
+  testing::PinnedBar m = testing::PinnedSpinningBar();
+  m.sys.Finalize();
+  return std::move(m.sys);
 }
 
 struct Consistent {
