@@ -85,12 +85,13 @@ std::unique_ptr<DaeIntegrator> MakeIntegrator(const System& sys, const GglDae& d
     IdaOptions o = options;
     // IDA has no error-test mask: a huge atol takes a component out of it.
     if (mask.size()) {
+      const Eigen::VectorXd differential = dae.DifferentialMask();  // once, not per component
       if (o.component_atol.size() == 0)
-        o.component_atol = (dae.DifferentialMask().array() != 0.0).select(
+        o.component_atol = (differential.array() != 0.0).select(
             Eigen::VectorXd::Constant(mask.size(), o.atol),
             Eigen::VectorXd::Constant(mask.size(), o.algebraic_atol > 0 ? o.algebraic_atol : o.atol));
       for (Eigen::Index i = 0; i < mask.size(); ++i)
-        if (mask[i] == 0.0 && dae.DifferentialMask()[i] != 0.0) o.component_atol[i] = 1e30;
+        if (mask[i] == 0.0 && differential[i] != 0.0) o.component_atol[i] = 1e30;
     }
     return std::make_unique<IdaSolver>(dae, settings.t_start, y, yp, o);
   }

@@ -17,6 +17,23 @@
 #include "libemb/mbs/core/system.h"
 
 namespace emb::mbs {
+namespace {
+
+// Every force element's K_ab and D_ab at the bodies' state, in one dense sink.
+DenseForceJacobian CollectForceJacobian(const System& sys, const std::vector<BodyKinematics>& bodies,
+                                        const std::vector<MarkerKinematics>& markers, double t,
+                                        ConstraintWorkspace* ws) {
+  DenseForceJacobian forces(sys.layout());
+  const auto& elements = sys.force_elements();
+  for (std::size_t k = 0; k < elements.size(); ++k) {
+    ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
+    ctx.markers = &markers;
+    elements[k]->AddForceJacobian(ctx, &forces);
+  }
+  return forces;
+}
+
+}  // namespace
 
 Eigen::MatrixXd CalcTangentStiffness(const System& sys, const Eigen::VectorXd& q,
                                      const Eigen::VectorXd& v, const Eigen::VectorXd& lambda,
@@ -26,13 +43,7 @@ Eigen::MatrixXd CalcTangentStiffness(const System& sys, const Eigen::VectorXd& q
   const auto bodies = CalcBodyKinematics(sys, q, v);
   std::vector<MarkerKinematics> markers;
   CalcAllMarkerKinematics(sys, bodies, &markers);
-  DenseForceJacobian forces(L);
-  const auto& elements = sys.force_elements();
-  for (std::size_t k = 0; k < elements.size(); ++k) {
-    ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
-    ctx.markers = &markers;
-    elements[k]->AddForceJacobian(ctx, &forces);
-  }
+  const DenseForceJacobian forces = CollectForceJacobian(sys, bodies, markers, t, ws);
   Eigen::MatrixXd K = forces.stiffness();
   auto add_body_block = [&](int a, int b, const Eigen::MatrixXd& block) {
     ForEachBodySubBlock(L, a, b, [&](int r, int c, int i0, int j0, int nr, int nc) {
@@ -91,13 +102,7 @@ Eigen::MatrixXd CalcVelocityStiffness(const System& sys, const std::vector<BodyK
   const StateLayout& L = sys.layout();
   std::vector<MarkerKinematics> markers;
   CalcAllMarkerKinematics(sys, bodies, &markers);
-  DenseForceJacobian forces(L);
-  const auto& elements = sys.force_elements();
-  for (std::size_t k = 0; k < elements.size(); ++k) {
-    ForceContext ctx{&sys, &bodies, t, ws, sys.force_angle_slot(static_cast<int>(k))};
-    ctx.markers = &markers;
-    elements[k]->AddForceJacobian(ctx, &forces);
-  }
+  const DenseForceJacobian forces = CollectForceJacobian(sys, bodies, markers, t, ws);
   Eigen::MatrixXd G = -forces.damping();
   for (int b = 1; b < sys.num_bodies(); ++b) {
     if (L.num_elastic(b)) {
