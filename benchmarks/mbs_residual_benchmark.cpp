@@ -41,6 +41,7 @@ struct Fixture {
   explicit Fixture(int n) : sys(Chain(n)), dae(sys) {
     AnalysisSettings st;
     const PreparedRun run = PrepareRun(sys, st);
+    ThrowIfNotReady(run);
     ConstraintWorkspace& ws = dae.workspace();
     const AccelerationSolution acc = SolveAccelerations(sys, run.q0, run.v0, 0.0, &ws);
     dae.MakeInitialValues(run.q0, run.v0, acc.vdot, acc.lambda, &y, &yp);

@@ -54,6 +54,7 @@ Outcome Run(const emb::scene::Scene& sc, AnalysisSettings s, double rtol, int re
     Outcome o;
     const auto start = std::chrono::steady_clock::now();
     const emb::mbs::PreparedRun run = emb::mbs::PrepareRun(sc.system, s);
+    emb::mbs::ThrowIfNotReady(run);
     o.result = emb::mbs::RunAnalysis(run, s, [&](const Sample& smp) {
       o.q.push_back(smp.q);
       o.t.push_back(smp.t);

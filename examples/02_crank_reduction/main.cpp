@@ -67,6 +67,10 @@ bool Run(int argc, char** argv) {
   job.damping.ratio = 0.01;
   job.keep_mesh_shapes = false;  // a smaller file; keep them to animate the modes
   const ReducedBody body = ReduceBody(mesh, fe, steel, job);
+  if (!body.ok()) {  // a failed factorisation or eigen-solve is the body's status, not a throw
+    std::fprintf(stderr, "reduction failed (%s): %s\n", Name(body.status), body.message.c_str());
+    return 1;
+  }
 
   // 3. What came out: the interface nodes, then the certificate's frequency comparison.
   std::printf("\n interface          coupling  reference point [m]           nodes\n");

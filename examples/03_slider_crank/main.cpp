@@ -95,6 +95,7 @@ bool Run(int argc, char** argv) {
   settings.ida.rtol = rtol;
   settings.ida.atol = 1e-2 * rtol;
   const PreparedRun run = PrepareRun(sys, settings);
+  ThrowIfNotReady(run);  // an assembly that does not close is a status; here it ends the run
   std::printf("slider-crank: %d bodies, %d constraint equations, DOF %d (Gruebler %d)\n",
               run.system.layout().num_moving(), run.system.num_equations(), run.dof.true_dof,
               run.dof.gruebler_dof);

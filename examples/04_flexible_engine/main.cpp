@@ -62,6 +62,7 @@ EngineRun RunEngine(const std::string& scene_text, const std::string& name) {
   settings.t_end = 0.04;        // one four-stroke cycle at 3000 rpm
   settings.output_step = 2e-5;  // 0.36 deg: the power integrals below use these samples
   const mbs::PreparedRun run = mbs::PrepareRun(sc.system, settings);
+  mbs::ThrowIfNotReady(run);  // the preparation's status (assembly, elastic start) as an error
   for (const std::string& note : sc.notes) std::printf("%s: %s\n", name.c_str(), note.c_str());
 
   // 2. Where the numbers are. The dynamometer's power is its drive torque (the reaction of

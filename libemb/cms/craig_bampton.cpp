@@ -115,16 +115,23 @@ EigenResult SolveSelected(const EigenSolveFn& solve, double sigma, int available
   return r;
 }
 
-void CheckEigen(const EigenResult& r, const char* what) {
-  if (!r.ok())
-    EMB_THROW(NumericalError, what << " eigen-solve " << Name(r.status) << ": " << r.message);
+// Marks `b` as failed at a numerical step. @returns it, for `return Failed(...)`.
+ReductionBasis Failed(ReductionBasis b, ReductionStatus status, std::string message) {
+  b.status = status;
+  b.message = std::move(message);
+  return b;
+}
+
+std::string EigenFailure(const EigenResult& r, const char* what) {
+  return std::string(what) + " eigen-solve " + Name(r.status) + ": " + r.message;
 }
 
 // Inertia relief: the load less its rigid-body inertia forces, F − M R (RᵀMR)⁻¹ Rᵀ F, is
 // self-equilibrated; the part pinned 3-2-1 (by multipliers on six unknowns, which then carry no
 // reaction) deforms under it, and its rigid motion is removed M-orthogonally (Rᵀ M u = 0).
-Eigen::MatrixXd SolveInertiaRelief(const Mesh& mesh, const SystemMatrices& sys,
-                                   const Eigen::MatrixXd& F) {
+// @returns false (with the message) if the pinned part cannot be factorised.
+bool SolveInertiaRelief(const Mesh& mesh, const SystemMatrices& sys, const Eigen::MatrixXd& F,
+                        Eigen::MatrixXd* U, std::string* message) {
   const int N = sys.num_dofs();
   const Eigen::MatrixXd R = RigidBodyModes(mesh);
   const Eigen::MatrixXd MR = sys.M * R;
@@ -136,12 +143,13 @@ Eigen::MatrixXd SolveInertiaRelief(const Mesh& mesh, const SystemMatrices& sys,
   SparseMatrix G(6, N);
   G.setFromTriplets(t.begin(), t.end());
   const PinnedConstrainedSolver pinned(sys.K, R, pins, G);
-  if (!pinned.ok())
-    EMB_THROW(NumericalError, "inertia relief: the part pinned 3-2-1 could not be solved: "
-                                  << pinned.message());
-  Eigen::MatrixXd U = pinned.Solve(balanced, Eigen::MatrixXd::Zero(6, F.cols()));
-  U -= R * rigid_mass.solve(MR.transpose() * U);
-  return U;
+  if (!pinned.ok()) {
+    *message = "inertia relief: the part pinned 3-2-1 could not be solved: " + pinned.message();
+    return false;
+  }
+  *U = pinned.Solve(balanced, Eigen::MatrixXd::Zero(6, F.cols()));
+  *U -= R * rigid_mass.solve(MR.transpose() * *U);
+  return true;
 }
 
 // The constraint modes K_II Ψ + Cᵀ Λ = rhs, C Ψ = Q in groups of at most
@@ -201,7 +209,10 @@ ReductionBasis BuildFreeFree(const Mesh& mesh, const SystemMatrices& sys,
         return SolveGeneralizedEigen(solver, so, p);
       },
       LambdaFromHz(o.shift_hz), sys.num_dofs(), shifted, b.selection_note, progress);
-  CheckEigen(b.eig, "free-free");
+  if (!b.eig.ok()) {
+    std::string message = EigenFailure(b.eig, "free-free");
+    return Failed(std::move(b), ReductionStatus::kEigenSolveFailed, std::move(message));
+  }
   const double threshold = 1e-10 * NormOne(sys.K) / NormOne(sys.M);
   const int rigid = static_cast<int>((b.eig.eigenvalues.array().abs() < threshold).count());
   if (rigid != 6)
@@ -218,7 +229,9 @@ ReductionBasis BuildFreeFree(const Mesh& mesh, const SystemMatrices& sys,
   for (const auto& [name, s] : b.eig.times.phases) b.times.Add(name, s);
   if (static_loads.cols() > 0) {
     sw.Restart();
-    b.static_responses = SolveInertiaRelief(mesh, sys, static_loads);
+    std::string message;
+    if (!SolveInertiaRelief(mesh, sys, static_loads, &b.static_responses, &message))
+      return Failed(std::move(b), ReductionStatus::kNotFactorised, std::move(message));
     b.static_support = kSupportInertiaRelief;
     b.times.Add("static load cases", sw.seconds());
   }
@@ -302,6 +315,22 @@ std::string ModeSelection::Describe() const {
   return o.str();
 }
 
+const char* Name(ReductionStatus status) {
+  switch (status) {
+    case ReductionStatus::kDone:
+      return "done";
+    case ReductionStatus::kNotFactorised:
+      return "not-factorised";
+    case ReductionStatus::kEigenSolveFailed:
+      return "eigen-solve-failed";
+    case ReductionStatus::kStaticSolveFailed:
+      return "static-solve-failed";
+    case ReductionStatus::kReducedPencilFailed:
+      return "reduced-pencil-failed";
+  }
+  return "unknown";
+}
+
 Eigen::MatrixXd RigidBodyModes(const Mesh& mesh) {
   Eigen::MatrixXd R = Eigen::MatrixXd::Zero(3 * mesh.num_nodes(), 6);
   for (int i = 0; i < mesh.num_nodes(); ++i) {
@@ -374,8 +403,10 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
   const double sigma = slaved.empty() ? 0.0 : LambdaFromHz(o.shift_hz);
   if (!solver->Prepare(sigma)) {
     if (slaved.empty()) ThrowUnrestrained(mesh, interfaces, solver->message());
-    EMB_THROW(NumericalError, "fixed-interface matrix K_II - sigma M_II (sigma = "
-                                  << sigma << ") could not be factorised: " << solver->message());
+    std::ostringstream o;
+    o << "fixed-interface matrix K_II - sigma M_II (sigma = " << sigma
+      << ") could not be factorised: " << solver->message();
+    return Failed(std::move(b), ReductionStatus::kNotFactorised, o.str());
   }
   b.times.Add("factorisation", solver->factor_seconds());
   ReturnFreedMemory();  // the factorisation's temporaries (K_II − σM_II, CHOLMOD's workspace)
@@ -390,7 +421,10 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
           return solver->Eigenpairs(so, p);
         },
         sigma, available, o, b.selection_note, progress);
-    CheckEigen(b.eig, "fixed-interface");
+    if (!b.eig.ok()) {
+      std::string message = EigenFailure(b.eig, "fixed-interface");
+      return Failed(std::move(b), ReductionStatus::kEigenSolveFailed, std::move(message));
+    }
     for (const auto& [name, s] : b.eig.times.phases)
       if (name != "factorisation") b.times.Add(name, s);
     const int rigid = static_cast<int>((b.eig.eigenvalues.array().abs() < threshold).count());
@@ -425,8 +459,9 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
     int iterations = 0;
     UI = solver->StaticSolve(FI, Eigen::MatrixXd::Zero(C.rows(), nl), iterations, {});
     if (iterations < 0)
-      EMB_THROW(NumericalError, "the static load cases with the interfaces held did not "
-                                "converge: the interior stiffness is (nearly) singular");
+      return Failed(std::move(b), ReductionStatus::kStaticSolveFailed,
+                    "the static load cases with the interfaces held did not converge: the "
+                    "interior stiffness is (nearly) singular");
     b.times.Add("static load cases", sw.seconds());
   }
   // The factorisation is not needed from here on: released before the residuals and T are

@@ -71,8 +71,23 @@ struct ReductionOptions {
   PencilSolverFactory pencil_solver;
 };
 
+/// How the numerical steps of a reduction ended (ReductionBasis, ReducedBody). Inputs that
+/// cannot be reduced (more modes than unknowns, interfaces that leave part of the mesh
+/// unrestrained) are InputErrors instead; these are the solvers' outcomes on a valid input.
+enum class ReductionStatus {
+  kDone,
+  kNotFactorised,        ///< K_II − σ M_II (or the part pinned 3-2-1) could not be factorised
+  kEigenSolveFailed,     ///< the fixed-interface (free-free) eigen-solve failed its checks
+  kStaticSolveFailed,    ///< the static load cases did not converge
+  kReducedPencilFailed,  ///< the eigenproblem on (K̂, M̂) failed or lacks the rigid motions
+};
+const char* Name(ReductionStatus status);
+
 /// A reduction basis in full FE unknowns, with what it took to make it.
 struct ReductionBasis {
+  ReductionStatus status{ReductionStatus::kDone};
+  std::string message;  ///< what failed, with numbers, when status is not kDone
+  bool ok() const { return status == ReductionStatus::kDone; }
   std::vector<Interface> interfaces;
   /// N × (6·interfaces + modes): constraint modes (6 per interface, order t_x t_y t_z θ_x θ_y
   /// θ_z), then the kept fixed-interface modes (M-orthonormal). Free-free: 6 rigid motions
@@ -141,7 +156,8 @@ int NextModeCount(const Eigen::VectorXd& eigenvalues, double fmax_hz);
 ///   the mesh unrestrained (naming the floating region), dependent interface constraints.
 /// `static_loads` (N × k, may be empty): loads whose static responses are wanted too
 /// (ReductionBasis::static_responses), phase "static load cases".
-/// @throws NumericalError when the eigen-solve or the constraint modes fail their checks.
+/// A factorisation, eigen-solve or static solve that fails is the basis's status (the rest
+/// of it is then incomplete); on a distributed solver every rank returns it.
 ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
                                    const std::vector<Interface>& interfaces,
                                    const ReductionOptions& options, const ProgressFn& progress = {},

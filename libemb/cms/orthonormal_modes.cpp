@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/linalg/dense_eigen.h"
@@ -28,7 +29,10 @@ OrthonormalModes Orthonormalise(const Eigen::MatrixXd& K, const Eigen::MatrixXd&
 
   // (1) M̂-orthonormal basis Z of the independent directions.
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> me(Ms);
-  if (me.info() != Eigen::Success) EMB_THROW(NumericalError, "reduced mass: eigen-decomposition failed");
+  if (me.info() != Eigen::Success) {
+    out.failure = "reduced mass: eigen-decomposition failed";
+    return out;
+  }
   const double dmax = me.eigenvalues().maxCoeff();
   // Dependent basis vectors make M̂ singular; 1e-12 of the largest is far above round-off of
   // a well-posed basis (~1e-16) and far below any independent direction.
@@ -50,10 +54,13 @@ OrthonormalModes Orthonormalise(const Eigen::MatrixXd& K, const Eigen::MatrixXd&
   const Eigen::MatrixXd Qfull = qr.householderQ();
   const Eigen::MatrixXd Rr = qr.matrixQR().topRows(6).triangularView<Eigen::Upper>();
   const double rdiag = Rr.diagonal().cwiseAbs().minCoeff(), rmax = Rr.diagonal().cwiseAbs().maxCoeff();
-  if (keep < 7 || !(rdiag > 1e-8 * rmax))
-    EMB_THROW(NumericalError, "reduced basis: the six rigid-body motions are not in it (rank "
-                                  "test "
-                                  << rdiag << " of " << rmax << ")");
+  if (keep < 7 || !(rdiag > 1e-8 * rmax)) {
+    std::ostringstream o;
+    o << "reduced basis: the six rigid-body motions are not in it (rank test " << rdiag
+      << " of " << rmax << ")";
+    out.failure = o.str();
+    return out;
+  }
   const Eigen::MatrixXd Qr = Qfull.leftCols(6), Qc = Qfull.rightCols(keep - 6);
   out.rigid = Z * Qr;
   CanonicalizeEigenvectors(out.rigid, Eigen::VectorXd::Zero(6));
@@ -61,7 +68,10 @@ OrthonormalModes Orthonormalise(const Eigen::MatrixXd& K, const Eigen::MatrixXd&
   // Elastic modes in the M̂-orthogonal complement of the rigid motions.
   const Eigen::MatrixXd Kz = Symmetric(Z.transpose() * Ks * Z);
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ke(Symmetric(Qc.transpose() * Kz * Qc));
-  if (ke.info() != Eigen::Success) EMB_THROW(NumericalError, "reduced stiffness: eigen-decomposition failed");
+  if (ke.info() != Eigen::Success) {
+    out.failure = "reduced stiffness: eigen-decomposition failed";
+    return out;
+  }
   out.eigenvalues = ke.eigenvalues();
   out.elastic = Z * Qc * ke.eigenvectors();
   // Signs and degenerate rotations canonical (issue 12): the same body file from one BLAS

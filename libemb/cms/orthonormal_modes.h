@@ -12,11 +12,17 @@
 /// conditions ∫ρ φ dV = 0, ∫ρ x × φ dV = 0 hold). (3) The unconstrained spectrum of (K̂, M̂)
 /// is also computed, to show that exactly six eigenvalues are ~0.
 
+#include <string>
+
 #include <Eigen/Core>
 
 namespace emb {
 
 struct OrthonormalModes {
+  /// Empty, or why the decomposition failed (the rest is then incomplete): the rigid motions
+  /// are not in the basis, or an eigen-decomposition did not converge.
+  std::string failure;
+  bool ok() const { return failure.empty(); }
   Eigen::MatrixXd elastic;          ///< X (nr × ne): XᵀM̂X = I, XᵀK̂X = diag(λ) (see
                                     ///< degenerate_coupling)
   Eigen::VectorXd eigenvalues;      ///< λ_i = ω_i² [rad²/s²], ascending
@@ -48,8 +54,8 @@ struct OrthonormalModes {
 
 /// @param K, M  reduced stiffness and mass (nr × nr, symmetric, M positive semi-definite).
 /// @param rigid reduced coordinates of the six rigid motions (nr × 6).
-/// @throws NumericalError if the rigid motions are not in the basis (rank < 6 after dropping)
-///   or if an eigen-decomposition fails.
+/// The rigid motions missing from the basis (rank < 6 after dropping) or an
+/// eigen-decomposition that fails is OrthonormalModes::failure.
 OrthonormalModes Orthonormalise(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M,
                                 const Eigen::MatrixXd& rigid);
 

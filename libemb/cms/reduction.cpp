@@ -99,6 +99,11 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
       BuildReductionBasis(mesh, sys, interfaces, job.reduction, progress, inertial_loads);
   for (const auto& [name, s] : basis.times.phases) body.times.Add(name, s);
   ReturnFreedMemory();  // the interior factorisation and the Krylov basis
+  if (!basis.ok()) {
+    body.status = basis.status;
+    body.message = basis.message;
+    return body;
+  }
   if (!basis.on_this_process) {  // an MPI rank that took part in the solves: rank 0 goes on
     body.on_this_process = false;
     return body;
@@ -134,6 +139,11 @@ ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
   sw.Restart();
   body.modes = Orthonormalise(body.K, body.M, basis.rigid);
   body.times.Add("orthonormalisation", sw.seconds());
+  if (!body.modes.ok()) {
+    body.status = ReductionStatus::kReducedPencilFailed;
+    body.message = body.modes.failure;
+    return body;
+  }
   const Eigen::MatrixXd& X = body.modes.elastic;
   const int ne = static_cast<int>(X.cols());
   body.interface_shapes = basis.free_free ? Eigen::MatrixXd(0, ne)

@@ -62,6 +62,10 @@ struct ReductionJob {
 
 /// A reduced flexible body: everything a multibody run (and Python) needs.
 struct ReducedBody {
+  /// kDone, or the numerical step that failed (message); the rest is then incomplete.
+  ReductionStatus status{ReductionStatus::kDone};
+  std::string message;
+  bool ok() const { return status == ReductionStatus::kDone; }
   std::vector<Interface> interfaces;
   bool free_free{false};
   int num_boundary{0};                 ///< 6 · interfaces (6 rigid coordinates if free-free)
@@ -88,7 +92,9 @@ struct ReducedBody {
 
 /// Runs the job on an assembled part. With a distributed pencil solver in job.reduction every
 /// rank calls it (collective until the basis is built), and only rank 0's body is complete.
-/// @throws InputError / NumericalError as the steps do (see craig_bampton.h, interface.h).
+/// @throws InputError as the steps do (see craig_bampton.h, interface.h); a numerical step
+/// that fails (factorisation, eigen-solves, static solves, the reduced eigenproblem) is the
+/// body's status, on every rank of a distributed reduction.
 ReducedBody ReduceBody(const Mesh& mesh, const SystemMatrices& sys,
                        const IsotropicMaterial& material, const ReductionJob& job,
                        const ProgressFn& progress = {});

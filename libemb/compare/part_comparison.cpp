@@ -213,6 +213,9 @@ void RunCms(Context& c, int count) {
   job.certificate.static_check = false;
   job.keep_mesh_shapes = false;
   const ReducedBody body = ReduceBody(c.mesh, c.sys, c.o.material, job, c.progress);
+  if (!body.ok())
+    EMB_THROW(NumericalError, "CMS side: the reduction failed (" << Name(body.status)
+                                                                 << "): " << body.message);
   Eigen::VectorXd hz;
   if (c.o.support == SupportCase::kFreeFree) {
     hz = body.modes.frequencies_hz;

@@ -9,7 +9,7 @@ namespace emb::driveline {
 
 ClutchDamper::ClutchDamper(std::string name, const CoordinateTerm& term,
                            const ClutchDamperParameters& p)
-    : ForceElement(std::move(name)), term_(term), p_(p) {
+    : ForceElement(std::move(name)), terms_{term}, p_(p) {
   const std::string who = "clutch damper '" + this->name() + "'";
   EMB_THROW_IF(!term.angle(), who << ": expected a rotation coordinate (revolute or cylindrical "
                                      "joint), got a translation");

@@ -50,7 +50,7 @@ class ClutchDamper final : public mbs::ForceElement {
                           mbs::ForceJacobianSink* sink) const override;
   double DoCalcPotentialEnergy(const mbs::ForceContext& ctx) const override;
   double DoCalcDissipatedPower(const mbs::ForceContext& ctx) const override;
-  std::vector<int> DoMarkers() const override { return {term_.marker_i, term_.marker_j}; }
+  std::vector<int> DoMarkers() const override { return {terms_[0].marker_i, terms_[0].marker_j}; }
   /// The angle depends on the markers' orientations only: moments.
   unsigned DoMarkerLoads(int) const override { return mbs::kMarkerMoment; }
   int DoNumAngleSlots() const override { return 1; }
@@ -62,9 +62,9 @@ class ClutchDamper final : public mbs::ForceElement {
     double torque, d_angle, d_rate;
   };
   Torque CalcTorque(const CoordinateValue& x) const;
-  std::vector<CoordinateTerm> terms() const { return {term_}; }
+  const std::vector<CoordinateTerm>& terms() const { return terms_; }
 
-  CoordinateTerm term_;
+  std::vector<CoordinateTerm> terms_;  ///< the one term (kept as the coordinate functions take it)
   ClutchDamperParameters p_;
 };
 

@@ -22,9 +22,8 @@ Eigen::Matrix<double, 6, 1> VirtualBodyAcceleration(const mbs::StateLayout& L,
   if (L.is_ground(M.body)) return Eigen::Matrix<double, 6, 1>::Zero();
   if (!M.flexible()) return vdot.segment<6>(L.velocity(M.body));
   const int ne = L.num_elastic(M.body);
-  Eigen::VectorXd a(6 + ne);
-  a << vdot.segment<6>(L.velocity(M.body)), vdot.segment(L.elastic_v(M.body), ne);
-  return M.map * a;
+  return M.map.leftCols<6>() * vdot.segment<6>(L.velocity(M.body)) +
+         M.map.rightCols(ne) * vdot.segment(L.elastic_v(M.body), ne);
 }
 
 }  // namespace
@@ -56,18 +55,25 @@ int NumAngleTerms(const std::vector<CoordinateTerm>& terms) {
 CoordinateValue EvalCoordinate(const mbs::ForceContext& ctx,
                                const std::vector<CoordinateTerm>& terms, int first_slot) {
   const int K = static_cast<int>(terms.size());
+  EMB_CHECK(2 * K <= mbs::kMaxForceSlots);
   CoordinateValue out;
   out.gradient.setZero(12 * K);
   out.velocity.setZero(12 * K);
-  out.markers.reserve(2 * static_cast<std::size_t>(K));
+  out.num_markers = 2 * K;
+  if (ctx.markers == nullptr) out.own.resize(2 * static_cast<std::size_t>(K));  // stays put
+  for (int k = 0; k < K; ++k)
+    for (int side = 0; side < 2; ++side) {
+      const std::size_t s = 2 * static_cast<std::size_t>(k) + side;
+      const CoordinateTerm& t = terms[static_cast<std::size_t>(k)];
+      const int m = side == 0 ? t.marker_i : t.marker_j;
+      out.markers[s] = &ctx.Marker(m, ctx.markers != nullptr ? nullptr : &out.own[s]);
+    }
   int slot = first_slot;
   double quadratic = 0.0;
   for (int k = 0; k < K; ++k) {
     const CoordinateTerm& t = terms[static_cast<std::size_t>(k)];
-    out.markers.push_back(mbs::CalcMarkerKinematics(*ctx.system, *ctx.bodies, t.marker_i));
-    out.markers.push_back(mbs::CalcMarkerKinematics(*ctx.system, *ctx.bodies, t.marker_j));
-    const mbs::MarkerKinematics& I = out.markers[2 * k];
-    const mbs::MarkerKinematics& J = out.markers[2 * k + 1];
+    const mbs::MarkerKinematics& I = out.marker(2 * k);
+    const mbs::MarkerKinematics& J = out.marker(2 * k + 1);
     const mbs::KernelEval g = mbs::EvalKernel(t.kernel, I, J);
     double value = g.value;
     if (t.angle()) {
@@ -91,7 +97,7 @@ CoordinateValue EvalCoordinate(const mbs::ForceContext& ctx,
     const mbs::StateLayout& L = ctx.system->layout();
     double a = quadratic;
     for (int s = 0; s < 2 * K; ++s) {
-      const Eigen::Matrix<double, 6, 1> acc = VirtualBodyAcceleration(L, out.markers[s], *ctx.vdot);
+      const Eigen::Matrix<double, 6, 1> acc = VirtualBodyAcceleration(L, out.marker(s), *ctx.vdot);
       a += out.gradient.segment<6>(6 * s).dot(acc);
       out.accel_scale += out.gradient.segment<6>(6 * s).norm() * acc.norm();
     }
@@ -108,29 +114,24 @@ mbs::SlotMatrix CoordinateHessian(const std::vector<CoordinateTerm>& terms,
   for (int k = 0; k < K; ++k)
     H.block<12, 12>(12 * k, 12 * k) =
         terms[static_cast<std::size_t>(k)].coeff *
-        mbs::EvalKernelHessian(terms[static_cast<std::size_t>(k)].kernel, value.markers[2 * k],
-                               value.markers[2 * k + 1]);
+        mbs::EvalKernelHessian(terms[static_cast<std::size_t>(k)].kernel, value.marker(2 * k),
+                               value.marker(2 * k + 1));
   return H;
 }
 
 void AddCoordinateForce(const mbs::ForceContext& ctx, const CoordinateValue& value, double force,
                         Eigen::Ref<Eigen::VectorXd> f) {
   const mbs::StateLayout& L = ctx.system->layout();
-  for (std::size_t s = 0; s < value.markers.size(); ++s)
-    mbs::AddMarkerForce(L, value.markers[s],
-                        -force * value.gradient.segment<6>(6 * static_cast<int>(s)).transpose(), f);
+  for (int s = 0; s < value.num_markers; ++s)
+    mbs::AddMarkerForce(L, value.marker(s), -force * value.gradient.segment<6>(6 * s).transpose(), f);
 }
 
 void AddCoordinateForceJacobian(const std::vector<CoordinateTerm>& terms,
                                 const CoordinateValue& value, double force, double dforce_dx,
                                 double dforce_dv, mbs::ForceJacobianSink* sink) {
-  std::array<const mbs::MarkerKinematics*, mbs::kMaxForceSlots> slots{};
-  const int num_slots = static_cast<int>(value.markers.size());
-  EMB_CHECK(num_slots <= mbs::kMaxForceSlots);
-  for (int s = 0; s < num_slots; ++s) slots[s] = &value.markers[s];
-  mbs::LocalForceJacobian jac(slots.data(), num_slots);
+  mbs::LocalForceJacobian jac(value.markers.data(), value.num_markers);
   const mbs::SlotMatrix H = CoordinateHessian(terms, value);
-  const mbs::SlotRows<1> vH = value.velocity.transpose() * H;
+  const mbs::SlotRows<1> vH = value.velocity * H;
   const mbs::SlotRows<1> g = value.gradient;
   jac.stiffness = -g.transpose() * (dforce_dx * g + dforce_dv * vH) - force * H;
   jac.damping = -dforce_dv * g.transpose() * g;

@@ -16,6 +16,7 @@
 /// on a flexible marker, kinematics.h).
 
 #include <Eigen/Dense>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -44,17 +45,30 @@ CoordinateTerm JointCoordinateTerm(const mbs::System& system, const std::string&
                                    mbs::JointCoordinate c, double coeff,
                                    const std::string& element);
 
-/// Value, rates and derivatives of x at one state.
+/// Value, rates and derivatives of x at one state. Fixed-capacity storage (kMaxForceSlots
+/// slots): evaluating it allocates nothing when the context shares the markers' kinematics
+/// (as the DAE's does); otherwise the markers are evaluated into `own`. Movable, not
+/// copyable (the marker pointers may point into `own`).
 struct CoordinateValue {
+  CoordinateValue() = default;
+  CoordinateValue(CoordinateValue&&) = default;
+  CoordinateValue& operator=(CoordinateValue&&) = default;
+  CoordinateValue(const CoordinateValue&) = delete;
+  CoordinateValue& operator=(const CoordinateValue&) = delete;
+
   double value{0.0};  ///< x (continuous across turns with a workspace)
   double rate{0.0};   ///< x'
   double accel{0.0};  ///< x'' (only with ctx.vdot)
   /// Magnitudes of the terms summed into x' and x'' (sum of |G_s| |V_s|, ...): x' and x''
   /// are exact to ~eps times these (the round-off of differences of large rates).
   double rate_scale{0.0}, accel_scale{0.0};
-  Eigen::RowVectorXd gradient;                 ///< dx/dX, 1 x 12 K
-  Eigen::VectorXd velocity;                    ///< V, the slots' virtual-body velocities, 12 K
-  std::vector<mbs::MarkerKinematics> markers;  ///< I_1, J_1, I_2, J_2, ...
+  mbs::SlotRows<1> gradient;  ///< dx/dX, 1 x 12 K
+  mbs::SlotRows<1> velocity;  ///< V^T, the slots' virtual-body velocities, 1 x 12 K
+  int num_markers{0};         ///< 2 K
+  /// I_1, J_1, I_2, J_2, ...: the context's shared kinematics, or elements of `own`.
+  std::array<const mbs::MarkerKinematics*, mbs::kMaxForceSlots> markers{};
+  std::vector<mbs::MarkerKinematics> own;  ///< evaluated here when the context shares none
+  const mbs::MarkerKinematics& marker(int s) const { return *markers[static_cast<std::size_t>(s)]; }
 };
 
 /// Evaluates x at the context's state. Angle terms use the workspace angle slots

@@ -93,6 +93,11 @@ OperatingPoint RunOperatingPoint(const scene::Scene& scene, double rpm,
 
   mbs::AnalysisSettings st = scene.analysis;
   const mbs::PreparedRun run = mbs::PrepareRun(scene.system, st);
+  if (!run.ready()) {
+    p.message = run.message;
+    p.cpu_seconds = ProcessCpuSeconds() - cpu0;
+    return p;
+  }
   results::SteadyStateMonitor steady(run.system, scene.steady_state, st.t_start, st.output_step);
   st.t_end = steady.t_end();
   const results::ChannelSet channels(run.system, settings.channels);

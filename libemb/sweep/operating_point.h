@@ -57,8 +57,9 @@ OperatingPoint FailedPoint(double rpm, const std::string& message, const OrderSe
 void CheckSweepable(const scene::Scene& scene, const OrderSettings& settings);
 
 /// Runs `scene` (at `rpm`, scene_at_speed.h) to steady state and extracts the orders.
-/// Numerical failures are a status (kFailed) with the message; cost: the run itself.
-/// @throws InputError as CheckSweepable and PrepareRun (an assembly that does not close).
+/// Numerical failures are a status (kFailed) with the message, among them an assembly that
+/// does not close at this speed (PrepareRun's status); cost: the run itself.
+/// @throws InputError as CheckSweepable and PrepareRun's checks of the settings.
 OperatingPoint RunOperatingPoint(const scene::Scene& scene, double rpm,
                                  const OrderSettings& settings, const ProgressFn& progress = {});
 

@@ -258,6 +258,28 @@ TEST(CraigBampton, RejectsImpossibleRequests) {
   EXPECT_THROW(ReduceBody(bar.mesh, bar.sys, IsotropicMaterial{}, job), InputError);
 }
 
+// A solver outcome is the body's status, not an exception: a backward-error limit below
+// round-off (1e-30; a pair of this bar reaches ~1e-15) fails the eigen-solve's check, for the
+// fixed-interface and the free-free basis alike, and the message says which solve and why.
+TEST(CraigBampton, FailedEigenSolveIsTheBodysStatus) {
+  const Bar bar;
+  for (const bool free_free : {false, true}) {
+    SCOPED_TRACE(free_free ? "free-free" : "fixed-interface");
+    ReductionJob job;
+    if (!free_free) job.interfaces = Specs({"x0:rbe2", "x1:rbe3"});
+    job.reduction.selection.count = 4;
+    job.reduction.solver.residual_tolerance = 1e-30;
+    job.keep_mesh_shapes = false;
+    const ReducedBody body = ReduceBody(bar.mesh, bar.sys, IsotropicMaterial{}, job);
+    EXPECT_FALSE(body.ok());
+    EXPECT_EQ(body.status, ReductionStatus::kEigenSolveFailed) << Name(body.status);
+    EXPECT_NE(body.message.find(free_free ? "free-free eigen-solve" : "fixed-interface eigen-solve"),
+              std::string::npos)
+        << body.message;
+    EXPECT_EQ(body.K.size(), 0);  // nothing half-made is handed on
+  }
+}
+
 // --fmax keeps exactly the fixed-interface modes below the cut-off.
 TEST(CraigBampton, CutoffSelectionKeepsModesBelowIt) {
   const Bar bar;

@@ -74,5 +74,16 @@ TEST(Orthonormalise, NearlyEqualPairIsCoupledByAtMostHalfItsSpreadNotCountedAsRo
   EXPECT_LE(E.cwiseAbs().maxCoeff() / m.eigenvalues.maxCoeff(), gap * (1.0 + 1e-6) + kRoundOff);
 }
 
+// Rigid motions that are not in the basis (here given as zero columns: rank 0 of 6) are the
+// decomposition's failure, reported rather than thrown.
+TEST(Orthonormalise, RigidMotionsMissingFromTheBasisAreAFailureNotAThrow) {
+  const ClosedForm p = MakeProblem(Eigen::Vector4d(1e4, 3e5, 2e6, 5e7), 1.0);
+  Eigen::MatrixXd zero_rigid = Eigen::MatrixXd::Zero(p.rigid.rows(), 6);
+  const OrthonormalModes m = Orthonormalise(p.K, p.M, zero_rigid);
+  EXPECT_FALSE(m.ok());
+  EXPECT_NE(m.failure.find("rigid-body motions are not in it"), std::string::npos) << m.failure;
+  EXPECT_TRUE(Orthonormalise(p.K, p.M, p.rigid).ok());
+}
+
 }  // namespace
 }  // namespace emb

@@ -262,16 +262,24 @@ TEST(SceneBadInput, AssemblyThatCannotCloseNamesJointAndResidual) {
               "  - {name: rod_tip, body: rod, position: [0.5, 0, 0]}\n"
               "  - {name: far, body: ground, position: [3, 0, 0]}");
   const Scene sc = ParseScene(text, "far.yaml");
+  // The preparation reports it as its status (a sweep goes on to the next speed) ...
+  const mbs::PreparedRun run = mbs::PrepareRun(sc.system, sc.analysis);
+  ASSERT_EQ(run.status, mbs::PrepareStatus::kNotAssembled);
+  EXPECT_FALSE(run.ready());
+  const std::string& m = run.message;
+  EXPECT_NE(m.find("cannot be assembled"), std::string::npos) << m;
+  EXPECT_NE(m.find("max |Phi|"), std::string::npos) << m;
+  EXPECT_TRUE(m.find("'tip'") != std::string::npos || m.find("'hinge'") != std::string::npos)
+      << m;
+  // ... which a command turns into an input error (the model's joints or positions), with the
+  // same message after the context; running it anyway is a caller's bug.
   try {
-    mbs::PrepareRun(sc.system, sc.analysis);
+    mbs::ThrowIfNotReady(run, "far.yaml");
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("cannot be assembled"), std::string::npos) << m;
-    EXPECT_NE(m.find("max |Phi|"), std::string::npos) << m;
-    EXPECT_TRUE(m.find("'tip'") != std::string::npos || m.find("'hinge'") != std::string::npos)
-        << m;
+    EXPECT_EQ(std::string(e.what()), "far.yaml: " + m);
   }
+  EXPECT_THROW(mbs::RunAnalysis(run, sc.analysis, [](const mbs::Sample&) {}), InternalError);
 }
 
 TEST(SceneBadInput, InconsistentInitialVelocityIsProjectedWithWarning) {

@@ -161,6 +161,9 @@ struct ReduceCommand {
     times.Add("assembly", sw.seconds());
     if (distributed) distributed->Checkpoint();  // every rank ready for the collective solves
     const ReducedBody body = ReduceBody(mesh, sys, part.material, job, progress);
+    if (!body.ok())  // every rank of a distributed reduction has the status
+      EMB_THROW(NumericalError, "the reduction failed (" << Name(body.status) << "): "
+                                                         << body.message);
     if (!body.on_this_process) return;  // an MPI rank done with its part of the solves
     for (const auto& p : body.times.phases) times.Add(p.first, p.second);
     FinishProgressLine();

@@ -120,6 +120,7 @@ struct RunCommand {
     Stopwatch sw;
     ReportProgress(progress, "assembly", 0.0);
     const mbs::PreparedRun run = mbs::PrepareRun(sc.system, st);
+    mbs::ThrowIfNotReady(run);
     const double t_prepare = sw.seconds();
     // From the results file's creation to its close, the first SIGINT/SIGTERM stops the run
     // at the next sample (interrupt.h), so the file always ends with its status; a signal that

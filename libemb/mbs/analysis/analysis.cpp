@@ -11,6 +11,9 @@ namespace emb::mbs {
 RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
                       const SampleSink& given_sink, const ProgressFn& progress,
                       const StopFn& stop) {
+  if (!run.ready())  // a caller's bug: PrepareRun's status was not looked at
+    ::emb::internal::ThrowInternal("run.ready()", __FILE__, __LINE__,
+                            std::string(Name(run.status)) + ": " + run.message);
   // Joint angles continue across turns from one sample to the next (joint_coordinates.h).
   bool first = true;
   double t_previous = 0.0;

@@ -160,8 +160,20 @@ struct AnalysisSettings {
   double truncation_warning_threshold{0.01};
 };
 
+/// How the preparation ended. Its numerical steps report here instead of throwing: a sweep
+/// marks the speed as failed and goes on, a command ends with the message.
+enum class PrepareStatus {
+  kReady,           ///< assembled, velocities projected, elastic start (if asked) found
+  kNotAssembled,    ///< the position Newton did not close the constraints (message names them)
+  kNoElasticStart,  ///< the quasi-static elastic start did not converge
+};
+const char* Name(PrepareStatus status);
+
 /// A prepared run: the (possibly reduced) system and consistent initial values.
 struct PreparedRun {
+  PrepareStatus status{PrepareStatus::kReady};
+  std::string message;  ///< why, when status is not kReady (the rest is then incomplete)
+  bool ready() const { return status == PrepareStatus::kReady; }
   System system;
   DofReport dof;
   Eigen::VectorXd q0, v0;
@@ -175,11 +187,18 @@ struct PreparedRun {
   std::vector<std::string> planar_removed;
 };
 
-/// Assembles and checks the model. @throws InputError if the assembly does not close
-/// (residual and joint named), or if redundant equations remain and
-/// settings.remove_redundant is false (all of them named; with a plane_normal, those with
-/// an in-plane part).
+/// Assembles and checks the model. An assembly that does not close (residual and joint
+/// named) or an elastic start that does not converge is returned as the run's status.
+/// @throws InputError for invalid settings (times, output step, plane normal), or if
+/// redundant equations remain and settings.remove_redundant is false (all of them named; with
+/// a plane_normal, those with an in-plane part).
 PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings);
+
+/// For a caller with no status of its own (a command, a Campbell point): the status as the
+/// error it stands for, `context` first. An assembly that does not close is the model's
+/// (InputError: its joints or positions), an elastic start that does not converge is
+/// NumericalError. Does nothing for a ready run.
+void ThrowIfNotReady(const PreparedRun& run, const std::string& context = {});
 
 /// One output sample.
 struct Sample {
@@ -262,6 +281,7 @@ struct RunResult {
 
 /// Runs the analysis of `settings.type`, calling `sink` for every output time (including
 /// t_start). Numerical failures are a status; the sink has seen every sample before it.
+/// `run` must be ready (PreparedRun::ready()).
 RunResult RunAnalysis(const PreparedRun& run, const AnalysisSettings& settings,
                       const SampleSink& sink, const ProgressFn& progress = {},
                       const StopFn& stop = {});

@@ -25,6 +25,18 @@ const char* Name(AnalysisType type) {
   return "unknown";
 }
 
+const char* Name(PrepareStatus status) {
+  switch (status) {
+    case PrepareStatus::kReady:
+      return "ready";
+    case PrepareStatus::kNotAssembled:
+      return "not-assembled";
+    case PrepareStatus::kNoElasticStart:
+      return "no-elastic-start";
+  }
+  return "unknown";
+}
+
 AnalysisType ParseAnalysisType(const std::string& name) {
   std::string valid;
   for (const auto& t : kTypeNames) {

@@ -22,11 +22,18 @@ PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
   EMB_THROW_IF(!(settings.output_step > 0.0),
                "analysis: expected a positive output step, got " << settings.output_step);
   (void)internal::OutputTimes{settings};  // throws for times the output step cannot resolve
-  PreparedRun run{system, {}, {}, {}, {}, {}, {}};
+  PreparedRun run;
+  run.system = system;
+  const auto fail = [&run](PrepareStatus status, std::string message) {
+    run.status = status;
+    run.message = std::move(message);
+    return std::move(run);
+  };
   ConstraintWorkspace ws(system);
   const AssemblyResult a = AssemblePositions(system, system.InitialPositions(), settings.t_start,
                                              &ws, settings.assembly);
-  if (!a.converged) EMB_THROW(InputError, "the model cannot be assembled: " << a.message);
+  if (!a.converged)
+    return fail(PrepareStatus::kNotAssembled, "the model cannot be assembled: " + a.message);
   run.dof = AnalyzeDof(system, a.q, settings.t_start, &ws);
   const bool planar = settings.plane_normal.squaredNorm() > 0.0;
   EMB_THROW_IF(planar && std::abs(settings.plane_normal.norm() - 1.0) > 1e-12,
@@ -70,7 +77,8 @@ PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
   // Re-assemble in the reduced system so its angle slots are on the same branch.
   const AssemblyResult a2 =
       AssemblePositions(run.system, a.q, settings.t_start, &ws2, settings.assembly);
-  if (!a2.converged) EMB_THROW(InputError, "the model cannot be assembled: " << a2.message);
+  if (!a2.converged)
+    return fail(PrepareStatus::kNotAssembled, "the model cannot be assembled: " + a2.message);
   run.q0 = a2.q;
   const bool moving =
       settings.type == AnalysisType::kDynamic || settings.type == AnalysisType::kAssemble;
@@ -96,7 +104,8 @@ PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
     ws2 = ConstraintWorkspace(run.system);
     const AssemblyResult a3 =
         AssemblePositions(run.system, run.q0, settings.t_start, &ws2, settings.assembly);
-    if (!a3.converged) EMB_THROW(InputError, "the model cannot be assembled: " << a3.message);
+    if (!a3.converged)
+    return fail(PrepareStatus::kNotAssembled, "the model cannot be assembled: " + a3.message);
     run.q0 = a3.q;
   }
   if (moving) {
@@ -116,13 +125,26 @@ PreparedRun PrepareRun(const System& system, const AnalysisSettings& settings) {
       qs.assembly = settings.assembly;
       const QuasiStaticStartReport start =
           SetQuasiStaticStart(run.system, settings.t_start, &run.q0, &run.v0, &ws2, qs);
-      if (!start.converged) EMB_THROW(NumericalError, start.message);
+      if (!start.converged) return fail(PrepareStatus::kNoElasticStart, start.message);
       run.start_note = start.message;
     }
   } else {
     run.v0 = Eigen::VectorXd::Zero(run.system.layout().nv());
   }
   return run;
+}
+
+void ThrowIfNotReady(const PreparedRun& run, const std::string& context) {
+  const std::string what = context.empty() ? run.message : context + ": " + run.message;
+  switch (run.status) {
+    case PrepareStatus::kReady:
+      return;
+    case PrepareStatus::kNotAssembled:
+      throw InputError(what);
+    case PrepareStatus::kNoElasticStart:
+      throw NumericalError(what);
+  }
+  throw NumericalError(what);
 }
 
 

@@ -147,6 +147,7 @@ OperatingPointModes CalcOperatingPointModes(const System& system, AnalysisSettin
   settings.installed_bases.clear();
   settings.truncated_bases.clear();
   const PreparedRun run = PrepareRun(system, settings);
+  ThrowIfNotReady(run);
   const System& sys = run.system;
   OperatingPointModes out;
   if (!rotor.empty()) {

@@ -245,6 +245,8 @@ CycleAveragedModes CalcCycleAveragedModes(const System& system, AnalysisSettings
     s.t_start = times[k];
     s.t_end = std::max(settings.t_end, times[k]);
     const PreparedRun run = PrepareRun(system.WithInitialState(states[k], v), s);
+    ThrowIfNotReady(run, "cycle average, angle " + std::to_string(k) + " of " +
+                             std::to_string(num_angles));
     at.push_back(ReducedAt(run, times[k], common, stationary_frame));
   }
   // The rate of the coordinate map along the motion, T' = Omega dT/dtheta (spectral), and

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "libemb/common/error.h"
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/parts/flexible_body.h"
 #include "libemb/mbs/forces/applied_load.h"
@@ -150,6 +151,24 @@ TEST(QuasiStaticStart, ClampedBarUnderASuddenConstantLoadStaysOnItsStaticDeflect
   constexpr double kStartAccuracy = 1e-6;
   EXPECT_NEAR(smooth.dz.front() / u, 1.0, kStartAccuracy);
   EXPECT_LT(swing(smooth.dz), kStartAccuracy * u) << "swing " << swing(smooth.dz) / u;
+}
+
+// A start that does not converge is the preparation's status; a caller without a status of its
+// own turns it into a NumericalError (the model itself may be fine), context first.
+TEST(QuasiStaticStart, FailedStartIsAStatusThenANumericalError) {
+  mbs::PreparedRun run;
+  run.status = mbs::PrepareStatus::kNoElasticStart;
+  run.message = "the quasi-static start did not converge in 20 iterations (imbalance 3)";
+  EXPECT_FALSE(run.ready());
+  EXPECT_STREQ(mbs::Name(run.status), "no-elastic-start");
+  try {
+    mbs::ThrowIfNotReady(run, "engine.yaml");
+    FAIL() << "expected a NumericalError";
+  } catch (const NumericalError& e) {
+    EXPECT_EQ(std::string(e.what()), "engine.yaml: " + run.message);
+  }
+  run.status = mbs::PrepareStatus::kReady;
+  EXPECT_NO_THROW(mbs::ThrowIfNotReady(run));
 }
 
 }  // namespace

@@ -2,8 +2,9 @@
 // workspace has been through one of each (ggl_workspace.h): counted here with a replaced
 // global operator new, on a model with every kind of term an engine run has (a flexible body
 // with interface markers, a revolute joint, a bushing, a spring-damper, a torsional
-// spring-damper, a journal bearing, an applied load with a time function), over many states
-// and over IDA steps.
+// spring-damper, a journal bearing, an applied load with a time function, a Maxwell arm with a
+// state of its own, a driveline lash with a squeeze film and a clutch damper on a joint of the
+// flexible body), over many states and over IDA steps.
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,8 @@
 #include <cstdlib>
 #include <memory>
 
+#include "libemb/driveline/clutch_damper.h"
+#include "libemb/driveline/lash.h"
 #include "libemb/engine/journal_bearing.h"
 #include "libemb/integrators/ida_solver.h"
 #include "libemb/mbs/analysis/analysis.h"
@@ -115,6 +118,30 @@ mbs::System Model() {
                                                                     0.1, 0.0));
   // An element with a continuous state (force_element.h): its rows and blocks too.
   sys.AddForceElement(std::make_shared<mbs::MaxwellArm>("rubber", shaft, bore, 30.0, 0.05));
+  // Driveline elements on the pin's rotation (a marker of the flexible bar): a lash whose stops
+  // are far (open, its squeeze film resisting the approach) and a two-stage clutch damper.
+  driveline::LashParameters lash;
+  lash.lower = -100.0;
+  lash.upper = 100.0;
+  lash.contact.stiffness = 1e6;
+  lash.contact.exponent = 1.5;
+  lash.contact.restitution = 0.8;
+  lash.squeeze_film = driveline::SqueezeFilmParameters{0.05, 0.01, 0.02, 0.03, 1e-6};
+  sys.AddForceElement(std::make_shared<driveline::Lash>(
+      "lash",
+      std::vector<driveline::CoordinateTerm>{driveline::JointCoordinateTerm(
+          sys, "pin", mbs::JointCoordinate::kRotation, 1.0, "lash")},
+      lash));
+  driveline::ClutchDamperParameters clutch;
+  clutch.stiffness_1 = 5.0;
+  clutch.stiffness_2 = 50.0;
+  clutch.knee_angle = 0.1;
+  clutch.damping = 0.01;
+  clutch.hysteresis_torque = 0.5;
+  sys.AddForceElement(std::make_shared<driveline::ClutchDamper>(
+      "clutch",
+      driveline::JointCoordinateTerm(sys, "pin", mbs::JointCoordinate::kRotation, 1.0, "clutch"),
+      clutch));
   sys.AddForceElement(std::make_shared<mbs::AppliedLoad>(
       "shake", mbs::AppliedLoad::Kind::kForce, shaft, Eigen::Vector3d::UnitX(),
       mbs::AppliedLoad::Frame::kWorld, mbs::TimeFunction::Harmonic(20.0, 50.0, 0.0, 0.0)));
