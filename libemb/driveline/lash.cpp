@@ -38,8 +38,19 @@ Lash::Lash(std::string name, std::vector<CoordinateTerm> terms, const LashParame
   CheckNumber(who + " upper stop", p_.upper, NumberRange::Finite());
   EMB_THROW_IF(p_.upper < p_.lower,
                who << ": expected a lash (upper - lower stop) >= 0, got " << p_.upper - p_.lower);
-  for (const CoordinateTerm& t : terms_)
+  for (const CoordinateTerm& t : terms_) {
     CheckNumber(who + " coordinate coefficient (ratio)", t.coeff, NumberRange::Finite());
+    EMB_THROW_IF(t.coeff == 0.0, who << ": expected a non-zero coordinate coefficient (a ratio "
+                                        "of 0 leaves joint2 out of x: give joint1 alone)");
+  }
+  if (terms_.size() == 2) {
+    const CoordinateTerm &a = terms_[0], &b = terms_[1];
+    EMB_THROW_IF(a.marker_i == b.marker_i && a.marker_j == b.marker_j &&
+                     a.kernel.kind == b.kernel.kind && a.kernel.axis_i == b.kernel.axis_i &&
+                     a.kernel.axis_j == b.kernel.axis_j,
+                 who << ": joint1 and joint2 are the same coordinate of one joint (x would be "
+                        "(1 - ratio) times it); expected two different joint coordinates");
+  }
   if (p_.squeeze_film) {
     const SqueezeFilmParameters& s = *p_.squeeze_film;
     CheckNumber(who + " squeeze film viscosity", s.viscosity, NumberRange::Positive("Pa s"));

@@ -146,7 +146,7 @@ constexpr SceneKey kModelKeys[] = {
     {"couplers", "coordinate1", T::kString, "", "rotation | translation", "rotation", "Its coordinate."},
     {"couplers", "joint2", T::kString, "", "", "required", "Second joint."},
     {"couplers", "coordinate2", T::kString, "", "rotation | translation", "rotation", "Its coordinate."},
-    {"couplers", "ratio", T::kNumber, "", "", "required", "g1 = ratio · g2 + offset."},
+    {"couplers", "ratio", T::kNumber, "", "", "required", "g1 = ratio · g2 + offset; ratio ≠ 0, joint2 another coordinate than joint1."},
     {"couplers", "offset", T::kNumber, "", "", "0", "In the first coordinate's unit."},
     // function
     {"function", "constant", T::kNumber, "", "", "—", "c."},

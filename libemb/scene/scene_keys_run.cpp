@@ -58,7 +58,7 @@ constexpr SceneKey kForceKeys[] = {
     {"forces: lash", "coordinate1", T::kString, "", "rotation | translation", "rotation", "Its coordinate."},
     {"forces: lash", "joint2", T::kString, "", "", "—", "The joint of g₂ (a gear mesh); absent: x = g₁ − offset."},
     {"forces: lash", "coordinate2", T::kString, "", "rotation | translation", "rotation", "With `joint2`: its coordinate."},
-    {"forces: lash", "ratio", T::kNumber, "", "", "required", "With `joint2`: the gear ratio (x in units of joint 1)."},
+    {"forces: lash", "ratio", T::kNumber, "", "", "required", "With `joint2` (another coordinate than joint1): the gear ratio ≠ 0 (x in units of joint 1)."},
     {"forces: lash", "lash", T::kNumber, "rad or m", ">= 0", "—", "Free play centred on `offset` (or give `stops`)."},
     {"forces: lash", "offset", T::kNumber, "rad or m", "", "0", "Centre of the free play."},
     {"forces: lash", "stops", T::kNumbers, "rad or m", "", "—", "[lower, upper] instead of `lash` and `offset`."},

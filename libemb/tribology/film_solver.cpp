@@ -246,7 +246,11 @@ FilmSolveInfo FilmSolver::Solve(const StorageInputs& st, const JournalKinematics
                   Cavitating(b.parameters().cavitation);
   info = fb ? NewtonFischerBurmeister(st, info) : NewtonSwitch(st, info);
   if (!info.ok()) return info;
-  SetUnknownsFromUniversal(b, film_, u_, &x_);
+  // The last Newton update has not been mapped yet: it may have left the viscosity law's range.
+  if (!SetUnknownsFromUniversal(b, film_, u_, &x_))
+    return Fail(FilmStatus::kBeyondViscosityLaw,
+                b.who() + ": the converged film pressure exceeds the pressure-viscosity law's "
+                          "range (reduced pressure at its limit)", info);
   CalcFilmResidual(film_, x_, u_, st, &r_, &balance_);
   info.residual = r_.cwiseAbs().maxCoeff() / FlowScale(st);
   if (b.parameters().cavitation == CavitationModel::kMassConserving) {
@@ -263,7 +267,8 @@ FilmSolveInfo FilmSolver::Solve(const StorageInputs& st, const JournalKinematics
       return Fail(FilmStatus::kNegativeFillFraction, os.str(), info);
     }
   }
-  CalcBearingLoads(film_, x_, balance_, loads, jacobian ? &partials_ : nullptr);
+  BearingLoads unused;  // a caller may want the film state only
+  CalcBearingLoads(film_, x_, balance_, loads ? loads : &unused, jacobian ? &partials_ : nullptr);
   if (!jacobian) return info;
   // Adjoint: J^T Lambda = (dy/du)^T with the factorisation of the final pattern.
   lambda_ = partials_.d_unknowns.transpose();

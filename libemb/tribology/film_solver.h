@@ -77,12 +77,14 @@ class FilmSolver {
  public:
   explicit FilmSolver(const ReynoldsBearing& bearing);
 
-  /// The quasi-static film and its loads; `jacobian` if not null.
+  /// The quasi-static film and its loads (`loads` may be null: the film state only);
+  /// `jacobian` if not null.
   FilmSolveInfo SolveQuasiStatic(const JournalKinematics& kin, BearingLoads* loads,
                                  LoadJacobian* jacobian = nullptr);
 
   /// One backward-Euler step of length dt > 0 from `previous` to the kinematics at the step's
-  /// end. The new state is in *next (may alias nothing else). kMassConserving only.
+  /// end. The new state is in *next (may alias nothing else); `next`, `loads` and `jacobian`
+  /// may each be null. kMassConserving only.
   /// @throws InputError for another cavitation model, dt <= 0 or a state of the wrong size.
   FilmSolveInfo Step(const FilmState& previous, double dt, const JournalKinematics& kin,
                      FilmState* next, BearingLoads* loads, LoadJacobian* jacobian = nullptr);

@@ -655,6 +655,12 @@ for key, (force, frags) in FORCE_BAD.items():
     scene(f"force_{key}", replaced("analysis:", FORCE.replace("FORCE", force)), 1, frags)
 scene("coupler_unknown_joint", replaced("analysis:", "couplers:\n  - {name: c, joint1: hinge, joint2: nowhere, ratio: 2}\nanalysis:"), 1, ["nowhere"])
 scene("coupler_nan_ratio", replaced("analysis:", "couplers:\n  - {name: c, joint1: hinge, joint2: hinge, ratio: .nan}\nanalysis:"), 1, ["ratio"])
+# Issue 36: a ratio of 0 and a coordinate coupled with itself (a coupler, a lash).
+scene("coupler_zero_ratio", replaced("analysis:", "couplers:\n  - {name: c, joint1: hinge, joint2: hinge, ratio: 0}\nanalysis:"), 1, ["coupler 'c'", "non-zero ratio"])
+scene("coupler_same_coordinate", replaced("analysis:", "couplers:\n  - {name: c, joint1: hinge, joint2: hinge, ratio: 2}\nanalysis:"), 1, ["coupler 'c'", "same coordinate of joint 'hinge'"])
+LASH_CONTACT = "contact: {law: hunt-crossley, stiffness: 1.0e5, exponent: 1.0, restitution: 0.5}"
+scene("lash_zero_ratio", replaced("analysis:", "forces:\n  - {name: l, type: lash, joint1: hinge, joint2: hinge, ratio: 0, lash: 0.01, " + LASH_CONTACT + "}\nanalysis:"), 1, ["lash 'l'", "non-zero"])
+scene("lash_same_coordinate", replaced("analysis:", "forces:\n  - {name: l, type: lash, joint1: hinge, joint2: hinge, ratio: 2, lash: 0.01, " + LASH_CONTACT + "}\nanalysis:"), 1, ["lash 'l'", "same coordinate"])
 scene("sensor_unknown_marker", replaced("analysis:", "sensors:\n  - {name: s, i: rod_top, j: nowhere}\nanalysis:"), 1, ["nowhere"])
 scene("sensor_chord_one_end", replaced("analysis:", "sensors:\n  - {name: s, type: chord, point: rod_top, chord: [pivot]}\nanalysis:"), 1, ["sensor 's'", "chord", "two markers"])
 scene("sensor_chord_point_on_chord", replaced("analysis:", "sensors:\n  - {name: s, type: chord, point: pivot, chord: [pivot, rod_top]}\nanalysis:"), 1, ["three different markers"])

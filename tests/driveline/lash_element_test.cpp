@@ -238,6 +238,21 @@ TEST(LashElement, BadInputIsNamed) {
   p.contact.restitution = 1.5;
   ExpectInputError([&] { testing::MakeTwoDiscs(d, p); }, "lash 'mesh'", "restitution");
   p.contact.restitution = 0.5;
+  // A gear ratio of 0 (x would not see joint2), and joint2 the same coordinate as joint1 (x
+  // would be (1 - ratio) g1).
+  d.ratio = 0.0;
+  ExpectInputError([&] { testing::MakeTwoDiscs(d, p); }, "lash 'mesh'", "non-zero");
+  d.ratio = 2.0;
+  ExpectInputError(
+      [&] {
+        mbs::System s = testing::MakeTwoDiscs(d, p, false);
+        const CoordinateTerm g = JointCoordinateTerm(s, "shaft1", mbs::JointCoordinate::kRotation,
+                                                     1.0, "lash 'twice'");
+        CoordinateTerm h = g;
+        h.coeff = -2.0;
+        Lash("twice", {g, h}, p);
+      },
+      "lash 'twice'", "same coordinate");
   // A rotation of a translational joint: the joint has no such coordinate.
   ExpectInputError(
       [&] {

@@ -202,6 +202,17 @@ TEST(FilmSolver, WarmAndColdStartsGiveOneSolution) {
   EXPECT_LT((first.Stacked() - again.Stacked()).norm(), kIdentityTolerance * first.Stacked().norm());
 }
 
+// A caller that wants the film state only passes no loads: the same state as with them (this
+// crashed when the loads were written through a null pointer).
+TEST(FilmSolver, StateWithoutLoadsIsTheSameSolution) {
+  const ReynoldsBearing b("main_1", Case(CavitationModel::kMassConserving));
+  FilmSolver with(b), without(b);
+  BearingLoads l;
+  ASSERT_TRUE(with.SolveQuasiStatic(Moving(), &l).ok());
+  ASSERT_TRUE(without.SolveQuasiStatic(Moving(), nullptr).ok());
+  EXPECT_EQ(with.universal(), without.universal());
+}
+
 TEST(FilmSolver, ReducedPressureRouteMatchesTheIsoviscousFilm) {
   // With Barus, the film equations in Psi are the isoviscous ones: p = -ln(1 - alpha Psi)/alpha
   // with Psi the isoviscous pressure, node by node (the isoviscous bearing supplied at

@@ -5,6 +5,7 @@
 
 #include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
+#include "libemb/common/number_check.h"
 #include "libemb/mbs/core/rotation.h"
 
 namespace emb::mbs {
@@ -150,6 +151,15 @@ int System::AddCoupler(const std::string& name, const std::string& joint1, Joint
                        const std::string& joint2, JointCoordinate c2, double ratio, double offset) {
   CheckNotFinalized("AddCoupler");
   CheckNewName(name, "coupler");
+  const std::string who = "coupler '" + name + "'";
+  CheckNumber(who + " ratio", ratio, NumberRange::Finite());
+  CheckNumber(who + " offset", offset, NumberRange::Finite());
+  EMB_THROW_IF(ratio == 0.0, who << ": expected a non-zero ratio; 0 leaves joint '" << joint2
+                                 << "' out and locks joint '" << joint1
+                                 << "' at the offset (a motion or a fixed joint does that)");
+  EMB_THROW_IF(joint1 == joint2 && c1 == c2,
+               who << ": joint1 and joint2 are the same coordinate of joint '" << joint1
+                   << "'; expected two different joint coordinates");
   const ConstraintElement& j1 = elements_[FindElement(joint1)];
   const ConstraintElement& j2 = elements_[FindElement(joint2)];
   ConstraintElement e;

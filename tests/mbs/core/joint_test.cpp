@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 
@@ -160,6 +161,27 @@ TEST(Coupler, TorqueSpinsUpTheTrainWithTheEffectiveInertia) {
     EXPECT_NEAR(smp.energies.kinetic, T * theta1, T * kAngleTolerance) << smp.t;
   });
   ASSERT_TRUE(r.ok()) << r.message;
+}
+
+// A ratio of 0 locks joint 1 at the offset and leaves joint 2 out; a coupler of a coordinate
+// with itself is (1 - ratio) g = offset: both refused, naming the coupler.
+TEST(Coupler, ZeroRatioAndSameCoordinateAreRefused) {
+  for (const double ratio : {0.0, std::numeric_limits<double>::infinity()})
+    try {
+      (void)GearPairModel(nullptr, ratio);
+      FAIL() << "ratio " << ratio << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("coupler 'mesh'"), std::string::npos) << e.what();
+    }
+  System s = GearPairModel(nullptr, 2.0);
+  try {
+    s.AddCoupler("self", "shaft1", JointCoordinate::kRotation, "shaft1",
+                 JointCoordinate::kRotation, 2.0, 0.0);
+    FAIL() << "a coupler of a coordinate with itself was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("same coordinate of joint 'shaft1'"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(Motion, TranslationCoordinateNeedsASlidingJoint) {
