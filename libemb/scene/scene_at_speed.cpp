@@ -49,8 +49,9 @@ std::string NameOf(const YAML::Node& entry) {
 
 SceneAtSpeed SceneTextAtSpeed(const std::string& yaml_text, const std::string& source,
                               double rpm) {
-  EMB_THROW_IF(!std::isfinite(rpm) || !(rpm > 0.0),
-               source << ": speed: expected a positive number of rpm, got " << rpm);
+  EMB_THROW_IF(!(rpm >= kMinSpeedRpm && rpm <= kMaxSpeedRpm),
+               source << ": speed: expected " << kMinSpeedRpm << " to " << kMaxSpeedRpm
+                      << " rpm, got " << rpm);
   YAML::Node root;
   try {
     root = YAML::Load(yaml_text);

@@ -22,6 +22,12 @@
 
 namespace emb::scene {
 
+/// The speeds a scene is re-parameterised to [rpm]: from 0.01 rpm (a cycle of 100 min) to
+/// 1e6 rpm (above the fastest turbocharger shafts). Outside it the times and scaled values
+/// stop being physical (1e308 rpm overflowed the step count; 1e-300 rpm ran a cycle of
+/// 1e300 s).
+inline constexpr double kMinSpeedRpm = 0.01, kMaxSpeedRpm = 1e6;
+
 /// A scene's text at another speed (SceneTextAtSpeed).
 struct SceneAtSpeed {
   std::string yaml;                  ///< the scene at the new speed (YAML text)
@@ -33,7 +39,7 @@ struct SceneAtSpeed {
 
 /// Re-parameterises the scene text `yaml_text` (read from `source`, named in messages) to
 /// `rpm` (table above). Cost: one YAML parse and emit.
-/// @throws InputError if rpm is not a positive finite number, the YAML does not parse, the
+/// @throws InputError if rpm is outside [kMinSpeedRpm, kMaxSpeedRpm], the YAML does not parse, the
 /// scene has no motion with function {rpm}, its rpm motions disagree on the speed, or a
 /// motion or force has a function of time that cannot be scaled (named).
 SceneAtSpeed SceneTextAtSpeed(const std::string& yaml_text, const std::string& source,

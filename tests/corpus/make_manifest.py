@@ -378,7 +378,8 @@ SWEEP = ["sweep", "{src}/tests/sweep/data/one_cylinder_direct.yaml", "-q", "-o",
 cli_values("sweep", SWEEP, "--rpm", {"zero": "0", "neg": "-3000", "nan": "nan", "text": "abc",
                                      "range_down": "3000:1000:100", "step_zero": "1:5:0",
                                      "repeated": "1000,1000", "too_many": "0:1e9:1",
-                                     "empty_item": "1000,,2000"}, frag="--rpm")
+                                     "empty_item": "1000,,2000", "huge": "1e308",
+                                     "tiny": "1e-300"}, frag="--rpm")
 cli_values("sweep", [*SWEEP, "--rpm", "3000"], "--orders",
            {"third": "0.3", "zero": "0", "too_high": "1000", "text": "x"}, frag="order")
 cli_values("sweep", [*SWEEP, "--rpm", "3000"], "--shard",
@@ -662,6 +663,10 @@ LASH_CONTACT = "contact: {law: hunt-crossley, stiffness: 1.0e5, exponent: 1.0, r
 scene("lash_zero_ratio", replaced("analysis:", "forces:\n  - {name: l, type: lash, joint1: hinge, joint2: hinge, ratio: 0, lash: 0.01, " + LASH_CONTACT + "}\nanalysis:"), 1, ["lash 'l'", "non-zero"])
 scene("lash_same_coordinate", replaced("analysis:", "forces:\n  - {name: l, type: lash, joint1: hinge, joint2: hinge, ratio: 2, lash: 0.01, " + LASH_CONTACT + "}\nanalysis:"), 1, ["lash 'l'", "same coordinate"])
 scene("sensor_unknown_marker", replaced("analysis:", "sensors:\n  - {name: s, i: rod_top, j: nowhere}\nanalysis:"), 1, ["nowhere"])
+# Issue 36: channels are <owner>.<quantity>, so owners share one namespace.
+scene("sensor_named_like_joint", replaced("analysis:", "sensors:\n  - {name: hinge, i: rod_top, j: pivot}\nanalysis:"), 1, ["sensor 'hinge'", "joint or coupler 'hinge'", "distinct names"])
+scene("sensor_named_like_body", replaced("analysis:", "sensors:\n  - {name: rod, i: rod_top, j: pivot}\nanalysis:"), 1, ["sensor 'rod'", "body 'rod'"])
+scene("sensor_named_energy", replaced("analysis:", "sensors:\n  - {name: energy, i: rod_top, j: pivot}\nanalysis:"), 1, ["sensor 'energy'", "the energy channels"])
 scene("sensor_chord_one_end", replaced("analysis:", "sensors:\n  - {name: s, type: chord, point: rod_top, chord: [pivot]}\nanalysis:"), 1, ["sensor 's'", "chord", "two markers"])
 scene("sensor_chord_point_on_chord", replaced("analysis:", "sensors:\n  - {name: s, type: chord, point: pivot, chord: [pivot, rod_top]}\nanalysis:"), 1, ["three different markers"])
 scene("sensor_type_unknown", replaced("analysis:", "sensors:\n  - {name: s, type: cord, point: pivot, chord: [pivot, rod_top]}\nanalysis:"), 1, ["'cord'", "chord"])

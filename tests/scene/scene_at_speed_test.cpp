@@ -71,10 +71,15 @@ std::string Replace(std::string text, const std::string& from, const std::string
 TEST(SceneAtSpeed, RefusesWhatItCannotScaleNamingIt) {
   using test::ContainsAll;
   using test::InputErrorMessage;
+  // Outside the physical range of speeds (scene_at_speed.h), as well as not a speed at all.
   for (double bad : {0.0, -100.0, std::numeric_limits<double>::quiet_NaN(),
-                     std::numeric_limits<double>::infinity()})
+                     std::numeric_limits<double>::infinity(), 1e308, 1e-300, 0.5 * kMinSpeedRpm,
+                     2.0 * kMaxSpeedRpm})
     EXPECT_TRUE(ContainsAll(InputErrorMessage([&] { SceneTextAtSpeed(kText, "s.yaml", bad); }),
-                            {"positive number of rpm"}));
+                            {"s.yaml", "speed: expected 0.01 to 1e+06 rpm"}))
+        << bad;
+  EXPECT_NO_THROW(SceneTextAtSpeed(kText, "s.yaml", kMinSpeedRpm));
+  EXPECT_NO_THROW(SceneTextAtSpeed(kText, "s.yaml", kMaxSpeedRpm));
   // No rpm motion.
   EXPECT_TRUE(ContainsAll(InputErrorMessage([&] {
                             SceneTextAtSpeed(

@@ -51,6 +51,11 @@ TEST_F(EmbCli, ModesWritesFilesAndJson) {
   ASSERT_EQ(t.exit_code, 0) << t.err;
   EXPECT_NE(t.out.find("frequency [Hz]"), std::string::npos);
   EXPECT_EQ(t.out.find("rigid "), std::string::npos) << t.out;
+  // -q with a file written: the file is the result, nothing on stdout.
+  const emb::test::CliResult q = Run("modes bar.geo --modes 4 --fixed x0 -o quiet.h5 -q");
+  ASSERT_EQ(q.exit_code, 0) << q.err;
+  EXPECT_EQ(q.out, "");
+  EXPECT_TRUE(fs::exists(dir_ / "quiet.h5"));
 }
 
 TEST_F(EmbCli, MeshReportsGroupsAsJson) {

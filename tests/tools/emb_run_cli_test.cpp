@@ -134,8 +134,13 @@ TEST_F(EmbMbsCli, TruncatedBasisIsReportedAndWarned) {
   EXPECT_EQ(f.ReadDoubles("/model/basis_truncation/static_compliance_error"),
             std::vector<double>{error});
   // The text summary names it too.
-  const CliResult t = Run("run -q bar.yaml -o bar2.h5");
+  const CliResult t = Run("run bar.yaml -o bar2.h5");
   EXPECT_NE(t.out.find("8 of 14 elastic modes"), std::string::npos) << t.out;
+  // -q: the file is the result; no report on stdout, the warning still on stderr.
+  const CliResult q = Run("run -q bar.yaml -o bar3.h5");
+  ASSERT_EQ(q.exit_code, 0) << q.err;
+  EXPECT_EQ(q.out, "");
+  EXPECT_NE(q.err.find("8 kept of 14"), std::string::npos) << q.err;
 }
 
 TEST_F(EmbMbsCli, HelpDocumentsOptions) {

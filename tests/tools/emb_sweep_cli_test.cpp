@@ -114,8 +114,9 @@ TEST_F(SweepCli, MismatchedOrIncompleteShardsAreRefused) {
 TEST_F(SweepCli, BadInputIsAClearErrorWithNoOutput) {
   const std::string sweep = "sweep " + kScene + " -o out.h5 ";
   ExpectFailure(sweep + "--rpm 1000:abc:100", 1, {"--rpm", "'abc'"});
-  ExpectFailure(sweep + "--rpm 0,1000", 1, {"--rpm", "> 0"});
-  ExpectFailure(sweep + "--rpm=-500", 1, {"--rpm", "> 0"});
+  ExpectFailure(sweep + "--rpm 0,1000", 1, {"--rpm", "from 0.01 to 1e+06 rpm"});
+  ExpectFailure(sweep + "--rpm=-500", 1, {"--rpm", "from 0.01 to 1e+06 rpm"});
+  ExpectFailure(sweep + "--rpm 1e308", 1, {"--rpm", "from 0.01 to 1e+06 rpm", "1e+308"});
   ExpectFailure(sweep + "--rpm 3000:1000:100", 1, {"--rpm", "last >= first"});
   ExpectFailure(sweep + "--rpm 1000:2000:0", 1, {"--rpm", "positive step"});
   ExpectFailure(sweep + "--rpm 1000,1000", 1, {"--rpm", "twice"});

@@ -174,7 +174,7 @@ struct CampbellCommand {
     }
     if (out.json) {
       PrintJson({{"summary", s.ToJson()}, {"modes", modes.ToJson()}, {"crossings", cross.ToJson()}});
-    } else {
+    } else if (!out.quiet) {  // -q: the file is the result, no report
       s.Print(std::cout);
       std::cout << "\n";
       modes.Print(std::cout);

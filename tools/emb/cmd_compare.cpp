@@ -180,7 +180,7 @@ struct CompareCommand {
                  {"routes", routes_json},
                  {"modes", modes.ToJson()},
                  {"not_beam_like", shells.ToJson()}});
-    } else {
+    } else if (!out.quiet) {  // -q: the file is the result, no report
       s.Print(std::cout);
       std::cout << "\n";
       routes.Print(std::cout);

@@ -56,7 +56,7 @@ struct MeshCommand {
     }
     if (out.json) {
       PrintJson({{"mesh", s.ToJson()}, {"groups", groups.ToJson()}});
-    } else {
+    } else if (!out.quiet || part.save_mesh.empty()) {  // without a file the table is the result
       s.Print(std::cout);
       std::cout << "\n";
       groups.Print(std::cout);

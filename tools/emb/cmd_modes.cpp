@@ -221,7 +221,7 @@ struct ModesCommand {
     s.Add("seconds_elapsed", "time elapsed, whole command [s]", elapsed.seconds());
     if (out.json) {
       PrintJson({{"summary", s.ToJson()}, {"modes", table.ToJson()}});
-    } else {
+    } else if (!out.quiet || no_output) {  // -q: the file is the result, no report
       table.Print(std::cout);
       std::cout << "\n";
       s.Print(std::cout);

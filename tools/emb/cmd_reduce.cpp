@@ -311,7 +311,7 @@ struct ReduceCommand {
                  {"comparison", freq.ToJson()},
                  {"certificate", cert.ToJson()},
                  {"stress", stress.ToJson()}});
-    } else {
+    } else if (!out.quiet) {  // -q: the file is the result, no report
       itf_table.Print(std::cout);
       std::cout << "\n";
       modes.Print(std::cout);

@@ -336,7 +336,7 @@ struct RunCommand {
       if (!r.events.contacts.empty()) j["contacts"] = contacts.ToJson();
       if (stress.has_fatigue()) j["fatigue"] = fatigue.ToJson();
       PrintJson(j);
-    } else {
+    } else if (!out.quiet) {  // -q: the file is the result, no report
       s.Print(std::cout);
       if (stress.has_fatigue()) {
         std::cout << "\n";

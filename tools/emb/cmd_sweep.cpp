@@ -61,7 +61,9 @@ struct SweepCommand {
     d.shard_count = shard.count;
     d.sweep_rpm = sweep::ParseValueList(rpm_text, "--rpm");
     for (double n : d.sweep_rpm)
-      EMB_THROW_IF(!(n > 0.0), "--rpm: expected speeds > 0 rpm, got " << n);
+      EMB_THROW_IF(!(n >= scene::kMinSpeedRpm && n <= scene::kMaxSpeedRpm),
+                   "--rpm: expected speeds from " << scene::kMinSpeedRpm << " to "
+                                                  << scene::kMaxSpeedRpm << " rpm, got " << n);
     d.settings.orders = sweep::ParseValueList(orders_text, "--orders");
     d.settings.samples_per_cycle = samples_per_cycle;
     const std::string text = scene::ReadSceneText(scene_file);

@@ -114,7 +114,9 @@ void CheckSolverOptions(double tolerance, int subspace, int max_restarts, double
 
 void OutputOptions::Register(CLI::App& cmd) {
   cmd.add_flag("--json", json, "Print the tables as one JSON document on stdout");
-  cmd.add_flag("-q,--quiet", quiet, "No progress display on stderr");
+  cmd.add_flag("-q,--quiet", quiet,
+               "No progress display on stderr, and no report tables on stdout where a file is "
+               "the result (errors, warnings and --json's document still print)");
 }
 
 void PrintJson(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }

@@ -71,7 +71,7 @@ void Report(const sweep::SweepData& d, const std::string& output, std::size_t re
                {"points", t.ToJson()},
                {"amplitude", amplitude},
                {"phase_deg", phase}});
-  } else {
+  } else if (!out.quiet) {  // -q: the file is the result, no report
     s.Print(std::cout);
     std::cout << "\n";
     t.Print(std::cout);

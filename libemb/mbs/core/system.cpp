@@ -1,6 +1,7 @@
 #include "libemb/mbs/core/system.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "libemb/common/did_you_mean.h"
@@ -47,6 +48,25 @@ void System::CheckNewName(const std::string& name, const char* what) const {
     EMB_THROW_IF(static_cast<unsigned char>(c) <= ' ' || c == '\x7f' || (c == '.' && !marker),
                  what << " '" << name << "': expected a name without spaces, control characters"
                       << (marker ? "" : " or '.' (channels are <name>.<quantity>)"));
+}
+
+void System::CheckChannelOwnerNames() const {
+  // Channels are "<owner>.<quantity>": bodies, joints and couplers, force elements, sensors
+  // and probes share one namespace with the built-in owners, so that a channel name means one
+  // thing (a sensor named like a bushing made "bushing.F.x" resolve to the sensor).
+  std::map<std::string, std::string> owner = {{"energy", "the energy channels"},
+                                              {"residual", "the residual channels"}};
+  auto claim = [&owner](const std::string& name, const std::string& what) {
+    const auto [it, added] = owner.emplace(name, what + " '" + name + "'");
+    EMB_THROW_IF(!added, what << " '" << name << "': the name is taken by " << it->second
+                              << "; channels are <name>.<quantity>, so bodies, joints, force "
+                                 "elements, sensors and probes need distinct names");
+  };
+  for (int b = 1; b < num_bodies(); ++b) claim(bodies_[b].name, "body");
+  for (const auto& e : elements_) claim(e.name, "joint or coupler");
+  for (const auto& f : forces_) claim(f->name(), "force element");
+  for (const auto& s : sensors_) claim(s.name, "sensor");
+  for (const auto& pr : probes_) claim(pr->name(), "probe");
 }
 
 int System::AddBody(const RigidBody& body) {
@@ -228,6 +248,7 @@ int System::num_probe_channels() const {
 
 void System::Finalize() {
   CheckNotFinalized("Finalize");
+  CheckChannelOwnerNames();
   std::vector<int> ne;
   for (const auto& b : bodies_) ne.push_back(b.num_modes());
   layout_ = StateLayout(num_bodies(), ne);

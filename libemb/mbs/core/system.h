@@ -183,6 +183,9 @@ class System {
  private:
   void CheckNotFinalized(const char* what) const;
   void CheckNewName(const std::string& name, const char* what) const;
+  /// @throws InputError naming both for two channel owners (bodies, joints and couplers,
+  /// force elements, sensors, probes, "energy", "residual") with one name.
+  void CheckChannelOwnerNames() const;
 
   std::vector<RigidBody> bodies_;
   std::vector<Marker> markers_;

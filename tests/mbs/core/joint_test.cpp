@@ -184,6 +184,24 @@ TEST(Coupler, ZeroRatioAndSameCoordinateAreRefused) {
   }
 }
 
+// Channels are "<owner>.<quantity>": a sensor named like the coupler would make "mesh.F.x"
+// ambiguous, so the model is refused when it is finalised, naming both owners.
+TEST(ChannelOwners, ASensorNamedLikeAJointIsRefused) {
+  System s = GearPairModel(nullptr, 2.0);
+  s.AddSensor("mesh", "hub1", "o1");
+  try {
+    s.Finalize();
+    FAIL() << "a sensor named like the coupler was accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("sensor 'mesh'"), std::string::npos) << m;
+    EXPECT_NE(m.find("joint or coupler 'mesh'"), std::string::npos) << m;
+  }
+  System t = GearPairModel(nullptr, 2.0);
+  t.AddSensor("gear_offset", "hub1", "o1");
+  EXPECT_NO_THROW(t.Finalize());
+}
+
 TEST(Motion, TranslationCoordinateNeedsASlidingJoint) {
   System s;
   RigidBody b;
