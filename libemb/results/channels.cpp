@@ -31,6 +31,13 @@ int ProbeChannel(const mbs::System& system, const std::string& name) {
   return -1;
 }
 
+// Index of channel "<force element>.<output>" in Sample::force_outputs, or -1.
+int ForceOutputChannel(const mbs::System& system, const std::string& name) {
+  const std::vector<std::string> names = ForceOutputChannels(system);
+  const auto it = std::find(names.begin(), names.end(), name);
+  return it == names.end() ? -1 : static_cast<int>(it - names.begin());
+}
+
 int SensorIndex(const mbs::System& system, const std::string& name) {
   for (std::size_t k = 0; k < system.sensors().size(); ++k)
     if (system.sensors()[k].name == name) return static_cast<int>(k);
@@ -38,6 +45,20 @@ int SensorIndex(const mbs::System& system, const std::string& name) {
 }
 
 }  // namespace
+
+std::vector<std::string> ForceOutputChannels(const mbs::System& system) {
+  std::vector<std::string> n;
+  for (const auto& f : system.force_elements())
+    for (const auto& o : f->outputs()) n.push_back(f->name() + "." + o.name);
+  return n;
+}
+
+std::vector<std::string> ForceOutputUnits(const mbs::System& system) {
+  std::vector<std::string> u;
+  for (const auto& f : system.force_elements())
+    for (const auto& o : f->outputs()) u.push_back(o.unit);
+  return u;
+}
 
 std::vector<std::string> ValidChannelNames(const mbs::System& system) {
   std::vector<std::string> n;
@@ -71,6 +92,7 @@ std::vector<std::string> ValidChannelNames(const mbs::System& system) {
   }
   for (const auto& p : system.probes())
     for (const auto& c : p->channels()) n.push_back(p->name() + "." + c);
+  for (const auto& c : ForceOutputChannels(system)) n.push_back(c);
   for (const char* c : {"kinetic", "gravity", "elastic", "total"})
     n.push_back(std::string("energy.") + c);
   n.push_back("residual.position");
@@ -125,6 +147,8 @@ ChannelSet::ChannelSet(const mbs::System& system, const std::vector<std::string>
       ch = {Channel::Kind::kResidual, 0, comp_index({"position", "velocity"})};
     } else if (const int probe = ProbeChannel(system, c); probe >= 0) {
       ch = {Channel::Kind::kProbe, probe, 0};
+    } else if (const int out = ForceOutputChannel(system, c); out >= 0) {
+      ch = {Channel::Kind::kForceOutput, out, 0};
     } else if (SensorIndex(system, owner) >= 0) {
       ch = {Channel::Kind::kSensor, SensorIndex(system, owner),
             comp_index({"dx", "dy", "dz", "rx", "ry", "rz"})};
@@ -186,6 +210,8 @@ double ChannelSet::Value(const mbs::Sample& s, int k) const {
       return s.joints(c.index, c.component);
     case Channel::Kind::kProbe:
       return s.probes[c.index];
+    case Channel::Kind::kForceOutput:
+      return s.force_outputs[c.index];
     case Channel::Kind::kForce:
       return s.reactions(c.index, c.component);
     case Channel::Kind::kTorque:

@@ -12,6 +12,7 @@
 /// (mbs/analysis/joint_coordinates.h), <output point>.<channel>
 /// (probes: u|v|a.{x,y,z,n}, power; mbs/flexible/output_points.h), <chord sensor>.dx|dy|dz|
 /// norm|s (probes, mbs/core/chord_sensor.h),
+/// <force element>.<output> (ForceElement::outputs: a film bearing's h_min, p_max, ...),
 /// energy.{kinetic,gravity,elastic,total}, residual.{position,velocity}.
 
 #include <string>
@@ -24,6 +25,11 @@ namespace emb::results {
 
 /// Every channel name `system` has.
 std::vector<std::string> ValidChannelNames(const mbs::System& system);
+
+/// The force elements' outputs (ForceElement::outputs) as channels "<element>.<name>" and
+/// their units, in Sample::force_outputs order.
+std::vector<std::string> ForceOutputChannels(const mbs::System& system);
+std::vector<std::string> ForceOutputUnits(const mbs::System& system);
 
 class ChannelSet {
  public:
@@ -50,7 +56,8 @@ class ChannelSet {
       kForceElementNorm,
       kSensor,
       kJoint,
-      kProbe
+      kProbe,
+      kForceOutput
     } kind;
     int index;      // body, reaction port, force element, sensor or joint element
     int component;  // 0..5

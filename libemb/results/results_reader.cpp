@@ -43,9 +43,10 @@ ResultsStatus ReadStatus(const H5File& h5, const std::string& path) {
 
 // The time series a reader may use; a run killed between two appends leaves them one row
 // apart, so a reader uses the rows they all have.
-constexpr const char* kSeries[] = {
-    "/state/q",   "/state/v",     "/reactions/force", "/reactions/torque", "/energy",
-    "/residuals", "/forces/load", "/sensors",         "/joints",           "/output_points"};
+constexpr const char* kSeries[] = {"/state/q",          "/state/v",       "/reactions/force",
+                                   "/reactions/torque", "/energy",        "/residuals",
+                                   "/forces/load",      "/sensors",       "/joints",
+                                   "/output_points",    "/forces/outputs"};
 // Where a body's values sit in a row of /state/q and /state/v: the layout record the writer
 // stores (version 3), or for version 2 files mbs::StateLayout's, which they were written with.
 struct StateColumns {
@@ -56,7 +57,8 @@ struct StateColumns {
 struct ResultsFile {
   H5File h5;
   std::vector<std::string> bodies, ports, sensors, forces, joints;
-  std::vector<std::string> probe_channels;  // "<probe>.<channel>", columns of /output_points
+  std::vector<std::string> probe_channels;   // "<probe>.<channel>", columns of /output_points
+  std::vector<std::string> output_channels;  // "<element>.<output>", columns of /forces/outputs
   std::vector<double> time;
   std::size_t n{0};
   ResultsStatus status;
@@ -78,6 +80,8 @@ struct ResultsFile {
     if (h5.Exists("/model/joints")) joints = h5.ReadStrings("/model/joints");
     if (h5.Exists("/model/output_point_channels"))
       probe_channels = h5.ReadStrings("/model/output_point_channels");
+    if (h5.Exists("/model/force_output_channels"))
+      output_channels = h5.ReadStrings("/model/force_output_channels");
     time = h5.ReadDoubles("/time");
     n = time.size();
     for (const char* s : kSeries)
@@ -196,6 +200,13 @@ ResultsChannel ReadResultsChannel(const std::string& path, const std::string& ch
       it != f.probe_channels.end()) {
     out.values =
         f.Column("/output_points", static_cast<std::size_t>(it - f.probe_channels.begin()));
+    return out;
+  }
+  // Force elements' outputs: "<element>.<output>" columns of /forces/outputs.
+  if (const auto it = std::find(f.output_channels.begin(), f.output_channels.end(), channel);
+      it != f.output_channels.end()) {
+    out.values =
+        f.Column("/forces/outputs", static_cast<std::size_t>(it - f.output_channels.begin()));
     return out;
   }
   // <sensor>.dx .. .rz (the /sensors columns).

@@ -5,6 +5,7 @@
 #include "libemb/common/error.h"
 #include "libemb/mbs/analysis/joint_coordinates.h"
 #include "libemb/mbs/core/rotation.h"
+#include "libemb/results/channels.h"
 
 namespace emb::results {
 namespace {
@@ -135,6 +136,16 @@ ResultsWriter::ResultsWriter(const std::string& path, const mbs::System& system,
                                    "[N m] on the first marker's body, in the second marker's "
                                    "axes (NaN: not reported)"));
   }
+  if (const std::vector<std::string> outputs = ForceOutputChannels(system); !outputs.empty()) {
+    file_.WriteStrings("/model/force_output_channels", outputs);
+    file_.WriteStrings("/model/force_output_units", ForceOutputUnits(system));
+    outputs_ = file_.AddSeries("/forces/outputs", static_cast<int>(outputs.size()));
+    file_.SetAttribute("/forces/outputs", "columns",
+                       std::string("per /model/force_output_channels, in /model/"
+                                   "force_output_units: the force elements' outputs beyond "
+                                   "their loads (a film bearing's h_min, p_max, ...; NaN: not "
+                                   "evaluated)"));
+  }
   if (!system.probes().empty()) {
     std::vector<std::string> names, channels;
     for (const auto& p : system.probes()) {
@@ -193,6 +204,7 @@ void ResultsWriter::Write(const mbs::Sample& s) {
     file_.Append(joints_, row.data());
   }
   if (probes_ >= 0) file_.Append(probes_, s.probes.data());
+  if (outputs_ >= 0) file_.Append(outputs_, s.force_outputs.data());
   if (eta_ >= 0) {
     const mbs::StateLayout& L = system_.layout();
     const int rigid_q = L.nq() - L.num_elastic_total(), rigid_v = L.nv() - L.num_elastic_total();
@@ -235,11 +247,11 @@ void ResultsWriter::Close() { file_.Close(); }
 std::uint64_t ResultsWriter::BytesPerSample(const mbs::System& system) {
   const std::uint64_t nb = system.layout().num_moving();
   const std::uint64_t np = system.reaction_ports().size();
-  const std::uint64_t doubles = 1 + 7 * nb + 6 * nb + 6 * nb + 3 * nb + system.num_equations() +
-                                6 * np + 5 + 2 + 3 * system.layout().num_elastic_total() +
-                                6 * system.force_elements().size() + 6 * system.sensors().size() +
-                                mbs::kJointCoordinateColumns * CoordinateJoints(system).size() +
-                                static_cast<std::uint64_t>(system.num_probe_channels());
+  const std::uint64_t doubles =
+      1 + 7 * nb + 6 * nb + 6 * nb + 3 * nb + system.num_equations() + 6 * np + 5 + 2 +
+      3 * system.layout().num_elastic_total() + 6 * system.force_elements().size() +
+      6 * system.sensors().size() + mbs::kJointCoordinateColumns * CoordinateJoints(system).size() +
+      static_cast<std::uint64_t>(system.num_probe_channels()) + ForceOutputChannels(system).size();
   return 8 * doubles;
 }
 

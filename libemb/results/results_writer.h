@@ -116,7 +116,8 @@ class ResultsWriter {
   const mbs::System& system_;
   TimeSeriesFile file_;
   int time_, q_, v_, vdot_, euler_, lambda_, force_, torque_, energy_, residuals_;
-  int eta_{-1}, eta_dot_{-1}, eta_ddot_{-1}, loads_{-1}, sensors_{-1}, joints_{-1}, probes_{-1};
+  int eta_{-1}, eta_dot_{-1}, eta_ddot_{-1}, loads_{-1}, sensors_{-1}, joints_{-1}, probes_{-1},
+      outputs_{-1};
   std::vector<int> joint_elements_;  // System::elements() index of each /model/joints entry
   void WriteEvents(const mbs::EventLog& log);
 };

@@ -1,10 +1,12 @@
 #include "libemb/scene/engine_parts.h"
 
+#include <cmath>
 #include <memory>
 #include <sstream>
 
 #include "libemb/common/error.h"
 #include "libemb/engine/cylinder_pressure.h"
+#include "libemb/engine/film_bearing.h"
 #include "libemb/engine/journal_bearing.h"
 #include "libemb/engine/torsional_damper.h"
 
@@ -18,6 +20,71 @@ void ReadJournalBearing(MapReader& r, const std::string& name, mbs::System* sys)
   p.clearance = r.GetDouble("clearance", NumberRange::Positive("m"));
   p.viscosity = r.GetDouble("viscosity", NumberRange::Positive("Pa s"));
   sys->AddForceElement(std::make_shared<mbs::JournalBearing>(name, i, j, p));
+}
+
+namespace {
+
+tribology::CavitationModel ParseCavitation(const std::string& word, const std::string& what) {
+  using M = tribology::CavitationModel;
+  if (word == "mass-conserving") return M::kMassConserving;
+  if (word == "reynolds") return M::kReynolds;
+  if (word == "half-sommerfeld") return M::kHalfSommerfeld;
+  if (word == "full-sommerfeld") return M::kFullSommerfeld;
+  EMB_THROW(InputError, what << " cavitation: expected mass-conserving, reynolds, half-sommerfeld "
+                               "or full-sommerfeld, got '" << word << "'");
+}
+
+// Each entry of the list at `key` (absent: none) as a MapReader of table `table`.
+template <class Read>
+void ReadEach(MapReader& r, const std::string& key, const std::string& what,
+              const std::string& table, Read read) {
+  if (!r.Has(key)) {
+    r.Optional(key);
+    return;
+  }
+  const YAML::Node list = r.Require(key);
+  if (!list.IsSequence())
+    EMB_THROW(InputError, Where(r.file(), list) << ": " << what << " " << key
+                                                << ": expected a list of maps");
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    MapReader e(list[k], r.file(), what + " " + key + "[" + std::to_string(k) + "]", table);
+    read(e);
+    e.Finish();
+  }
+}
+
+}  // namespace
+
+void ReadFilmBearing(MapReader& r, const std::string& name, mbs::System* sys) {
+  const int i = sys->FindMarker(r.GetString("i")), j = sys->FindMarker(r.GetString("j"));
+  const std::string what = "force '" + name + "'";
+  tribology::ReynoldsBearingParameters p;
+  p.radius = r.GetDouble("radius", NumberRange::Positive("m"));
+  p.length = r.GetDouble("length", NumberRange::Positive("m"));
+  p.clearance = r.GetDouble("clearance", NumberRange::Positive("m"));
+  p.lubricant.viscosity = r.GetDouble("viscosity", NumberRange::Positive("Pa s"));
+  p.grid.circumferential = r.GetInt("grid_circumferential", p.grid.circumferential, 8, 4096);
+  p.grid.axial = r.GetInt("grid_axial", p.grid.axial, 2, 1024);
+  p.cavitation = ParseCavitation(r.GetString("cavitation", "mass-conserving"), what);
+  p.bulk_modulus = r.GetDouble("bulk_modulus", p.bulk_modulus, NumberRange::Positive("Pa"));
+  ReadEach(r, "oil_holes", what, "forces: film-bearing oil hole", [&](MapReader& e) {
+    tribology::OilHole h;
+    h.angle = e.GetDouble("angle", NumberRange::Finite("rad"));
+    h.axial_position = e.GetDouble("axial_position", 0.0, NumberRange::Finite("m"));
+    h.diameter = e.GetDouble("diameter", NumberRange::Positive("m"));
+    h.supply_pressure = e.GetDouble("supply_pressure", NumberRange::NonNegative("Pa"));
+    p.oil_holes.push_back(h);
+  });
+  ReadEach(r, "grooves", what, "forces: film-bearing groove", [&](MapReader& e) {
+    tribology::Groove g;
+    g.axial_position = e.GetDouble("axial_position", 0.0, NumberRange::Finite("m"));
+    g.width = e.GetDouble("width", NumberRange::Positive("m"));
+    g.start_angle = e.GetDouble("start_angle", 0.0, NumberRange::Finite("rad"));
+    g.angular_extent = e.GetDouble("angular_extent", 2.0 * M_PI, NumberRange::Positive("rad"));
+    g.supply_pressure = e.GetDouble("supply_pressure", NumberRange::NonNegative("Pa"));
+    p.grooves.push_back(g);
+  });
+  sys->AddForceElement(std::make_shared<mbs::FilmBearing>(name, i, j, p));
 }
 
 namespace {

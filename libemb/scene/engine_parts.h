@@ -17,6 +17,13 @@ namespace emb::scene {
 /// mbs::JournalBearing. `r` has read name and type.
 void ReadJournalBearing(MapReader& r, const std::string& name, mbs::System* sys);
 
+/// {name, type: film-bearing, i, j, radius, length, clearance, viscosity, grid_circumferential,
+///  grid_axial, cavitation, bulk_modulus, oil_holes: [{angle, axial_position, diameter,
+///  supply_pressure}], grooves: [{axial_position, width, start_angle, angular_extent,
+///  supply_pressure}]}: adds a mbs::FilmBearing (finite-width Reynolds). `r` has read name
+/// and type.
+void ReadFilmBearing(MapReader& r, const std::string& name, mbs::System* sys);
+
 /// {name, type: torsional-damper, hub, ring_mass, ring_inertia, stiffness, damping}: adds an
 /// engine::AddTorsionalDamper ring (its body, marker, joint and spring-damper) on marker `hub`.
 /// Instead of stiffness/damping (Kelvin-Voigt) a frequency-dependent `rubber:` map, either

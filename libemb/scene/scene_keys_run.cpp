@@ -11,7 +11,7 @@ using T = KeyType;
 // clang-format off
 constexpr SceneKey kForceKeys[] = {
     {"forces", "name", T::kString, "", "", "required", "The element's name (load channels `<name>.F|T.*`)."},
-    {"forces", "type", T::kString, "", "spring-damper | rotational-spring-damper | bushing | journal-bearing | torsional-damper | lash | clutch-damper | force | torque", "required", "The kind of element; its keys are in the section of that type."},
+    {"forces", "type", T::kString, "", "spring-damper | rotational-spring-damper | bushing | journal-bearing | film-bearing | torsional-damper | lash | clutch-damper | force | torque", "required", "The kind of element; its keys are in the section of that type."},
     // spring-damper
     {"forces: spring-damper", "i", T::kString, "", "", "required", "First marker."},
     {"forces: spring-damper", "j", T::kString, "", "", "required", "Second marker."},
@@ -37,6 +37,28 @@ constexpr SceneKey kForceKeys[] = {
     {"forces: journal-bearing", "length", T::kNumber, "m", "> 0", "required", "Bearing length L (L/D ≤ 1)."},
     {"forces: journal-bearing", "clearance", T::kNumber, "m", "> 0", "required", "Radial clearance c (< R)."},
     {"forces: journal-bearing", "viscosity", T::kNumber, "Pa s", "> 0", "required", "Dynamic viscosity μ."},
+    // film-bearing
+    {"forces: film-bearing", "i", T::kString, "", "", "required", "Journal marker (at the journal's centre in the bearing's mid-plane; its z axis the journal axis)."},
+    {"forces: film-bearing", "j", T::kString, "", "", "required", "Shell marker; its z axis is the bore axis, x_J the origin of the angle φ."},
+    {"forces: film-bearing", "radius", T::kNumber, "m", "> 0", "required", "Journal radius R."},
+    {"forces: film-bearing", "length", T::kNumber, "m", "> 0", "required", "Bearing length L."},
+    {"forces: film-bearing", "clearance", T::kNumber, "m", "> 0", "required", "Radial clearance c (< R)."},
+    {"forces: film-bearing", "viscosity", T::kNumber, "Pa s", "> 0", "required", "Dynamic viscosity μ at the effective oil temperature."},
+    {"forces: film-bearing", "grid_circumferential", T::kInteger, "", "[8, 4096]", "48", "Grid cells N around the bearing."},
+    {"forces: film-bearing", "grid_axial", T::kInteger, "", "[2, 1024]", "8", "Grid intervals N_z along the length."},
+    {"forces: film-bearing", "cavitation", T::kString, "", "mass-conserving | reynolds | half-sommerfeld | full-sommerfeld", "mass-conserving", "Mass-conserving (JFO): the film's states are integrated with the run; the others are quasi-static at each evaluation."},
+    {"forces: film-bearing", "bulk_modulus", T::kNumber, "Pa", "> 0", "1.5e9", "The oil's bulk modulus K: the full film's compressibility in the film states (mass-conserving only)."},
+    {"forces: film-bearing", "oil_holes", T::kList, "", "", "—", "Section *forces: film-bearing oil hole*; absent: none."},
+    {"forces: film-bearing", "grooves", T::kList, "", "", "—", "Section *forces: film-bearing groove*; absent: none."},
+    {"forces: film-bearing oil hole", "angle", T::kNumber, "rad", "", "required", "Centre angle φ from x_J towards y_J."},
+    {"forces: film-bearing oil hole", "axial_position", T::kNumber, "m", "", "0", "Centre from the mid-plane along z_J."},
+    {"forces: film-bearing oil hole", "diameter", T::kNumber, "m", "> 0", "required", "Hole diameter (the grid must have a node inside it)."},
+    {"forces: film-bearing oil hole", "supply_pressure", T::kNumber, "Pa", ">= 0", "required", "Gauge supply pressure."},
+    {"forces: film-bearing groove", "axial_position", T::kNumber, "m", "", "0", "Groove centre line from the mid-plane."},
+    {"forces: film-bearing groove", "width", T::kNumber, "m", "> 0", "required", "Axial width."},
+    {"forces: film-bearing groove", "start_angle", T::kNumber, "rad", "", "0", "Where a partial groove starts."},
+    {"forces: film-bearing groove", "angular_extent", T::kNumber, "rad", "> 0", "6.283185307179586", "Angular extent, at most 2π (2π: full circumferential)."},
+    {"forces: film-bearing groove", "supply_pressure", T::kNumber, "Pa", ">= 0", "required", "Gauge supply pressure."},
     // torsional-damper
     {"forces: torsional-damper", "hub", T::kString, "", "", "required", "The hub marker; the ring turns about its z axis."},
     {"forces: torsional-damper", "ring_mass", T::kNumber, "kg", "> 0", "required", "Ring mass."},

@@ -281,6 +281,8 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
       sys->AddForceElement(std::make_shared<mbs::Bushing>(name, i, j, K, D));
     } else if (type == "journal-bearing") {
       ReadJournalBearing(r, name, sys);
+    } else if (type == "film-bearing") {
+      ReadFilmBearing(r, name, sys);
     } else if (type == "torsional-damper") {
       const std::string note = ReadTorsionalDamper(r, name, sys);
       if (notes && !note.empty()) notes->push_back(note);
@@ -337,10 +339,11 @@ void ReadForces(const YAML::Node& list, const std::string& file, mbs::System* sy
       EMB_THROW(InputError,
                 what << ": unknown type '" << type
                      << "': expected one of spring-damper, rotational-spring-damper, "
-                        "bushing, journal-bearing, torsional-damper, lash, clutch-damper, force, "
-                        "torque"
+                        "bushing, journal-bearing, film-bearing, torsional-damper, lash, "
+                        "clutch-damper, force, torque"
                      << DidYouMean(type, {"spring-damper", "rotational-spring-damper",
-                                               "bushing", "journal-bearing", "torsional-damper", "lash",
+                                               "bushing", "journal-bearing", "film-bearing",
+                                               "torsional-damper", "lash",
                                                "clutch-damper", "force", "torque"}));
     }
     r.Finish();

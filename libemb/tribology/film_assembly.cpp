@@ -114,7 +114,7 @@ void CalcFilmResidual(const FilmFields& film, const FilmUnknowns& x, const Eigen
         s = A * (theta * h - (*st.previous_content)[k]) / st.dt;
         break;
       case StorageTerm::kDae:
-        s = A * (h * x.dtheta_du[k] * (*st.u_dot)[k] + theta * film.film_rate(k));
+        s = A * (h * DaeStorageSlope(x, st, k) * (*st.u_dot)[k] + theta * film.film_rate(k));
         break;
     }
     (*r)[k] += s + x.slack[k];
@@ -296,7 +296,7 @@ void AddAdjointKinematicTerms(const FilmFields& film, const FilmUnknowns& x,
         if (!film.film_floored(k)) position_scale = A * x.theta[k] / st.dt;
         break;
       case StorageTerm::kDae:
-        if (!film.film_floored(k)) position_scale = A * x.dtheta_du[k] * (*st.u_dot)[k];
+        if (!film.film_floored(k)) position_scale = A * DaeStorageSlope(x, st, k) * (*st.u_dot)[k];
         rate_scale = A * x.theta[k];
         break;
     }
@@ -395,7 +395,7 @@ void CalcFilmKinematicJacobian(const FilmFields& film, const FilmUnknowns& x,
         dr_dx->row(k) += A * x.theta[k] / st.dt * dh_dx.transpose();
         break;
       case StorageTerm::kDae:
-        dr_dx->row(k) += A * x.dtheta_du[k] * (*st.u_dot)[k] * dh_dx.transpose();
+        dr_dx->row(k) += A * DaeStorageSlope(x, st, k) * (*st.u_dot)[k] * dh_dx.transpose();
         dr_dv->row(k).head<4>() += A * x.theta[k] * dhdot_dv.transpose();
         break;
     }

@@ -11,7 +11,7 @@
 /// r_k = (net outflow of k) + storage_k, storage_k by StorageTerm:
 ///   kQuasiStatic    A theta_k dh_k/dt
 ///   kBackwardEuler  A (theta_k h_k - m_k^prev) / dt     (m = theta h, the film content)
-///   kDae            A (h_k dtheta_k/du u_dot_k + theta_k dh_k/dt)
+///   kDae            A (h_k s_k u_dot_k + theta_k dh_k/dt), s_k = DaeStorageSlope
 /// plus, for kReynolds, the complementarity slack sigma_k min(u_k, 0). A supply node's row is
 /// r_k = u_k - u_supply. Summed over all non-supply nodes the fluxes telescope: sum r =
 /// storage + side flow - supply flow, exactly (the discrete mass balance).
@@ -33,7 +33,17 @@ struct StorageInputs {
   const Eigen::VectorXd* previous_content{nullptr};  ///< kBackwardEuler: m^prev per unknown [m]
   double dt{0.0};                                     ///< kBackwardEuler [s]
   const Eigen::VectorXd* u_dot{nullptr};              ///< kDae [1/s]
+  /// kDae: kappa = p_ref / K, the full film's compressibility per unit u (K the lubricant's
+  /// bulk modulus; Elrod 1981): the full film stores A h kappa u. It keeps every film state
+  /// differential, so that an implicit step across rupture has a solution (film_dae.h).
+  double compressibility{0.0};
 };
+
+/// kDae: d(content)/du / h, the storage's coefficient of h u_dot: dtheta/du in the cavity,
+/// the compressibility in the full film.
+inline double DaeStorageSlope(const FilmUnknowns& x, const StorageInputs& st, int k) {
+  return x.dtheta_du[k] != 0.0 ? x.dtheta_du[k] : st.compressibility;
+}
 
 /// Flow totals of one residual evaluation [m^3/s].
 struct FilmBalance {

@@ -11,6 +11,7 @@ FilmDae::FilmDae(const ReynoldsBearing& bearing) : bearing_(&bearing), film_(bea
   x_.Resize(bearing.num_unknowns());
   r_.setZero(bearing.num_unknowns());
   storage_.term = StorageTerm::kDae;
+  storage_.compressibility = bearing.parameters().pressure_scale / bearing.parameters().bulk_modulus;
 }
 
 FilmSolveInfo FilmDae::Prepare(const Eigen::VectorXd& u, const Eigen::VectorXd& u_dot,
@@ -47,7 +48,8 @@ FilmSolveInfo FilmDae::CalcResidual(const Eigen::VectorXd& u, const Eigen::Vecto
 }
 
 FilmSolveInfo FilmDae::CalcJacobian(const Eigen::VectorXd& u, const Eigen::VectorXd& u_dot,
-                                    const JournalKinematics& kin, FilmDaeJacobian* J) {
+                                    const JournalKinematics& kin, FilmDaeJacobian* J,
+                                    BearingLoads* loads) {
   FilmSolveInfo info = Prepare(u, u_dot, kin);
   if (!info.ok()) return info;
   FillFilmJacobian(film_, x_, storage_,
@@ -56,11 +58,11 @@ FilmSolveInfo FilmDae::CalcJacobian(const Eigen::VectorXd& u, const Eigen::Vecto
   const BearingGrid& g = bearing_->grid();
   J->dr_du_dot.resize(size());
   for (int k = 0; k < size(); ++k)
-    J->dr_du_dot[k] = bearing_->is_supply(k) ? 0.0 : g.node_area() * film_.film(k) * x_.dtheta_du[k];
+    J->dr_du_dot[k] =
+        bearing_->is_supply(k) ? 0.0 : g.node_area() * film_.film(k) * DaeStorageSlope(x_, storage_, k);
   CalcFilmKinematicJacobian(film_, x_, storage_, &J->dr_dx, &J->dr_dv);
   CalcFilmResidual(film_, x_, u, storage_, &r_, &balance_);
-  BearingLoads loads;
-  CalcBearingLoads(film_, x_, balance_, &loads, &J->loads);
+  CalcBearingLoads(film_, x_, balance_, loads ? loads : &loads_, &J->loads);
   return info;
 }
 

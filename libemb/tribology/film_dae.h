@@ -7,13 +7,21 @@
 /// States: one universal variable u_k per unknown node (T5), dimensionless, k in
 /// [0, n) with n = ReynoldsBearing::num_unknowns() (BearingGrid numbering). Residual
 /// (notation.h, T6; film_assembly.h), one equation per state [m^3/s]:
-///   r_k(u, u_dot; x, v) = A (h_k theta'(u_k) u_dot_k + theta_k dh_k/dt) + net outflow_k,
-///   supply nodes: r_k = u_k - u_supply.
-/// theta'(u) = 1 where u < 0 (cavitated: a differential state carrying the fill fraction),
-/// 0 where u >= 0 (full film: an algebraic state, the pressure). The split moves with the
-/// film, so give IDA all film states as algebraic for its error test weights (or pass
-/// DifferentialStates() at each restart) and start from the quasi-static solution (u_dot = 0
-/// is then consistent: FilmSolver::SolveQuasiStatic with the same kinematics).
+///   r_k(u, u_dot; x, v) = A (h_k s_k(u_k) u_dot_k + theta_k dh_k/dt) + net outflow_k,
+///   supply nodes: r_k = u_k - u_supply,
+/// s(u) = theta'(u) = 1 where u < 0 (cavitated: the fill fraction), and kappa = p_ref / K
+/// where u >= 0 (the full film compressed by its pressure, K the bulk modulus: Elrod's
+/// original algorithm, J. Lubr. Technol. 103 (1981) 350). With kappa = 0 the full-film nodes
+/// would be algebraic and a node the Newton iteration moves across u = 0 would switch its
+/// equation between a differential and an algebraic one: near rupture an implicit step can
+/// then have no solution in either branch (measured: IDA's corrector cycling between them
+/// until its step is 1e-10 s); with kappa > 0 every film state is differential, stiff in
+/// the full film (time constant ~ kappa times the film's squeeze time), and the step always
+/// has a solution for h small enough. The compressed content A h kappa u is part of the
+/// storage, so the discrete mass balance holds as before. IDA is still best given the film
+/// states as excluded from its error test (their switch moves with the film) and started
+/// from the quasi-static solution (u_dot = 0 is then consistent: FilmSolver::SolveQuasiStatic
+/// with the same kinematics).
 ///
 /// What a DAE force element does per residual evaluation:
 ///   1. kinematics x = (e, gamma) and v = (e_dot, gamma_dot, omega_j, omega_s) from the two
@@ -60,9 +68,11 @@ class FilmDae {
                              const JournalKinematics& kin, Eigen::VectorXd* r,
                              BearingLoads* loads);
 
-  /// The Jacobian blocks at (u, u_dot, kin). Same status as CalcResidual.
+  /// The Jacobian blocks at (u, u_dot, kin), and the loads there if `loads` is not null.
+  /// Same status as CalcResidual.
   FilmSolveInfo CalcJacobian(const Eigen::VectorXd& u, const Eigen::VectorXd& u_dot,
-                             const JournalKinematics& kin, FilmDaeJacobian* jacobian);
+                             const JournalKinematics& kin, FilmDaeJacobian* jacobian,
+                             BearingLoads* loads = nullptr);
 
   /// 1 for states that are differential at u (cavitated free nodes), 0 for algebraic ones.
   void DifferentialStates(const Eigen::VectorXd& u, Eigen::VectorXd* id) const;
@@ -76,6 +86,7 @@ class FilmDae {
   FilmUnknowns x_;
   StorageInputs storage_;
   FilmBalance balance_;
+  BearingLoads loads_;
   Eigen::VectorXd r_;
 };
 

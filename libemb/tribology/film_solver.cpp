@@ -257,7 +257,10 @@ FilmSolveInfo FilmSolver::Solve(const StorageInputs& st, const JournalKinematics
     int worst = 0;
     for (int k = 0; k < b.num_unknowns(); ++k)
       if (x_.theta[k] < x_.theta[worst]) worst = k;
-    if (x_.theta[worst] < 0.0) {
+    // The fill fraction comes from u = theta - 1: round-off of u (its film Jacobian's
+    // condition times 1e-16) is not an emptied cavity.
+    constexpr double kFillFractionRoundOff = 1e-10;
+    if (x_.theta[worst] < -kFillFractionRoundOff) {
       std::ostringstream os;
       const BearingGrid& g = b.grid();
       os << b.who() << ": fill fraction " << x_.theta[worst] << " < 0 at phi = "

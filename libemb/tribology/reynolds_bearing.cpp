@@ -51,6 +51,8 @@ ReynoldsBearing::ReynoldsBearing(std::string name, const ReynoldsBearingParamete
                     << " m");
   EMB_THROW_IF(!(std::isfinite(p.pressure_scale) && p.pressure_scale > 0.0),
                who_ << ": expected a positive pressure_scale, got " << p.pressure_scale << " Pa");
+  EMB_THROW_IF(!(std::isfinite(p.bulk_modulus) && p.bulk_modulus > 0.0),
+               who_ << ": expected a positive bulk_modulus, got " << p.bulk_modulus << " Pa");
   EMB_THROW_IF(!(std::isfinite(p.film_floor) && p.film_floor > 0.0),
                who_ << ": expected a positive film_floor, got " << p.film_floor);
   EMB_THROW_IF(p.max_iterations < 1,

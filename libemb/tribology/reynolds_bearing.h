@@ -55,6 +55,9 @@ struct ReynoldsBearingParameters {
   /// p_ref: pressure of u = 1 (T5) [Pa]; only scales the unknowns (conditioning, DAE error
   /// weights).
   double pressure_scale{1e6};
+  /// K: the lubricant's bulk modulus [Pa], for the film as DAE states only (film_dae.h: the
+  /// full film's compressibility; 1.5 GPa, a mineral oil near ambient pressure).
+  double bulk_modulus{1.5e9};
   /// Newton iterations allowed per evaluation (each one factorisation).
   int max_iterations{50};
 };

@@ -18,6 +18,7 @@
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/mbs/forces/force_jacobian.h"
 #include "tests/support/force_jacobian_check.h"
+#include "tests/support/posed_bodies.h"
 
 namespace emb::mbs {
 namespace {
@@ -85,23 +86,10 @@ TEST(JournalBearing, PureSqueezeMatchesClosedForm) {
 }
 
 // Journal "pin" in a shell "eye", both free bodies (no joints), at given poses and rates.
-struct Pose {
-  Vector3d p, v, w;
-  Eigen::Matrix3d R{Eigen::Matrix3d::Identity()};
-};
+using testing::Pose;
 System PinInEye(const JournalBearingParameters& jp, const Pose& eye, const Pose& pin) {
   System s;
-  for (const auto& [name, pose] : {std::pair{"eye", eye}, std::pair{"pin", pin}}) {
-    RigidBody b;
-    b.name = name;
-    b.mass = 1.0;
-    b.inertia_B = Vector3d(0.01, 0.012, 0.02).asDiagonal();
-    b.p_WB = pose.p;
-    b.R_WB = pose.R;
-    b.v_WB = pose.v;
-    b.omega_W = pose.w;
-    s.AddBody(b);
-  }
+  testing::AddPosedBodies(&s, {{"eye", eye}, {"pin", pin}});
   // Markers off the CMs so that the arms matter.
   const Vector3d s_eye(0.01, -0.02, 0.005), s_pin(-0.015, 0.01, 0.02);
   s.AddMarker("shell", "eye", s_eye, RotationFromEuler313(0.2, 0.1, -0.3));

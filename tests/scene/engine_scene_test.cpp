@@ -19,6 +19,8 @@
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/mbs/core/rotation.h"
 #include "libemb/results/channels.h"
+#include "libemb/results/results_reader.h"
+#include "libemb/results/results_writer.h"
 #include "libemb/results/steady_state.h"
 #include "libemb/scene/scene.h"
 
@@ -140,6 +142,80 @@ TEST(EngineSceneKeys, JournalBearing) {
       {"viscosty", "did you mean"});
   ExpectError("forces:\n  - {name: main, type: journal-baring, i: journal, j: shell}\n",
               {"did you mean 'journal-bearing'"});
+}
+
+// A rotor under its weight (981 N) spinning at 3000 rpm in a film bearing read from a scene:
+// the keys reach the element (its grid sets the film states; the oil hole keeps the film
+// from draining), and the run settles with the bearing's load channel carrying the weight.
+TEST(EngineSceneKeys, FilmBearingRunsFromTheScene) {
+  const std::string scene = R"(
+bodies:
+  - {name: rotor, mass: 100.0, inertia: [6.0, 6.0, 10.0], position: [0, -5.0e-6, 0],
+     angular_velocity: [0, 0, 314.159]}
+markers:
+  - {name: bore, body: ground, position: [0, 0, 0]}
+  - {name: journal, body: rotor, position: [0, 0, 0]}
+joints:
+  - {name: plane, type: planar, i: journal, j: bore}
+forces:
+  - {name: main, type: film-bearing, i: journal, j: bore, radius: 0.03, length: 0.02,
+     clearance: 3.0e-5, viscosity: 0.0086, grid_circumferential: 24, grid_axial: 6,
+     oil_holes: [{angle: 1.5707963, diameter: 0.006, supply_pressure: 3.0e5}]}
+gravity: [0, -9.81, 0]
+analysis: {type: dynamic, t_end: 0.12, output_step: 0.01, rtol: 1.0e-7}
+)";
+  Scene sc = ParseScene(scene, "rotor.yaml");
+  ASSERT_EQ(sc.system.num_force_states(), 24 * 5);
+  const int main = 0;
+  Eigen::Matrix<double, 6, 1> load = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::VectorXd outputs;
+  Eigen::Vector2d e = Eigen::Vector2d::Zero();
+  const std::string h5 = ::testing::TempDir() + "/film_bearing_rotor.h5";
+  results::ResultsWriter writer(h5, sc.system, scene, "dynamic");
+  const mbs::RunResult r = mbs::RunAnalysis(
+      mbs::PrepareRun(sc.system, sc.analysis), sc.analysis, [&](const mbs::Sample& s) {
+        load = s.force_loads.row(main);
+        outputs = s.force_outputs;
+        e = s.q.segment<2>(sc.system.layout().position(sc.system.FindBody("rotor")));
+        writer.Write(s);
+      });
+  ASSERT_TRUE(r.ok()) << r.message;
+  writer.Finish(r);
+  writer.Close();
+  // The film's load on the journal balances the weight once the whirl has decayed (the
+  // element's own test settles it to 1e-4 c by 0.15 s; 1 % here at 0.12 s).
+  constexpr double kSettledTolerance = 0.01;
+  EXPECT_NEAR(load[1], 981.0, kSettledTolerance * 981.0);
+  EXPECT_NEAR(load[0], 0.0, kSettledTolerance * 981.0);
+  // Its outputs, in ForceElement::outputs order (film_bearing.h).
+  const std::vector<std::string> names = results::ForceOutputChannels(sc.system);
+  ASSERT_EQ(static_cast<Eigen::Index>(names.size()), outputs.size());
+  auto output = [&](const std::string& n) {
+    const auto it = std::find(names.begin(), names.end(), "main." + n);
+    EXPECT_NE(it, names.end()) << n;
+    return outputs[it - names.begin()];
+  };
+  const double c = 3.0e-5;
+  // h_min at a grid node: c - |e| to within |e| (1 - cos(dphi/2)), dphi = 15 degrees.
+  EXPECT_GE(output("h_min"), c - e.norm() - 1e-15);
+  EXPECT_LE(output("h_min"), c - e.norm() * std::cos(std::numbers::pi / 24));
+  EXPECT_NEAR(output("eccentricity_ratio"), e.norm() / c, 1e-12);
+  EXPECT_GT(output("p_max"), 1e6);  // Pa: 981 N on 20 mm x 60 mm
+  EXPECT_GT(output("friction_power"), 0.0);
+  // Settled: what the hole supplies leaves through the edges (storage ~0).
+  EXPECT_GT(output("side_flow"), 0.0);
+  EXPECT_NEAR(output("supply_flow"), output("side_flow"), kSettledTolerance * output("side_flow"));
+  // The results file holds them as channels, with units.
+  const results::ResultsChannel h = results::ReadResultsChannel(h5, "main.h_min");
+  ASSERT_FALSE(h.values.empty());
+  EXPECT_EQ(h.values.back(), output("h_min"));
+  std::remove(h5.c_str());
+  ExpectError(
+      "forces:\n  - {name: main, type: film-bearing, i: journal, j: shell, radius: 0.03,\n"
+      "     length: 0.02, clearance: 3.0e-5, viscosity: 0.0086, grid_axial: 1}\n",
+      {"bad.yaml", "grid_axial"});
+  ExpectError("forces:\n  - {name: main, type: film-baring, i: journal, j: shell}\n",
+              {"did you mean 'film-bearing'"});
 }
 
 // The single-cylinder rigid engine (engine_1cyl_rigid.yaml) run to its periodic steady

@@ -31,7 +31,7 @@ DEPENDS = {
     "mbs/analysis": ["mbs/dae", "mbs/flexible"],
     "mbs/linear": ["mbs/analysis"],
     "mbs/parts": ["mbs/forces", "beam", "cms"],
-    "engine": ["mbs/forces"],
+    "engine": ["mbs/forces", "tribology"],
     "driveline": ["mbs/forces"],
     "results": ["mbs/analysis", "mbs/parts", "io"],
     "scene": ["mbs/analysis", "mbs/parts", "engine", "driveline", "results"],

@@ -210,6 +210,9 @@ struct Sample {
   /// Per force element [F, T] on its first marker's body in its second marker's axes
   /// (ForceElement::CalcLoad); NaN rows for elements that report none.
   Eigen::MatrixXd force_loads;
+  /// The force elements' outputs (ForceElement::outputs), element after element; NaN where
+  /// an element could not evaluate them.
+  Eigen::VectorXd force_outputs;
   /// Per sensor (System::sensors) [R_JW (p_I - p_J), rotation vector of R_J^T R_I].
   Eigen::MatrixXd sensors;
   /// Per constraint element [angle rad, angle rate rad/s, travel m, travel rate m/s]

@@ -34,6 +34,12 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
     if (offset >= 0 && z != nullptr) ctx.z = z->data() + offset, ctx.z_dot = no_rates.data() + offset;
     Eigen::Matrix<double, 6, 1> load;
     if (forces[k]->CalcLoad(ctx, &load)) s.force_loads.row(static_cast<Eigen::Index>(k)) = load;
+    const int n_out = static_cast<int>(forces[k]->outputs().size());
+    if (n_out == 0) continue;
+    Eigen::VectorXd out(n_out);
+    if (!forces[k]->CalcOutputs(ctx, out)) out.setConstant(std::numeric_limits<double>::quiet_NaN());
+    s.force_outputs.conservativeResize(s.force_outputs.size() + n_out);
+    s.force_outputs.tail(n_out) = out;
   }
   const auto& sensors = system.sensors();
   s.sensors.resize(static_cast<Eigen::Index>(sensors.size()), 6);

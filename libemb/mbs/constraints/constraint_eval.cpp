@@ -12,7 +12,17 @@
 namespace emb::mbs {
 
 ConstraintWorkspace::ConstraintWorkspace(const System& system)
-    : angle_(system.num_angle_slots(), std::numeric_limits<double>::quiet_NaN()) {}
+    : angle_(system.num_angle_slots(), std::numeric_limits<double>::quiet_NaN()) {
+  for (const auto& e : system.force_elements())
+    if (std::unique_ptr<ForceElementData> d = e->MakeData())
+      element_data_.emplace_back(e.get(), std::move(d));
+}
+
+ForceElementData* ConstraintWorkspace::element_data(const ForceElement* e) const {
+  for (const auto& [element, data] : element_data_)
+    if (element == e) return data.get();
+  return nullptr;
+}
 
 double ConstraintWorkspace::Unwrap(int slot, double raw, double hint) {
   EMB_CHECK(slot >= 0 && slot < static_cast<int>(angle_.size()));

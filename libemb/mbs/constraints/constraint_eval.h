@@ -11,8 +11,11 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <functional>
+#include <memory>
+#include <utility>
 #include <vector>
 
+#include "libemb/mbs/core/force_element.h"
 #include "libemb/mbs/core/kinematics.h"
 
 namespace emb::mbs {
@@ -37,13 +40,24 @@ class ConstraintWorkspace {
   /// linearisation, ...): they take the state their configuration implies at every call.
   bool events_active() const { return events_active_; }
   void set_events_active(bool active) { events_active_ = active; }
-  /// Forgets all slots (e.g. before a new assembly).
+  /// Forgets all slots (e.g. before a new assembly); the elements' data is kept (warm
+  /// starts only).
   void Reset();
+  /// Force element e's data (ForceElement::MakeData), null if it keeps none.
+  ForceElementData* element_data(const ForceElement* e) const;
 
  private:
   std::vector<double> angle_;
+  /// One entry per element that keeps data (few: a linear search).
+  std::vector<std::pair<const ForceElement*, std::unique_ptr<ForceElementData>>> element_data_;
   bool events_active_{false};
 };
+
+/// Element e's data in the context's workspace (ForceElement::MakeData); null without a
+/// workspace or for an element that keeps none.
+inline ForceElementData* ElementData(const ForceContext& ctx, const ForceElement& e) {
+  return ctx.workspace != nullptr ? ctx.workspace->element_data(&e) : nullptr;
+}
 
 /// The constraint Jacobian C (m x nv), row-major sparse.
 using ConstraintJacobian = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;

@@ -6,6 +6,7 @@
 /// moment about the CM in B [N m].
 
 #include <Eigen/Dense>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,15 @@ class StateJacobianSink;  // forces/force_jacobian.h
 struct DomainFailure {
   bool failed{false};
   std::string message;
+};
+
+/// The mutable data of one force element in one run (Pinocchio's Model/Data split): the
+/// warm starts and scratch an element keeps between its evaluations (a film solver's last
+/// pressure field). Made by ForceElement::MakeData, owned by the run's ConstraintWorkspace
+/// (ElementData in constraint_eval.h); the element itself stays immutable.
+class ForceElementData {
+ public:
+  virtual ~ForceElementData() = default;
 };
 
 /// What a force element may read: all body kinematics at (q, v), the time, and (for
@@ -58,6 +68,13 @@ struct ForceContext {
 
   /// Marker m at this state: the shared one, or evaluated into `scratch` (and returned).
   const MarkerKinematics& Marker(int m, MarkerKinematics* scratch) const;
+};
+
+/// A scalar output of a force element beyond its load (ForceElement::outputs): the channel
+/// "<element>.<name>" of the results, in `unit`.
+struct ElementOutput {
+  std::string name;  ///< "h_min"
+  std::string unit;  ///< "m"
 };
 
 /// What an element reports at an event (HandleEvent), for the run's list of contacts.
@@ -118,6 +135,14 @@ class ForceElement {
   }
   /// True if CalcLoad() reports a load (then the results have F/T channels for it).
   bool reports_load() const { return DoReportsLoad(); }
+  /// Its scalar outputs beyond the load (a film's minimum thickness, peak pressure, ...),
+  /// the same at every state; none by default.
+  std::vector<ElementOutput> outputs() const { return DoOutputs(); }
+  /// Their values at the context's state (size outputs().size()); false if the element
+  /// cannot be evaluated there (NaN in the results).
+  bool CalcOutputs(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> out) const {
+    return DoCalcOutputs(ctx, out);
+  }
 
   /// Events (impacts, stops). An element with a discrete state (e.g. a contact open or
   /// closed) keeps it in num_state_slots() workspace slots after its angle slots; they are
@@ -165,6 +190,11 @@ class ForceElement {
   /// "arm_1.deflection" for messages and the integrator's step-limiter report.
   std::string StateName(int i) const { return DoStateName(i); }
 
+  /// The element's mutable data for one run (force_element.h, ForceElementData); null for
+  /// an element that keeps none (the default). A context without a workspace has no data:
+  /// the element then works without (e.g. with a cold start).
+  std::unique_ptr<ForceElementData> MakeData() const { return DoMakeData(); }
+
  protected:
   virtual void DoAddForces(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> f) const = 0;
   virtual void DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink* sink) const = 0;
@@ -177,6 +207,10 @@ class ForceElement {
     return false;
   }
   virtual bool DoReportsLoad() const { return false; }
+  virtual std::vector<ElementOutput> DoOutputs() const { return {}; }
+  virtual bool DoCalcOutputs(const ForceContext&, Eigen::Ref<Eigen::VectorXd>) const {
+    return false;
+  }
   virtual int DoNumStateSlots() const { return 0; }
   virtual int DoNumEventFunctions() const { return 0; }
   virtual void DoCalcEventFunctions(const ForceContext&, Eigen::Ref<Eigen::VectorXd>) const {}
@@ -190,6 +224,7 @@ class ForceElement {
   virtual double DoStateErrorWeight(int) const { return 1.0; }
   virtual double DoStateTolerance(int) const { return 1e-8; }
   virtual std::string DoStateName(int i) const { return "z[" + std::to_string(i) + "]"; }
+  virtual std::unique_ptr<ForceElementData> DoMakeData() const { return nullptr; }
 
  private:
   std::string name_;
