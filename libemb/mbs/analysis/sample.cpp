@@ -56,7 +56,7 @@ Sample MakeSample(const System& system, double t, const Eigen::VectorXd& q,
     probe->Eval(system, bodies, vdot, s.probes.segment(offset, probe->num_channels()));
     offset += probe->num_channels();
   }
-  s.energies = CalcEnergies(system, bodies, t, workspace);
+  s.energies = CalcEnergies(system, bodies, t, workspace, z);
   if (c.phi.size()) {
     s.position_residual = c.phi.cwiseAbs().maxCoeff();
     s.velocity_residual = (c.jacobian * v + c.phi_t).cwiseAbs().maxCoeff();

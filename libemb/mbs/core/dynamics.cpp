@@ -88,7 +88,7 @@ Eigen::VectorXd CalcGeneralizedForces(const System& system,
 }
 
 Energies CalcEnergies(const System& system, const std::vector<BodyKinematics>& bodies, double t,
-                      ConstraintWorkspace* workspace) {
+                      ConstraintWorkspace* workspace, const Eigen::VectorXd* z) {
   Energies e;
   const StateLayout& L = system.layout();
   for (int b = 1; b < system.num_bodies(); ++b) {
@@ -109,9 +109,13 @@ Energies CalcEnergies(const System& system, const std::vector<BodyKinematics>& b
   const auto& forces = system.force_elements();
   std::vector<MarkerKinematics> markers;
   if (!forces.empty()) CalcAllMarkerKinematics(system, bodies, &markers);
+  // The states' rates do not enter an energy or a power (a film's fill, a deflection do).
+  const Eigen::VectorXd no_rates = Eigen::VectorXd::Zero(z ? z->size() : 0);
   for (std::size_t k = 0; k < forces.size(); ++k) {
     ForceContext ctx{&system, &bodies, t, workspace, system.force_angle_slot(static_cast<int>(k))};
     ctx.markers = &markers;
+    const int offset = system.force_state_offset(static_cast<int>(k));
+    if (offset >= 0 && z != nullptr) ctx.z = z->data() + offset, ctx.z_dot = no_rates.data() + offset;
     e.elastic += forces[k]->CalcPotentialEnergy(ctx);
     e.dissipated_power += forces[k]->CalcDissipatedPower(ctx);
   }

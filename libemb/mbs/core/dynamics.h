@@ -63,8 +63,10 @@ struct Energies {
   double dissipated_power{0.0};  ///< [W], dampers
   double total() const { return kinetic + gravity + elastic; }
 };
-/// `workspace` (may be null) lets angle-following springs report energy across turns.
+/// `workspace` (may be null) lets angle-following springs report energy across turns; `z`
+/// (may be null: their steady states then) are the force elements' continuous states.
 Energies CalcEnergies(const System& system, const std::vector<BodyKinematics>& bodies, double t,
-                      ConstraintWorkspace* workspace = nullptr);
+                      ConstraintWorkspace* workspace = nullptr,
+                      const Eigen::VectorXd* z = nullptr);
 
 }  // namespace emb::mbs
