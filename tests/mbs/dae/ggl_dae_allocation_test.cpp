@@ -3,7 +3,7 @@
 // global operator new, on a model with every kind of term an engine run has (a flexible body
 // with interface markers, a revolute joint, a bushing, a spring-damper, a torsional
 // spring-damper, a journal bearing, an applied load with a time function, a Maxwell arm with a
-// state of its own, a driveline lash with a squeeze film and a clutch damper on a joint of the
+// state of its own, a finite-width film bearing with its film as states, a driveline lash with a squeeze film and a clutch damper on a joint of the
 // flexible body), over many states and over IDA steps.
 
 #include <gtest/gtest.h>
@@ -15,6 +15,7 @@
 
 #include "libemb/driveline/clutch_damper.h"
 #include "libemb/driveline/lash.h"
+#include "libemb/engine/film_bearing.h"
 #include "libemb/engine/journal_bearing.h"
 #include "libemb/integrators/ida_solver.h"
 #include "libemb/mbs/analysis/analysis.h"
@@ -118,6 +119,27 @@ mbs::System Model() {
                                                                     0.1, 0.0));
   // An element with a continuous state (force_element.h): its rows and blocks too.
   sys.AddForceElement(std::make_shared<mbs::MaxwellArm>("rubber", shaft, bore, 30.0, 0.05));
+  // A rotor in a finite-width film bearing with its JFO film as states (film_bearing.h): the
+  // film's residual, its five-point block and the marker and force-by-state blocks.
+  mbs::RigidBody rotor;
+  rotor.name = "rotor";
+  rotor.mass = 3.0;
+  rotor.inertia_B = Eigen::Vector3d(3e-3, 3e-3, 4e-3).asDiagonal();
+  rotor.p_WB = Eigen::Vector3d(-1.0, 0.5, 0.0);
+  rotor.omega_W = Eigen::Vector3d(0, 0, 300.0);
+  sys.AddBody(rotor);
+  const int journal = sys.AddMarker("journal", "rotor", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
+  const int shell = sys.AddMarker("shell", "ground", Eigen::Vector3d(-1.0, 0.5, 0.0),
+                                  Eigen::Matrix3d::Identity());
+  sys.AddJoint("rotor_plane", mbs::JointType::kPlanar, "journal", "shell");
+  tribology::ReynoldsBearingParameters film;
+  film.radius = 0.02;
+  film.length = 0.015;
+  film.clearance = 5e-5;
+  film.grid = {16, 4};
+  film.lubricant.viscosity = 0.01;
+  film.oil_holes.push_back({1.5, 0.0, 0.006, 2e5});
+  sys.AddForceElement(std::make_shared<mbs::FilmBearing>("film", journal, shell, film));
   // Driveline elements on the pin's rotation (a marker of the flexible bar): a lash whose stops
   // are far (open, its squeeze film resisting the approach) and a two-stage clutch damper.
   driveline::LashParameters lash;
@@ -151,6 +173,7 @@ mbs::System Model() {
 
 TEST(GglDaeAllocation, ResidualAndIterationMatrixAllocateNothing) {
   const mbs::System sys = Model();
+  ASSERT_EQ(sys.num_force_states(), 1 + 16 * 3);  // the arm's deflection, the film's grid
   // The caller's workspace (Model/Data): the DAE fills it and nothing else.
   mbs::GglWorkspace data(sys);
   const mbs::GglDae dae(sys, &data);
