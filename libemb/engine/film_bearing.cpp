@@ -71,7 +71,8 @@ bool CalcFilmBearingMotion(const MarkerKinematics& I, const MarkerKinematics& J,
   k.shell_speed = 0.0;
   if (!derivatives) return true;
 
-  MarkerPairDerivatives dm{DifferentiateMarker(I, 0, 2), DifferentiateMarker(J, 1, 2)};
+  MarkerPairDerivatives& dm = m->markers;
+  dm = {DifferentiateMarker(I, 0, 2), DifferentiateMarker(J, 1, 2)};
   const RelativeMotionDerivatives dr = DifferentiateRelativeMotion(rel, I, J, dm.dI, dm.dJ);
   using M3 = Eigen::Matrix<double, 3, 12>;
   const M3 w_x = dr.w_x, w_v = dr.w_v;
@@ -117,10 +118,9 @@ double FilmBearing::DoStateTolerance(int) const { return 1e-6; }
 
 std::string FilmBearing::DoStateName(int i) const {
   const tribology::BearingGrid& g = bearing_.grid();
-  const int column = i / g.num_rows(), row = i % g.num_rows() + 1;
   std::ostringstream o;
-  o << "bearing '" << name() << "' film u at phi = " << g.angle(column) << " rad, z = "
-    << g.axial(row) << " m";
+  o << "bearing '" << name() << "' film u at phi = " << g.angle(g.column_of(i)) << " rad, z = "
+    << g.axial(g.row_of(i)) << " m";
   return o.str();
 }
 
@@ -250,7 +250,7 @@ void FilmBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSink*
   const MarkerKinematics& J = ev.markers.J;
   const Motion& m = ev.motion;
   Data& d = *ev.d;
-  const auto [dI, dJ] = DifferentiateMarkerPair(ev.markers);
+  const auto& [dI, dJ] = m.markers;
   const Eigen::Matrix3d& R_WJ = J.R_WM;
   Eigen::Vector3d F, T;
   WorldWrench(R_WJ, d.loads, &F, &T);

@@ -56,6 +56,7 @@
 #include <Eigen/Dense>
 
 #include "libemb/mbs/core/force_element.h"
+#include "libemb/mbs/forces/relative_motion.h"
 #include "libemb/tribology/film_fields.h"
 #include "libemb/tribology/reynolds_bearing.h"
 
@@ -78,6 +79,7 @@ class FilmBearing final : public ForceElement {
     tribology::JournalKinematics kin;
     Eigen::Matrix<double, 4, 12> position_x;
     Eigen::Matrix<double, 6, 12> velocity_x, velocity_v;
+    MarkerPairDerivatives markers;  ///< the markers' own derivatives (slots 0 and 1)
   };
 
  protected:

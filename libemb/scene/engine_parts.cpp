@@ -4,6 +4,7 @@
 #include <memory>
 #include <sstream>
 
+#include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
 #include "libemb/engine/cylinder_pressure.h"
 #include "libemb/engine/film_bearing.h"
@@ -31,7 +32,10 @@ tribology::CavitationModel ParseCavitation(const std::string& word, const std::s
   if (word == "half-sommerfeld") return M::kHalfSommerfeld;
   if (word == "full-sommerfeld") return M::kFullSommerfeld;
   EMB_THROW(InputError, what << " cavitation: expected mass-conserving, reynolds, half-sommerfeld "
-                               "or full-sommerfeld, got '" << word << "'");
+                               "or full-sommerfeld, got '"
+                            << word << "'"
+                            << DidYouMean(word, {"mass-conserving", "reynolds", "half-sommerfeld",
+                                                 "full-sommerfeld"}));
 }
 
 // Each entry of the list at `key` (absent: none) as a MapReader of table `table`.
