@@ -19,6 +19,16 @@ double StorageThetaSlope(const FilmFields& film, const StorageInputs& st, int k)
   return 0.0;
 }
 
+// The storage's (and slack's) entry on the diagonal of column k: theta's share of the
+// storage, and for kDae with the smoothed switch the slope's own change A h s'(u) u_dot.
+double StorageDiagonal(const FilmFields& film, const FilmUnknowns& x, const StorageInputs& st,
+                       const ColumnWeights& w, int k) {
+  const double A = film.bearing().grid().node_area();
+  double d = A * StorageThetaSlope(film, st, k) * w.beta[k] + w.slack[k];
+  if (st.term == StorageTerm::kDae) d += A * film.film(k) * DaeStorageCurvature(x, st, k) * (*st.u_dot)[k];
+  return d;
+}
+
 // Calls add(row, col, value) for every entry of dr/du with the column weights; supply rows
 // get their identity entry only.
 template <class Add>
@@ -27,7 +37,7 @@ void FillGeneric(const FilmFields& film, const FilmUnknowns& x, const StorageInp
   const ReynoldsBearing& bearing = film.bearing();
   const BearingGrid& g = bearing.grid();
   const int N = g.num_circumferential(), m = g.num_rows();
-  const double U = film.surface_speed(), dz = g.dz(), A = g.node_area();
+  const double U = film.surface_speed(), dz = g.dz();
   auto put = [&](int row, int col, double v) {
     if (!bearing.is_supply(row)) add(row, col, v);
   };
@@ -64,7 +74,7 @@ void FillGeneric(const FilmFields& film, const FilmUnknowns& x, const StorageInp
       add(k, k, 1.0);
       continue;
     }
-    add(k, k, A * StorageThetaSlope(film, st, k) * w.beta[k] + w.slack[k]);
+    add(k, k, StorageDiagonal(film, x, st, w, k));
   }
 }
 
@@ -140,7 +150,7 @@ void FillFilmJacobian(const FilmFields& film, const FilmUnknowns& x, const Stora
   const ReynoldsBearing& bearing = film.bearing();
   const BearingGrid& g = bearing.grid();
   const int N = g.num_circumferential(), m = g.num_rows();
-  const double U = film.surface_speed(), dz = g.dz(), A = g.node_area();
+  const double U = film.surface_speed(), dz = g.dz();
   const std::vector<int>& feature = bearing.supply().feature;
   auto alpha = [&](int k) { return feature[k] < 0 ? w.alpha[k] : 0.0; };
   auto beta = [&](int k) { return feature[k] < 0 ? w.beta[k] : 0.0; };
@@ -184,7 +194,7 @@ void FillFilmJacobian(const FilmFields& film, const FilmUnknowns& x, const Stora
     double* D = lu->diagonal_block(i);
     for (int r = 0; r < m; ++r) {
       const int k = i * m + r;
-      D[r + r * m] += feature[k] >= 0 ? 1.0 : A * StorageThetaSlope(film, st, k) * w.beta[k] + w.slack[k];
+      D[r + r * m] += feature[k] >= 0 ? 1.0 : StorageDiagonal(film, x, st, w, k);
     }
   }
 }

@@ -11,7 +11,8 @@
 /// r_k = (net outflow of k) + storage_k, storage_k by StorageTerm:
 ///   kQuasiStatic    A theta_k dh_k/dt
 ///   kBackwardEuler  A (theta_k h_k - m_k^prev) / dt     (m = theta h, the film content)
-///   kDae            A (h_k s_k u_dot_k + theta_k dh_k/dt), s_k = DaeStorageSlope
+///   kDae            A (h_k s_k u_dot_k + theta_k dh_k/dt), s_k = DaeStorageSlope; its
+///                   u-derivative adds A h_k s'_k u_dot_k (DaeStorageCurvature) on the diagonal
 /// plus, for kReynolds, the complementarity slack sigma_k min(u_k, 0). A supply node's row is
 /// r_k = u_k - u_supply. Summed over all non-supply nodes the fluxes telescope: sum r =
 /// storage + side flow - supply flow, exactly (the discrete mass balance).
@@ -33,16 +34,21 @@ struct StorageInputs {
   const Eigen::VectorXd* previous_content{nullptr};  ///< kBackwardEuler: m^prev per unknown [m]
   double dt{0.0};                                     ///< kBackwardEuler [s]
   const Eigen::VectorXd* u_dot{nullptr};              ///< kDae [1/s]
-  /// kDae: kappa = p_ref / K, the full film's compressibility per unit u (K the lubricant's
-  /// bulk modulus; Elrod 1981): the full film stores A h kappa u. It keeps every film state
+  /// kDae: 1 / K, the full film's compressibility per unit of Psi (K the lubricant's bulk
+  /// modulus; Elrod 1981): the full film stores A h Psi / K. It keeps every film state
   /// differential, so that an implicit step across rupture has a solution (film_dae.h).
-  double compressibility{0.0};
+  double inverse_bulk_modulus{0.0};
 };
 
-/// kDae: d(content)/du / h, the storage's coefficient of h u_dot: dtheta/du in the cavity,
-/// the compressibility in the full film.
+/// kDae: d(content)/du / h, the storage's coefficient of h u_dot: dtheta/du + (dPsi/du) / K
+/// (1 in the cavity, p_ref / K in the full film, a blend in the smoothed switch's band).
 inline double DaeStorageSlope(const FilmUnknowns& x, const StorageInputs& st, int k) {
-  return x.dtheta_du[k] != 0.0 ? x.dtheta_du[k] : st.compressibility;
+  return x.dtheta_du[k] + x.dpsi_du[k] * st.inverse_bulk_modulus;
+}
+
+/// kDae: d(DaeStorageSlope)/du (non-zero only in the smoothed switch's band).
+inline double DaeStorageCurvature(const FilmUnknowns& x, const StorageInputs& st, int k) {
+  return x.d2theta_du2[k] + x.d2psi_du2[k] * st.inverse_bulk_modulus;
 }
 
 /// Flow totals of one residual evaluation [m^3/s].

@@ -11,7 +11,7 @@ FilmDae::FilmDae(const ReynoldsBearing& bearing) : bearing_(&bearing), film_(bea
   x_.Resize(bearing.num_unknowns());
   r_.setZero(bearing.num_unknowns());
   storage_.term = StorageTerm::kDae;
-  storage_.compressibility = bearing.parameters().pressure_scale / bearing.parameters().bulk_modulus;
+  storage_.inverse_bulk_modulus = 1.0 / bearing.parameters().bulk_modulus;
 }
 
 FilmSolveInfo FilmDae::Prepare(const Eigen::VectorXd& u, const Eigen::VectorXd& u_dot,

@@ -11,7 +11,7 @@ namespace emb::tribology {
 
 void FilmUnknowns::Resize(int n) {
   for (auto* v : {&psi, &theta, &pressure, &dp_dpsi, &dpsi_du, &dtheta_du, &dslack_du, &slack,
-                  &slack_scale})
+                  &slack_scale, &d2psi_du2, &d2theta_du2})
     v->assign(n, 0.0);
 }
 
@@ -155,6 +155,7 @@ bool SetUnknownsFromPairs(const ReynoldsBearing& bearing, const FilmFields& film
   const bool jfo = bearing.parameters().cavitation == CavitationModel::kMassConserving;
   for (int k = 0; k < bearing.num_unknowns(); ++k) {
     const bool pressurised = a[k] - b[k] >= 0.0;
+    x->d2psi_du2[k] = x->d2theta_du2[k] = 0.0;
     x->psi[k] = pref * a[k];
     x->dpsi_du[k] = pressurised ? pref : 0.0;
     if (jfo) {
@@ -178,8 +179,23 @@ bool SetUnknownsFromUniversal(const ReynoldsBearing& bearing, const FilmFields& 
   const CavitationModel model = bearing.parameters().cavitation;
   const bool full_film =
       model == CavitationModel::kFullSommerfeld || model == CavitationModel::kHalfSommerfeld;
+  const double w = model == CavitationModel::kMassConserving ? bearing.parameters().switch_width : 0.0;
   for (int k = 0; k < bearing.num_unknowns(); ++k) {
     const double uk = u[k];
+    x->d2psi_du2[k] = x->d2theta_du2[k] = 0.0;
+    if (std::abs(uk) < w) {
+      // The smoothed switch: P = (u + w)^2 / (4 w) with P' = (u + w) / (2 w), matching
+      // max(u, 0) in value and slope at u = -w and u = w; theta = 1 + u - P.
+      const double P = (uk + w) * (uk + w) / (4.0 * w), dP = (uk + w) / (2.0 * w);
+      x->psi[k] = pref * P;
+      x->dpsi_du[k] = pref * dP;
+      x->theta[k] = 1.0 + uk - P;
+      x->dtheta_du[k] = 1.0 - dP;
+      x->slack[k] = x->dslack_du[k] = 0.0;
+      x->d2psi_du2[k] = pref / (2.0 * w);
+      x->d2theta_du2[k] = -1.0 / (2.0 * w);
+      continue;
+    }
     const bool pressurised = full_film || uk >= 0.0;
     x->psi[k] = pressurised ? pref * uk : 0.0;
     x->dpsi_du[k] = pressurised ? pref : 0.0;

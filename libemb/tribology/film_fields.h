@@ -96,6 +96,9 @@ struct FilmUnknowns {
   /// Column weights of the Jacobian: dPsi/du, dtheta/du (transport), d(slack)/du (the
   /// Swift-Stieber complementarity column of kReynolds).
   std::vector<double> dpsi_du, dtheta_du, dslack_du;
+  /// Second derivatives of the smoothed switch (ReynoldsBearingParameters::switch_width):
+  /// p_ref / (2 w) and -1 / (2 w) inside its band, else 0.
+  std::vector<double> d2psi_du2, d2theta_du2;
   /// Slack term added to the residual (kReynolds): sigma_k min(u_k, 0).
   std::vector<double> slack;
   std::vector<double> slack_scale;  ///< sigma_k [m^3/s]

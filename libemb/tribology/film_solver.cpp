@@ -15,6 +15,9 @@ constexpr double kFischerBurmeisterTolerance = 1e-12;
 // phi_FB is not differentiable at (0, 0); its generalised derivative there (both partials
 // 1 - 1/sqrt(2)) is taken below this radius.
 constexpr double kFischerBurmeisterKink = 1e-14;
+// The smoothed switch's Newton stops when its steps in the band are below this fraction of
+// max(1, |u|) (NewtonSwitch).
+constexpr double kSmoothedSwitchStep = 1e-10;
 
 bool Cavitating(CavitationModel m) {
   return m == CavitationModel::kMassConserving || m == CavitationModel::kReynolds;
@@ -99,6 +102,8 @@ FilmSolveInfo FilmSolver::NewtonSwitch(const StorageInputs& st, FilmSolveInfo in
   const ReynoldsBearing& b = *bearing_;
   const bool cavitating = Cavitating(b.parameters().cavitation);
   const int n = b.num_unknowns();
+  const double w =
+      b.parameters().cavitation == CavitationModel::kMassConserving ? b.parameters().switch_width : 0.0;
   for (int it = 0; it < b.parameters().max_iterations; ++it) {
     if (!SetUnknownsFromUniversal(b, film_, u_, &x_))
       return Fail(FilmStatus::kBeyondViscosityLaw,
@@ -113,10 +118,18 @@ FilmSolveInfo FilmSolver::NewtonSwitch(const StorageInputs& st, FilmSolveInfo in
                             "transport: zero mean surface speed?)", info);
     rhs_ = -r_;
     lu_.Solve(rhs_.data());
+    // Exact switch: the equations are linear in u on each sign pattern, so a step that
+    // changes no sign has solved them. Smoothed switch: also quadratic within the band, so
+    // the step itself must have become round-off there (1e-10 of u: 1e-4 Pa, 1e-10 of fill).
     int changed = 0;
     for (int k = 0; k < n; ++k) {
       const double un = u_[k] + rhs_[k];
-      if (cavitating && !b.is_supply(k) && ((un >= 0.0) != (u_[k] >= 0.0))) ++changed;
+      if (cavitating && !b.is_supply(k)) {
+        if ((un >= 0.0) != (u_[k] >= 0.0)) ++changed;
+        if (std::min(std::abs(un), std::abs(u_[k])) < w &&
+            std::abs(rhs_[k]) > kSmoothedSwitchStep * std::max(1.0, std::abs(un)))
+          ++changed;
+      }
       u_[k] = un;
     }
     if (!cavitating || changed == 0) return info;

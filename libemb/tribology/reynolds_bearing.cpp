@@ -53,6 +53,11 @@ ReynoldsBearing::ReynoldsBearing(std::string name, const ReynoldsBearingParamete
                who_ << ": expected a positive pressure_scale, got " << p.pressure_scale << " Pa");
   EMB_THROW_IF(!(std::isfinite(p.bulk_modulus) && p.bulk_modulus > 0.0),
                who_ << ": expected a positive bulk_modulus, got " << p.bulk_modulus << " Pa");
+  EMB_THROW_IF(!(p.switch_width >= 0.0 && p.switch_width <= 0.5),
+               who_ << ": expected a switch_width in [0, 0.5], got " << p.switch_width);
+  EMB_THROW_IF(p.switch_width > 0.0 && p.complementarity != ComplementaritySolver::kElrodAdamsSwitch,
+               who_ << ": a smoothed switch (switch_width " << p.switch_width
+                    << ") expected the Elrod-Adams switch solver, got Fischer-Burmeister");
   EMB_THROW_IF(!(std::isfinite(p.film_floor) && p.film_floor > 0.0),
                who_ << ": expected a positive film_floor, got " << p.film_floor);
   EMB_THROW_IF(p.max_iterations < 1,

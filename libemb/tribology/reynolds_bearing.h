@@ -59,6 +59,12 @@ struct ReynoldsBearingParameters {
   /// K: the lubricant's bulk modulus [Pa], for the film as DAE states only (film_dae.h: the
   /// full film's compressibility; 1.5 GPa, a mineral oil near ambient pressure).
   double bulk_modulus{1.5e9};
+  /// w: half-width of the smoothed JFO switch in u (T5; mass-conserving only). 0 is the exact
+  /// kink: Psi = p_ref max(u, 0), theta = 1 + min(u, 0). With w > 0 the two blend as a
+  /// quadratic over |u| < w (C1: the implicit integrator's Newton iteration sees continuous
+  /// slopes where film nodes rupture and reform); outside the band both are exact, and
+  /// inside the pressure is at most p_ref w and 1 - theta at most w.
+  double switch_width{0.0};
   /// Newton iterations allowed per evaluation (each one factorisation).
   int max_iterations{50};
 };

@@ -13,8 +13,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "libemb/common/error.h"
 #include "libemb/engine/film_bearing.h"
@@ -303,11 +306,10 @@ INSTANTIATE_TEST_SUITE_P(Models, FilmBearingRotor,
                                                                            : std::string("JfoStates");
                          });
 
-TEST(FilmBearing, JournalDrivenIntoTheShellIsAFailedRunNamingTheBearing) {
-  // A journal on a slider driven down at 1 mm/s through its 30 um clearance (a squeeze film
-  // alone never lets a loaded journal touch: it must be driven). Guide markers with z along
-  // -y world: the translational joint's travel is the slider's drop.
-  const tribology::ReynoldsBearingParameters bp = Main(CavitationModel::kReynolds);
+// A journal on a slider driven down at 1 mm/s through its 30 um clearance (a squeeze film
+// alone never lets a loaded journal touch: it must be driven). Guide markers with z along
+// -y world: the translational joint's travel is the slider's drop.
+System DrivenSlider(const tribology::ReynoldsBearingParameters& bp) {
   System s;
   RigidBody b;
   b.name = "slider";
@@ -326,14 +328,23 @@ TEST(FilmBearing, JournalDrivenIntoTheShellIsAFailedRunNamingTheBearing) {
   s.AddForceElement(std::make_shared<FilmBearing>("main", s.FindMarker("journal"),
                                                   s.FindMarker("bore"), bp));
   s.Finalize();
+  return s;
+}
+
+RunResult RunSlider(const System& s, double t_end, const std::function<void(const Sample&)>& on_sample) {
   AnalysisSettings settings;
   settings.type = AnalysisType::kDynamic;
-  settings.t_end = 0.05;
+  settings.t_end = t_end;
   settings.output_step = 0.001;
   const PreparedRun run = PrepareRun(s, settings);
   ThrowIfNotReady(run, "slider");
+  return RunAnalysis(run, settings, on_sample);
+}
+
+TEST(FilmBearing, JournalDrivenIntoTheShellIsAFailedRunNamingTheBearing) {
+  const System s = DrivenSlider(Main(CavitationModel::kReynolds));
   double last = 0.0;
-  const RunResult result = RunAnalysis(run, settings, [&](const Sample& smp) { last = smp.t; });
+  const RunResult result = RunSlider(s, 0.05, [&](const Sample& smp) { last = smp.t; });
   ASSERT_FALSE(result.ok());
   EXPECT_NE(result.message.find("'main'"), std::string::npos) << result.message;
   EXPECT_NE(result.message.find("t = "), std::string::npos) << result.message;
@@ -341,6 +352,48 @@ TEST(FilmBearing, JournalDrivenIntoTheShellIsAFailedRunNamingTheBearing) {
   EXPECT_GE(last, 0.02);
   EXPECT_LT(last, 0.026);
 }
+
+// The same slider with Greenwood-Tripp asperity contact (sigma 0.4 um) runs on through the
+// clearance, with the film's states and without: the contact force is zero while the film is
+// thicker than 6 sigma (the tabulated F_5/2 is 0 above 6) and carries the journal once it has
+// closed, and the contact output is a channel.
+class FilmBearingContact : public ::testing::TestWithParam<CavitationModel> {};
+
+TEST_P(FilmBearingContact, AsperityContactCarriesTheJournalThroughItsClearance) {
+  tribology::ReynoldsBearingParameters bp = Main(GetParam());
+  bp.asperity_contact = tribology::AsperityContactParameters{};
+  bp.asperity_contact->roughness = 0.4e-6;
+  bp.asperity_contact->composite_modulus = 2.2e11;
+  const System s = DrivenSlider(bp);
+  const std::vector<ElementOutput> outputs = s.force_elements().front()->outputs();
+  int contact = -1;
+  for (std::size_t k = 0; k < outputs.size(); ++k)
+    if (outputs[k].name == "contact_force") contact = static_cast<int>(k);
+  ASSERT_GE(contact, 0);
+  std::vector<std::pair<double, double>> samples;  // (t, contact force)
+  const RunResult result = RunSlider(s, 0.03, [&](const Sample& smp) {
+    samples.emplace_back(smp.t, smp.force_outputs[contact]);
+  });
+  ASSERT_TRUE(result.ok()) << result.message;
+  ASSERT_FALSE(samples.empty());
+  EXPECT_NEAR(samples.back().first, 0.03, 1e-12);
+  for (const auto& [t, f] : samples) {
+    const double h_min = 30e-6 - (5e-6 + 1e-3 * t);
+    if (h_min > 6.0 * 0.4e-6) {
+      EXPECT_EQ(f, 0.0) << "t = " << t;
+    }
+  }
+  // At 30 ms the journal is 5 um beyond its nominal clearance: the asperities carry it.
+  EXPECT_GT(samples.back().second, 1e3) << "N";
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, FilmBearingContact,
+                         ::testing::Values(CavitationModel::kReynolds,
+                                           CavitationModel::kMassConserving),
+                         [](const auto& info) {
+                           return info.param == CavitationModel::kReynolds ? std::string("SwiftStieber")
+                                                                           : std::string("JfoStates");
+                         });
 
 TEST(FilmBearing, BadParametersNameTheBearingAndTheKey) {
   tribology::ReynoldsBearingParameters p = Main(CavitationModel::kMassConserving);

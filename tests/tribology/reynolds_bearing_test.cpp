@@ -112,6 +112,14 @@ TEST(ReynoldsBearing, RefusesBadNumericalSettings) {
   ExpectInputError([](auto& p) { p.pressure_scale = 0.0; }, "pressure_scale");
   ExpectInputError([](auto& p) { p.max_iterations = 0; }, "max_iterations");
   ExpectInputError([](auto& p) { p.film_floor = -1.0; }, "film_floor");
+  ExpectInputError([](auto& p) { p.switch_width = 0.6; }, "switch_width");
+  ExpectInputError([](auto& p) { p.switch_width = -0.01; }, "switch_width");
+  ExpectInputError(
+      [](auto& p) {
+        p.switch_width = 0.01;
+        p.complementarity = ComplementaritySolver::kFischerBurmeister;
+      },
+      "Fischer-Burmeister");
   ExpectInputError(
       [](auto& p) {
         p.asperity_contact = AsperityContactParameters{};  // roughness 0
