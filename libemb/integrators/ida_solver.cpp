@@ -13,6 +13,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/integrators/klu_linear_solver.h"
+#include "libemb/integrators/refreshing_newton.h"
 
 namespace emb {
 
@@ -69,6 +70,7 @@ struct IdaSolver::Impl {
   N_Vector y{nullptr}, yp{nullptr}, id{nullptr}, scratch{nullptr}, error{nullptr};
   SUNMatrix a{nullptr};
   SUNLinearSolver ls{nullptr};
+  SUNNonlinearSolver nls{nullptr};  // ours (refreshing_newton.h), or null: IDA's own
   std::exception_ptr pending;  // an exception thrown inside a callback, re-thrown later
   std::string last_message;
   // KLU: the problem's compressed-column iteration matrix (structure fixed at set-up).
@@ -76,6 +78,7 @@ struct IdaSolver::Impl {
 
   ~Impl() {
     if (mem) IDAFree(&mem);
+    if (nls) SUNNonlinSolFree(nls);
     if (ls) SUNLinSolFree(ls);
     if (a) SUNMatDestroy(a);
     for (N_Vector v : {y, yp, id, scratch, error})
@@ -240,6 +243,11 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
     CheckSetup(IDASetLinearSolver(m.mem, m.ls, m.a), "IDASetLinearSolver");
     if (options.use_analytic_jacobian && problem.has_jacobian())
       CheckSetup(IDASetJacFn(m.mem, &Impl::Jacobian), "IDASetJacFn");
+  }
+  if (options.newton_refreshes > 0) {
+    m.nls = CheckPtr(MakeRefreshingNewton(m.y, m.ctx, options.newton_refreshes),
+                     "MakeRefreshingNewton");
+    CheckSetup(IDASetNonlinearSolver(m.mem, m.nls), "IDASetNonlinearSolver");
   }
   t_ = t0;
   y_ = y0;

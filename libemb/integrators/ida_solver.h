@@ -45,6 +45,11 @@ struct IdaOptions {
   /// relaxations), 0.03 took 25-40 % fewer steps than 0.33, was more accurate, and removed
   /// stalls of hundreds of order-1 steps with an error-test failure each.
   double newton_convergence_factor{0.33};
+  /// Corrector: 0 is IDA's own Newton solver (modified Newton; on a failure a new iteration
+  /// matrix at the predictor, then a quarter step). N > 0: Newton that re-evaluates the matrix
+  /// at the current iterate when the iteration stalls, up to N times per corrector solve
+  /// (refreshing_newton.h), for Jacobians that change abruptly within a step.
+  int newton_refreshes{0};
   /// Exclude algebraic components (mask 0) from the local error test. Required for
   /// index-2 formulations (GGL): the multipliers are not accurate to the tolerance.
   bool suppress_algebraic{true};

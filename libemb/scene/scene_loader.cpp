@@ -355,12 +355,15 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   s->output_step = r.GetDouble("output_step", s->output_step, R::Positive("s"));
   s->ida.rtol = r.GetDouble("rtol", s->ida.rtol, R::Open(0.0, 1.0));
   s->ida.atol = r.GetDouble("atol", s->ida.atol, R::Positive());
+  s->velocity_atol = r.GetDouble("velocity_atol", s->velocity_atol, R::NonNegative());
+  s->ida.stop_at_outputs = r.GetBool("stop_at_outputs", s->ida.stop_at_outputs);
   s->atol_floor_relative =
       r.GetDouble("atol_floor_relative", s->atol_floor_relative, R::Closed(0.0, 1.0));
   s->initial_step_fraction =
       r.GetDouble("initial_step_fraction", s->initial_step_fraction, R::Closed(0.0, 1.0));
   s->newton_convergence_factor = r.GetDouble(
       "newton_convergence_factor", s->newton_convergence_factor, R::Open(0.0, 1.0));
+  s->newton_refreshes = r.GetInt("newton_refreshes", s->newton_refreshes, -1, 10);
   s->multiplier_atol = r.GetDouble("multiplier_atol", s->multiplier_atol, R::NonNegative("N"));
   if (r.Has("multiplier_atol_relative"))
     s->multiplier_atol_relative = r.GetDouble("multiplier_atol_relative", R::Open(0.0, 1.0));

@@ -524,6 +524,9 @@ ANALYSIS_BAD = {
     "static_iterations": {"zero": "0", "huge": "1e20"},
     "remove_redundant": {"text": "maybe"},
     "modal_velocity_atol_by_frequency": {"number": "3"},
+    "velocity_atol": {"neg": "-1", "nan": ".nan"},
+    "stop_at_outputs": {"text": "maybe"},
+    "newton_refreshes": {"neg": "-2", "huge": "11", "fraction": "1.5"},
     "linear_solver": {"bad": "lu"},
     "type": {"bad": "transient"},
 }

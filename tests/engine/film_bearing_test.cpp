@@ -306,6 +306,39 @@ INSTANTIATE_TEST_SUITE_P(Models, FilmBearingRotor,
                                                                            : std::string("JfoStates");
                          });
 
+// The film rotor's first 20 ms (the journal falls from near the centre, the cavity forms)
+// with IDA's own corrector and with the refreshing one (AnalysisSettings::newton_refreshes,
+// the default with film states): the same motion, with fewer corrector failures and steps
+// (measured: 630 failures and 1,417 steps against 128 and 730).
+TEST(FilmBearing, RefreshingCorrectorCrossesTheFilmsSwitchesWithFewerFailures) {
+  tribology::ReynoldsBearingParameters bp = Main(CavitationModel::kMassConserving);
+  bp.oil_holes.push_back({kPi / 2, 0.0, 6e-3, 0.3e6});
+  bp.switch_width = 0.01;
+  const System s = Rotor(bp, Vector2d(0.0, -5e-6));
+  auto run = [&](int refreshes) {
+    AnalysisSettings settings;
+    settings.type = AnalysisType::kDynamic;
+    settings.t_end = 0.02;
+    settings.output_step = 0.001;
+    settings.newton_refreshes = refreshes;
+    const PreparedRun prepared = PrepareRun(s, settings);
+    ThrowIfNotReady(prepared, "rotor");
+    const int b = s.FindBody("rotor");
+    Vector2d e = Vector2d::Zero();
+    const RunResult result = RunAnalysis(prepared, settings, [&](const Sample& smp) {
+      e = smp.q.segment<2>(s.layout().position(b));
+    });
+    EXPECT_TRUE(result.ok()) << result.message;
+    return std::pair{e, result.ida_stats};
+  };
+  const auto [e_own, own] = run(0);
+  const auto [e_refresh, refresh] = run(-1);
+  // Both runs at rtol 1e-6: the journal's position agrees to well within 1e-3 c.
+  EXPECT_LT((e_own - e_refresh).norm(), 1e-3 * bp.clearance);
+  EXPECT_LT(2 * refresh.nonlinear_convergence_failures, own.nonlinear_convergence_failures);
+  EXPECT_LT(refresh.steps, own.steps);
+}
+
 // A journal on a slider driven down at 1 mm/s through its 30 um clearance (a squeeze film
 // alone never lets a loaded journal touch: it must be driven). Guide markers with z along
 // -y world: the translational joint's travel is the slider's drop.

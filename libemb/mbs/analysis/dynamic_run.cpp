@@ -14,19 +14,24 @@
 
 namespace emb::mbs::internal {
 
-// IDA's absolute tolerances per unknown: atol on q and v, algebraic_atol on lambda and mu,
-// and atol * max(1, w_j) on the modal velocities of flexible bodies
-// (AnalysisSettings::modal_velocity_atol_by_frequency), and each force element's own on its
-// continuous states (ForceElement::StateTolerance). Empty without flexible bodies and states.
+// IDA's absolute tolerances per unknown: atol on q and v (velocity_atol on the rigid
+// velocities when > 0), algebraic_atol on lambda and mu, atol * max(1, w_j) on the modal
+// velocities of flexible bodies (AnalysisSettings::modal_velocity_atol_by_frequency), and
+// each force element's own on its continuous states (ForceElement::StateTolerance). Empty
+// without flexible bodies, states and a velocity atol.
 Eigen::VectorXd ComponentTolerances(const System& sys, const GglLayout& G,
-                                    const IdaOptions& options) {
+                                    const IdaOptions& options, double velocity_atol,
+                                    bool modal_by_frequency) {
   const StateLayout& L = sys.layout();
   bool flexible = false;
   for (int b = 1; b < sys.num_bodies(); ++b) flexible = flexible || L.num_elastic(b) > 0;
-  if (!flexible && G.nz() == 0) return {};
+  if (!flexible && G.nz() == 0 && !(velocity_atol > 0.0)) return {};
   Eigen::VectorXd atol = Eigen::VectorXd::Constant(G.size(), options.algebraic_atol);
   atol.head(G.nq() + G.nv()).setConstant(options.atol);
-  for (int b = 1; b < sys.num_bodies(); ++b) {
+  if (velocity_atol > 0.0)
+    for (int b = 1; b < sys.num_bodies(); ++b)
+      atol.segment<6>(G.v() + L.velocity(b)).setConstant(velocity_atol);
+  for (int b = 1; b < sys.num_bodies() && modal_by_frequency; ++b) {
     if (L.num_elastic(b) == 0) continue;
     const Eigen::VectorXd& f = sys.body(b).elastic->frequencies_hz;
     if (f.size() != L.num_elastic(b)) continue;  // a model without frequencies: unscaled
@@ -73,6 +78,15 @@ Eigen::VectorXd ErrorTestMask(const System& sys, const GglLayout& G) {
     }
   }
   return any ? mask : Eigen::VectorXd();
+}
+
+// Whether a force element has continuous states outside the local error test (their
+// Jacobian may change abruptly within a step: AnalysisSettings::newton_refreshes).
+static bool HasUntestedStates(const System& sys) {
+  for (const auto& f : sys.force_elements())
+    for (int j = 0; j < f->num_continuous_states(); ++j)
+      if (!(f->StateErrorWeight(j) > 0.0)) return true;
+  return false;
 }
 
 // The integrator of the settings on the GGL DAE from consistent (y, y').
@@ -194,13 +208,17 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
                         settings.multiplier_atol_rtol_factor * options.rtol)) *
         force_scale;
   }
-  if (settings.modal_velocity_atol_by_frequency && options.component_atol.size() == 0)
-    options.component_atol = ComponentTolerances(sys, G, options);
+  if ((settings.modal_velocity_atol_by_frequency || settings.velocity_atol > 0.0) &&
+      options.component_atol.size() == 0)
+    options.component_atol = ComponentTolerances(sys, G, options, settings.velocity_atol,
+                                                 settings.modal_velocity_atol_by_frequency);
   if (options.initial_step <= 0.0 && settings.initial_step_fraction > 0.0)
     options.initial_step = settings.initial_step_fraction *
                            std::min(settings.output_step, settings.t_end - settings.t_start);
   options.stop_time = settings.t_end;
   options.newton_convergence_factor = settings.newton_convergence_factor;
+  options.newton_refreshes = settings.newton_refreshes >= 0 ? settings.newton_refreshes
+                                                            : (HasUntestedStates(sys) ? 1 : 0);
   r.atol = options.atol;
   r.multiplier_atol = options.algebraic_atol;
   const std::unique_ptr<DaeIntegrator> integrator =
