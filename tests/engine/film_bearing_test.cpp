@@ -16,6 +16,7 @@
 #include <functional>
 #include <memory>
 #include <numbers>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -252,6 +253,11 @@ System Rotor(const tribology::ReynoldsBearingParameters& bp, const Vector2d& e0)
   return s;
 }
 
+// The two ways a film is in a run: quasi-static (Swift-Stieber) or as states (JFO).
+std::string ModelName(const ::testing::TestParamInfo<CavitationModel>& info) {
+  return info.param == CavitationModel::kReynolds ? "SwiftStieber" : "JfoStates";
+}
+
 class FilmBearingRotor : public ::testing::TestWithParam<CavitationModel> {};
 
 TEST_P(FilmBearingRotor, SettlesWhereTheFilmCarriesTheWeight) {
@@ -301,10 +307,7 @@ TEST_P(FilmBearingRotor, SettlesWhereTheFilmCarriesTheWeight) {
 INSTANTIATE_TEST_SUITE_P(Models, FilmBearingRotor,
                          ::testing::Values(CavitationModel::kReynolds,
                                            CavitationModel::kMassConserving),
-                         [](const auto& info) {
-                           return info.param == CavitationModel::kReynolds ? std::string("SwiftStieber")
-                                                                           : std::string("JfoStates");
-                         });
+                         ModelName);
 
 // The film rotor's first 20 ms (the journal falls from near the centre, the cavity forms)
 // with IDA's own corrector and with the refreshing one (AnalysisSettings::newton_refreshes,
@@ -423,10 +426,7 @@ TEST_P(FilmBearingContact, AsperityContactCarriesTheJournalThroughItsClearance) 
 INSTANTIATE_TEST_SUITE_P(Models, FilmBearingContact,
                          ::testing::Values(CavitationModel::kReynolds,
                                            CavitationModel::kMassConserving),
-                         [](const auto& info) {
-                           return info.param == CavitationModel::kReynolds ? std::string("SwiftStieber")
-                                                                           : std::string("JfoStates");
-                         });
+                         ModelName);
 
 TEST(FilmBearing, BadParametersNameTheBearingAndTheKey) {
   tribology::ReynoldsBearingParameters p = Main(CavitationModel::kMassConserving);
