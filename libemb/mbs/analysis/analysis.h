@@ -69,7 +69,7 @@ struct AnalysisSettings {
   /// Absolute tolerance of the rigid bodies' velocities (m/s, rad/s) when > 0; 0: ida.atol
   /// like the positions. Positions and rates need not share one: a film bearing needs the
   /// journal's position to a fraction of a micrometre, but nothing of the film needs tilt
-  /// rates to 1e-9 rad/s (docs/reference/tribology.md: 2.4x fewer steps at 1e-7).
+  /// rates to 1e-9 rad/s (docs/reference/tribology.md; measurements in issue 30).
   double velocity_atol{0.0};
   DynamicIntegrator integrator{DynamicIntegrator::kIda};
   /// Generalized-alpha: spectral radius at h omega -> infinity, [0, 1] (generalized_alpha.h).
@@ -122,7 +122,7 @@ struct AnalysisSettings {
   /// Dynamic analysis with IDA: IdaOptions::newton_refreshes. -1 (auto): 1 when a force
   /// element has continuous states outside the error test (a JFO film, whose Jacobian
   /// changes abruptly where nodes switch between pressure and fill fraction), else 0.
-  /// Measured on a film-bearing rotor: 2x fewer steps (tribology docs).
+  /// FilmBearing.RefreshingCorrectorCrossesTheFilmsSwitchesWithFewerFailures.
   int newton_refreshes{-1};
   /// IDA's first step as a fraction of the output step (used when ida.initial_step is 0;
   /// 0 leaves the first step to IDA's own estimate).

@@ -12,6 +12,8 @@
 #include <cerrno>
 #include <cstdlib>
 #include <memory>
+#include <string>
+#include <utility>
 
 #include "libemb/driveline/clutch_damper.h"
 #include "libemb/driveline/lash.h"
@@ -88,6 +90,25 @@ int posix_memalign(void** out, std::size_t alignment, std::size_t size) {
 namespace emb {
 namespace {
 
+// A rigid rotor at p spinning about z at omega [rad/s], held in its plane by a planar joint
+// between a marker at its centre and one on the ground there: (rotor marker, ground marker).
+std::pair<int, int> AddSpinningRotor(mbs::System* sys, const std::string& name,
+                                     const std::string& rotor_marker,
+                                     const std::string& ground_marker, const Eigen::Vector3d& p,
+                                     double mass, const Eigen::Vector3d& inertia, double omega) {
+  mbs::RigidBody b;
+  b.name = name;
+  b.mass = mass;
+  b.inertia_B = inertia.asDiagonal();
+  b.p_WB = p;
+  b.omega_W = Eigen::Vector3d(0, 0, omega);
+  sys->AddBody(b);
+  const int on_rotor = sys->AddMarker(rotor_marker, name, Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
+  const int on_ground = sys->AddMarker(ground_marker, "ground", p, Eigen::Matrix3d::Identity());
+  sys->AddJoint(name + "_plane", mbs::JointType::kPlanar, rotor_marker, ground_marker);
+  return {on_rotor, on_ground};
+}
+
 // A flexible bar pinned at x0, spinning about the pin, held at x1 by a bushing and a
 // spring-damper to the ground, with a rigid disc on a journal bearing beside it whose shaft is
 // loaded by a harmonic force, a torsional spring and a Maxwell arm (a state of its own).
@@ -98,17 +119,8 @@ mbs::System Model() {
   sys.AddForceElement(std::make_shared<mbs::TranslationalSpringDamper>("tip_spring", tip, spring_end,
                                                                        2.0e3, 5.0, 0.01));
   // A disc on a journal bearing (Ocvirk), its shaft axis z, spinning.
-  mbs::RigidBody disc;
-  disc.name = "disc";
-  disc.mass = 2.0;
-  disc.inertia_B = Eigen::Vector3d(2e-3, 2e-3, 3e-3).asDiagonal();
-  disc.p_WB = Eigen::Vector3d(1.0, 0.5, 0.0);
-  disc.omega_W = Eigen::Vector3d(0, 0, 200.0);
-  sys.AddBody(disc);
-  const int shaft = sys.AddMarker("shaft", "disc", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  const int bore = sys.AddMarker("bore", "ground", Eigen::Vector3d(1.0, 0.5, 0.0),
-                                 Eigen::Matrix3d::Identity());
-  sys.AddJoint("disc_plane", mbs::JointType::kPlanar, "shaft", "bore");
+  const auto [shaft, bore] = AddSpinningRotor(&sys, "disc", "shaft", "bore", Eigen::Vector3d(1.0, 0.5, 0.0),
+                                              2.0, Eigen::Vector3d(2e-3, 2e-3, 3e-3), 200.0);
   mbs::JournalBearingParameters jb;
   jb.radius = 0.02;
   jb.length = 0.015;
@@ -121,17 +133,9 @@ mbs::System Model() {
   sys.AddForceElement(std::make_shared<mbs::MaxwellArm>("rubber", shaft, bore, 30.0, 0.05));
   // A rotor in a finite-width film bearing with its JFO film as states (film_bearing.h): the
   // film's residual, its five-point block and the marker and force-by-state blocks.
-  mbs::RigidBody rotor;
-  rotor.name = "rotor";
-  rotor.mass = 3.0;
-  rotor.inertia_B = Eigen::Vector3d(3e-3, 3e-3, 4e-3).asDiagonal();
-  rotor.p_WB = Eigen::Vector3d(-1.0, 0.5, 0.0);
-  rotor.omega_W = Eigen::Vector3d(0, 0, 300.0);
-  sys.AddBody(rotor);
-  const int journal = sys.AddMarker("journal", "rotor", Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  const int shell = sys.AddMarker("shell", "ground", Eigen::Vector3d(-1.0, 0.5, 0.0),
-                                  Eigen::Matrix3d::Identity());
-  sys.AddJoint("rotor_plane", mbs::JointType::kPlanar, "journal", "shell");
+  const auto [journal, shell] = AddSpinningRotor(&sys, "rotor", "journal", "shell",
+                                                 Eigen::Vector3d(-1.0, 0.5, 0.0), 3.0,
+                                                 Eigen::Vector3d(3e-3, 3e-3, 4e-3), 300.0);
   tribology::ReynoldsBearingParameters film;
   film.radius = 0.02;
   film.length = 0.015;
