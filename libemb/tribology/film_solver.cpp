@@ -121,18 +121,18 @@ FilmSolveInfo FilmSolver::NewtonSwitch(const StorageInputs& st, FilmSolveInfo in
     // Exact switch: the equations are linear in u on each sign pattern, so a step that
     // changes no sign has solved them. Smoothed switch: also quadratic within the band, so
     // the step itself must have become round-off there (1e-10 of u: 1e-4 Pa, 1e-10 of fill).
-    int changed = 0;
+    int unsettled = 0;  // nodes that changed sign, or still moved within the band
     for (int k = 0; k < n; ++k) {
       const double un = u_[k] + rhs_[k];
       if (cavitating && !b.is_supply(k)) {
-        if ((un >= 0.0) != (u_[k] >= 0.0)) ++changed;
+        if ((un >= 0.0) != (u_[k] >= 0.0)) ++unsettled;
         if (std::min(std::abs(un), std::abs(u_[k])) < w &&
             std::abs(rhs_[k]) > kSmoothedSwitchStep * std::max(1.0, std::abs(un)))
-          ++changed;
+          ++unsettled;
       }
       u_[k] = un;
     }
-    if (!cavitating || changed == 0) return info;
+    if (!cavitating || unsettled == 0) return info;
   }
   std::ostringstream os;
   os << b.who() << ": the cavitation pattern did not settle in " << b.parameters().max_iterations
