@@ -15,7 +15,8 @@ scheduler's `kill` does), never to its process group. Each run must end:
   - without a crash (no other signal, no sanitizer report, no raw C++ failure text);
   - with every output either untouched (the previous version) or complete (a signal that
     comes after an output took its name finds it finished; `emb run`'s results file then says
-    "interrupted"), and every output new if it exited 0;
+    "interrupted", or "success" with every sample if the signal came after the last one),
+    and every output new if it exited 0;
   - with no temporary, probe or lock file left in its directory;
   - with no process of its session left (the workers of `emb sweep -j`, MPI ranks).
 The moments are spread, not random: the same machine gives the same schedule. Where a
@@ -26,6 +27,7 @@ phases hit are reported. --budget bounds the time: trials stop when it is spent 
 
 import argparse
 import fnmatch
+import io
 import os
 import re
 import shutil
@@ -146,6 +148,19 @@ def results_status(path):
         return None
 
 
+def samples(source):
+    """The number of samples in a results file (a path, or the file's bytes), None if it has
+    no time series."""
+    if source is None:
+        return None
+    try:
+        handle = io.BytesIO(source) if isinstance(source, bytes) else source
+        with h5py.File(handle, "r") as f:
+            return f["time"].shape[0] if "time" in f else None
+    except OSError:
+        return None
+
+
 def run_once(cmd, run_dir, env, when, sig, timeout):
     """Starts cmd in its own session; sends `sig` to its pid at `when` seconds if it still
     runs. Returns (exit code or None on a hang, [(seconds, stderr line)], the time the
@@ -258,10 +273,16 @@ def check_trial(name, run_dir, rc, err, sent, sig, pgid, reference):
         elif not previous and not complete(path, reference.get(out)):
             problems.append(f"'{out}' holds an incomplete new file")
         elif not previous and out == results and died:
+            # A signal before the last sample stops the run ("interrupted"); one that lands
+            # after the file was committed ends the process with the results whole
+            # ("success", every sample of the calibration run's).
             status = results_status(path)
-            if status != "interrupted":
-                problems.append(f"'{out}' ends with status {status!r} after the signal "
-                                "(expected 'interrupted')")
+            whole = status == "success" and samples(path) == samples(reference.get(out))
+            if status != "interrupted" and not whole:
+                problems.append(f"'{out}' ends with status {status!r} and "
+                                f"{samples(path)} of {samples(reference.get(out))} samples "
+                                "after the signal (expected 'interrupted', or 'success' "
+                                "with every sample)")
     for left in leftovers(run_dir):
         problems.append(f"'{left}' left behind")
     deadline = time.monotonic() + 5.0  # MPI launchers reap their ranks after the fact
