@@ -1,5 +1,6 @@
 #include "libemb/engine/film_bearing.h"
 
+#include <cmath>
 #include <optional>
 #include <sstream>
 
@@ -37,8 +38,8 @@ class FilmBearing::Data final : public ForceElementData {
   tribology::BearingLoads loads;
   tribology::FilmDaeJacobian film;  ///< with states
   tribology::LoadJacobian total;    ///< without: the loads' total derivatives
-  /// The loads' derivatives by the kinematics used for the forces (6 x 4, 6 x 6).
-  Eigen::Matrix<double, 6, 4> loads_position;
+  /// The loads' derivatives by the kinematics used for the forces (6 x 5, 6 x 6).
+  Eigen::Matrix<double, 6, KinematicsLayout::kNumPositions> loads_position;
   Eigen::Matrix<double, 6, 6> loads_velocity;
   Eigen::VectorXd u, u_dot, r;
   Eigen::MatrixXd dR_dX, dR_dV, df6, dF_du, dT_du;
@@ -69,6 +70,10 @@ bool CalcFilmBearingMotion(const MarkerKinematics& I, const MarkerKinematics& J,
   k.tilt_rate = (a_dot.head<2>() - k.tilt * a_dot.z()) / a.z();
   k.journal_speed = rel.w.z();
   k.shell_speed = 0.0;
+  // psi: the angle of the journal's x axis in the shell's plane, b = R_JW x_I.
+  const Eigen::Vector3d x_I = I.R_WM.col(0);
+  const Eigen::Vector3d b = rel.R_JW * x_I;
+  k.journal_angle = std::atan2(b.y(), b.x());
   if (!derivatives) return true;
 
   MarkerPairDerivatives& dm = m->markers;
@@ -89,8 +94,12 @@ bool CalcFilmBearingMotion(const MarkerKinematics& I, const MarkerKinematics& J,
     if (with_position) out -= (a_dot.z() * dgamma + gamma_dot * da.row(2)) / a.z();
     return out;
   };
-  m->position_x.topRows<2>() = dr.x_x.topRows<2>();
-  m->position_x.bottomRows<2>() = dgamma;
+  // db as da; dpsi = (b_x db_y - b_y db_x) / (b_x^2 + b_y^2) (b_xy != 0 while a_z > 0).
+  const M3 db = rel.R_JW * Skew(x_I) * (dm.dJ.rotation_x - dm.dI.rotation_x);
+  m->position_x.middleRows<2>(KinematicsLayout::kEx) = dr.x_x.topRows<2>();
+  m->position_x.middleRows<2>(KinematicsLayout::kTiltX) = dgamma;
+  m->position_x.row(KinematicsLayout::kJournalAngle) =
+      (b.x() * db.row(1) - b.y() * db.row(0)) / b.head<2>().squaredNorm();
   m->velocity_x.setZero();
   m->velocity_v.setZero();
   m->velocity_x.middleRows<2>(KinematicsLayout::kEdotX) = dr.x_dot_x.topRows<2>();

@@ -11,6 +11,7 @@
 ///   a     = R_JW z_I,  gamma = (a_x, a_y) / a_z          tilt (notation.h) [rad]
 ///   a'    = w x a,     gamma' = (a'_xy - gamma a'_z) / a_z            [rad/s]
 ///   omega_j = w_z (the journal's spin relative to the shell), omega_s = 0
+///   b     = R_JW x_I,  psi = atan2(b_y, b_x)     the journal's angle (its oil holes) [rad]
 /// (the shell is at rest in its own frame; the film sees only the relative motion). The
 /// axial position of I along z_J is not a film variable: a joint or a thrust element holds it.
 /// Loads (notation.h): F (2) and M (2) in J's axes and T_j about z_J act on the journal at
@@ -73,11 +74,11 @@ class FilmBearing final : public ForceElement {
   bool has_film_states() const { return states_; }
 
   /// Journal kinematics in the shell frame and their derivatives in the local slots (I in
-  /// slot 0, J in slot 1, force_jacobian.h): positions (e, gamma) by X; velocities (e',
+  /// slot 0, J in slot 1, force_jacobian.h): positions (e, gamma, psi) by X; velocities (e',
   /// gamma', omega_j, omega_s) by X and V (film_fields.h, KinematicsLayout).
   struct Motion {
     tribology::JournalKinematics kin;
-    Eigen::Matrix<double, 4, 12> position_x;
+    Eigen::Matrix<double, tribology::KinematicsLayout::kNumPositions, 12> position_x;
     Eigen::Matrix<double, 6, 12> velocity_x, velocity_v;
     MarkerPairDerivatives markers;  ///< the markers' own derivatives (slots 0 and 1)
   };

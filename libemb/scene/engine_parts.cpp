@@ -3,6 +3,7 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "libemb/common/did_you_mean.h"
 #include "libemb/common/error.h"
@@ -59,6 +60,85 @@ void ReadEach(MapReader& r, const std::string& key, const std::string& what,
 
 }  // namespace
 
+namespace {
+
+// A film bearing's oil: `viscosity` (constant), or a `lubricant:` map with a viscosity-
+// temperature law at an effective temperature and an optional pressure-viscosity law
+// (tribology/lubricant.h).
+void ReadLubricant(MapReader& r, const std::string& what, tribology::LubricantParameters* l) {
+  using T = tribology::ViscosityTemperatureLaw;
+  using P = tribology::PressureViscosityLaw;
+  const bool constant = r.Has("viscosity"), map = r.Has("lubricant");
+  EMB_THROW_IF(constant == map, Where(r.file(), r.node())
+                                    << ": " << what
+                                    << ": expected either `viscosity` (constant) or a "
+                                       "`lubricant:` map, got "
+                                    << (constant ? "both" : "neither"));
+  if (constant) {
+    r.Optional("lubricant");
+    l->viscosity = r.GetDouble("viscosity", NumberRange::Positive("Pa s"));
+    return;
+  }
+  r.Optional("viscosity");
+  const YAML::Node n = r.Require("lubricant");
+  EMB_THROW_IF(!n.IsMap(), Where(r.file(), n) << ": " << what << " lubricant: expected a map");
+  MapReader m(n, r.file(), what + " lubricant", "forces: film-bearing lubricant");
+  const std::string law = m.GetString("temperature_law", "constant");
+  // An effective oil temperature in kelvin: 200-600 K spans every engine oil's use (a value
+  // in Celsius, such as 110, is refused here rather than read as 110 K).
+  const NumberRange kelvin = NumberRange::Closed(200.0, 600.0, "K");
+  if (law == "constant") {
+    l->temperature_law = T::kConstant;
+    l->viscosity = m.GetDouble("viscosity", NumberRange::Positive("Pa s"));
+  } else if (law == "vogel") {
+    l->temperature_law = T::kVogel;
+    l->vogel_a = m.GetDouble("vogel_a", NumberRange::Positive("Pa s"));
+    l->vogel_b = m.GetDouble("vogel_b", NumberRange::Positive("K"));
+    l->vogel_c = m.GetDouble("vogel_c", NumberRange::Finite("K"));
+    l->temperature = m.GetDouble("temperature", kelvin);
+  } else if (law == "walther") {
+    l->temperature_law = T::kWalther;
+    l->nu_40 = m.GetDouble("nu_40", NumberRange::Positive("m^2/s"));
+    l->nu_100 = m.GetDouble("nu_100", NumberRange::Positive("m^2/s"));
+    l->density = m.GetDouble("density", NumberRange::Positive("kg/m^3"));
+    l->temperature = m.GetDouble("temperature", kelvin);
+  } else {
+    EMB_THROW(InputError, what << " lubricant temperature_law: expected constant, vogel or "
+                                  "walther, got '"
+                               << law << "'"
+                               << DidYouMean(law, {"constant", "vogel", "walther"}));
+  }
+  // A key of another law is named as such, not as an unknown key.
+  const std::pair<const char*, const char*> owners[] = {
+      {"viscosity", "constant"}, {"vogel_a", "vogel"},       {"vogel_b", "vogel"},
+      {"vogel_c", "vogel"},      {"nu_40", "walther"},       {"nu_100", "walther"},
+      {"density", "walther"},    {"temperature", "vogel or walther"}};
+  for (const auto& [key, laws] : owners)
+    EMB_THROW_IF(m.Has(key) && std::string(laws).find(law) == std::string::npos,
+                 Where(r.file(), n) << ": " << what << " lubricant: " << key
+                                    << " belongs to temperature_law " << laws
+                                    << "; expected the keys of temperature_law " << law
+                                    << ", got " << key);
+  const std::string pressure = m.GetString("pressure_law", "none");
+  EMB_THROW_IF(pressure == "none" && m.Has("pressure_viscosity_coefficient"),
+               Where(r.file(), n) << ": " << what
+                                  << " lubricant: pressure_viscosity_coefficient needs a "
+                                     "pressure_law; expected barus or roelands, got none");
+  if (pressure == "barus" || pressure == "roelands") {
+    l->pressure_law = pressure == "barus" ? P::kBarus : P::kRoelands;
+    l->pressure_viscosity_coefficient =
+        m.GetDouble("pressure_viscosity_coefficient", NumberRange::Positive("1/Pa"));
+  } else if (pressure != "none") {
+    EMB_THROW(InputError, what << " lubricant pressure_law: expected none, barus or roelands, "
+                                  "got '"
+                               << pressure << "'"
+                               << DidYouMean(pressure, {"none", "barus", "roelands"}));
+  }
+  m.Finish();  // a key of another law is unknown here
+}
+
+}  // namespace
+
 // The smoothed JFO switch of a scene's film bearing (ReynoldsBearingParameters::switch_width;
 // docs/reference/tribology.md): 0.01 moved a light load by 0.2 % and a heavy one by 1e-6
 // (FilmSolver.SmoothedSwitchMovesTheLoadsLittle), and carries the single-cylinder engine's big
@@ -72,12 +152,23 @@ void ReadFilmBearing(MapReader& r, const std::string& name, mbs::System* sys) {
   p.radius = r.GetDouble("radius", NumberRange::Positive("m"));
   p.length = r.GetDouble("length", NumberRange::Positive("m"));
   p.clearance = r.GetDouble("clearance", NumberRange::Positive("m"));
-  p.lubricant.viscosity = r.GetDouble("viscosity", NumberRange::Positive("Pa s"));
+  ReadLubricant(r, what, &p.lubricant);
   p.grid.circumferential = r.GetInt("grid_circumferential", p.grid.circumferential, 8, 4096);
   p.grid.axial = r.GetInt("grid_axial", p.grid.axial, 2, 1024);
   p.cavitation = ParseCavitation(r.GetString("cavitation", "mass-conserving"), what);
   p.bulk_modulus = r.GetDouble("bulk_modulus", p.bulk_modulus, NumberRange::Positive("Pa"));
   p.switch_width = r.GetDouble("switch_width", kSceneSwitchWidth, NumberRange::Closed(0.0, 0.5));
+  p.pressure_scale =
+      r.GetDouble("pressure_scale", p.pressure_scale, NumberRange::Positive("Pa"));
+  if (r.Has("bore_tilt")) {
+    const std::vector<double> t = r.GetDoubles("bore_tilt");
+    EMB_THROW_IF(t.size() != 2, Where(r.file(), r.node())
+                                    << ": " << what << " bore_tilt: expected two slopes "
+                                    << "[gamma_x, gamma_y] in rad, got " << t.size() << " numbers");
+    p.bore_tilt = Eigen::Vector2d(t[0], t[1]);
+  } else {
+    r.Optional("bore_tilt");
+  }
   ReadEach(r, "oil_holes", what, "forces: film-bearing oil hole", [&](MapReader& e) {
     tribology::OilHole h;
     h.angle = e.GetDouble("angle", NumberRange::Finite("rad"));
@@ -95,6 +186,17 @@ void ReadFilmBearing(MapReader& r, const std::string& name, mbs::System* sys) {
     g.supply_pressure = e.GetDouble("supply_pressure", NumberRange::NonNegative("Pa"));
     p.grooves.push_back(g);
   });
+  ReadEach(r, "journal_oil_holes", what, "forces: film-bearing journal oil hole",
+           [&](MapReader& e) {
+             tribology::JournalOilHole h;
+             h.angle = e.GetDouble("angle", NumberRange::Finite("rad"));
+             h.axial_position = e.GetDouble("axial_position", 0.0, NumberRange::Finite("m"));
+             h.diameter = e.GetDouble("diameter", NumberRange::Positive("m"));
+             h.supply_pressure = e.GetDouble("supply_pressure", NumberRange::NonNegative("Pa"));
+             p.journal_oil_holes.push_back(h);
+           });
+  p.journal_feed_ratio =
+      r.GetDouble("journal_feed_ratio", p.journal_feed_ratio, NumberRange::Positive());
   if (const YAML::Node n = r.Optional("asperity_contact")) {
     EMB_THROW_IF(!n.IsMap(), Where(r.file(), n) << ": " << what << " asperity_contact: expected a map");
     MapReader c(n, r.file(), what + " asperity_contact", "forces: film-bearing asperity contact");

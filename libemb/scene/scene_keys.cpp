@@ -39,6 +39,8 @@ constexpr SceneSection kSections[] = {
     {"forces: film-bearing", "`type: film-bearing`", "Finite-width Reynolds film (libemb/tribology/notation.h) between journal marker `i` and shell marker `j` (axis z_J): misalignment, oil holes and grooves, and a cavitation model; mass-conserving (JFO) films are states of the run."},
     {"forces: film-bearing oil hole", "an entry of `oil_holes:`", "A circular oil hole in the shell held at its supply pressure."},
     {"forces: film-bearing asperity contact", "`asperity_contact:` of a film bearing", "Greenwood–Tripp asperity contact where the film is thinner than a few roughnesses (mixed lubrication)."},
+    {"forces: film-bearing journal oil hole", "an entry of `journal_oil_holes:`", "An oil hole in the journal that turns with it (a crankpin drilling), feeding the film through a conductance."},
+    {"forces: film-bearing lubricant", "`lubricant:` of a film bearing", "The oil: a viscosity–temperature law at an effective temperature and an optional pressure–viscosity law."},
     {"forces: film-bearing groove", "an entry of `grooves:`", "A circumferential groove (full or partial; a narrow one along the length is an axial groove) held at its supply pressure."},
     {"forces: torsional-damper", "`type: torsional-damper`", "A torsional vibration damper: an inertia ring on a Kelvin–Voigt rubber (`stiffness`, `damping`) or a frequency-dependent rubber (`rubber:`)."},
     {"forces: torsional-damper rubber", "`rubber:` of a torsional damper", "Either `{static_stiffness, arms}` (generalised Maxwell) or `{dynamic_stiffness, loss_factor, frequency_hz}` (one Zener arm fitted at its loss peak)."},

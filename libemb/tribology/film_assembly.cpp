@@ -69,6 +69,11 @@ void FillGeneric(const FilmFields& film, const FilmUnknowns& x, const StorageInp
       }
     }
   }
+  const JournalFeed& feed = film.feed();
+  for (int e = 0; e < feed.size(); ++e) {
+    const int k = feed.unknown[e];
+    put(k, k, feed.conductance[e] * w.alpha[k]);
+  }
   for (int k = 0; k < g.num_unknowns(); ++k) {
     if (bearing.is_supply(k)) {
       add(k, k, 1.0);
@@ -108,6 +113,14 @@ void CalcFilmResidual(const FilmFields& film, const FilmUnknowns& x, const Eigen
     }
   }
   double supply = 0.0, storage_rate = 0.0, content = 0.0;
+  const JournalFeed& feed = film.feed();
+  for (int e = 0; e < feed.size(); ++e) {
+    const int k = feed.unknown[e];
+    if (bearing.is_supply(k)) continue;
+    const double q = feed.conductance[e] * (feed.supply_psi[e] - x.psi[k]);
+    (*r)[k] -= q;
+    supply += q;
+  }
   for (int k = 0; k < n; ++k) {
     if (bearing.is_supply(k)) {
       supply += (*r)[k];
@@ -197,6 +210,13 @@ void FillFilmJacobian(const FilmFields& film, const FilmUnknowns& x, const Stora
       D[r + r * m] += feature[k] >= 0 ? 1.0 : StorageDiagonal(film, x, st, w, k);
     }
   }
+  const JournalFeed& feed = film.feed();
+  for (int e = 0; e < feed.size(); ++e) {
+    const int k = feed.unknown[e];
+    if (feature[k] >= 0) continue;
+    const int r = k % m;
+    lu->diagonal_block(k / m)[r + r * m] += feed.conductance[e] * w.alpha[k];
+  }
 }
 
 void FillFilmJacobian(const FilmFields& film, const FilmUnknowns& x, const StorageInputs& st,
@@ -233,7 +253,7 @@ void AddFilmJacobianRowSums(const FilmFields& film, const FilmUnknowns& x,
 void AddAdjointKinematicTerms(const FilmFields& film, const FilmUnknowns& x,
                               const StorageInputs& st, const Eigen::MatrixXd& lambda,
                               std::vector<double>* scratch,
-                              Eigen::Matrix<double, 6, 4>* d_position,
+                              Eigen::Matrix<double, 6, KinematicsLayout::kNumPositions>* d_position,
                               Eigen::Matrix<double, 6, 6>* d_velocity) {
   using L = KinematicsLayout;
   constexpr int kLoads = 6;
@@ -322,8 +342,17 @@ void AddAdjointKinematicTerms(const FilmFields& film, const FilmUnknowns& x,
       }
     }
   }
+  // The journal holes' feed: dr_k/dpsi = dG_k/dpsi (Psi_k - Psi_s).
+  double angle[kLoads] = {};
+  const JournalFeed& feed = film.feed();
+  for (int e = 0; e < feed.size(); ++e) {
+    const int k = feed.unknown[e];
+    const double dr = feed.conductance_slope[e] * (x.psi[k] - feed.supply_psi[e]);
+    for (int l = 0; l < kLoads; ++l) angle[l] += lam[k * kLoads + l] * dr;
+  }
   // d_position -= lambda^T dr/dx with dr/dx = -sum w (c, s, z c, z s); likewise the rates.
   for (int l = 0; l < kLoads; ++l) {
+    (*d_position)(l, L::kJournalAngle) -= angle[l];
     (*d_position)(l, L::kEx) += pc[l];
     (*d_position)(l, L::kEy) += ps[l];
     (*d_position)(l, L::kTiltX) += pzc[l];
@@ -350,12 +379,12 @@ void CalcFilmKinematicJacobian(const FilmFields& film, const FilmUnknowns& x,
   // Adds dQ/dh dh/dx (and dQ/domega) of a flux from a to b.
   auto scatter = [&](int a, int b, double dQ_dh, const Eigen::Vector4d& dh_dx, double dQ_domega) {
     if (a >= 0 && !bearing.is_supply(a)) {
-      dr_dx->row(a) += dQ_dh * dh_dx.transpose();
+      dr_dx->row(a).head<4>() += dQ_dh * dh_dx.transpose();
       (*dr_dv)(a, L::kOmegaJournal) += dQ_domega;
       (*dr_dv)(a, L::kOmegaShell) += dQ_domega;
     }
     if (b >= 0 && !bearing.is_supply(b)) {
-      dr_dx->row(b) -= dQ_dh * dh_dx.transpose();
+      dr_dx->row(b).head<4>() -= dQ_dh * dh_dx.transpose();
       (*dr_dv)(b, L::kOmegaJournal) -= dQ_domega;
       (*dr_dv)(b, L::kOmegaShell) -= dQ_domega;
     }
@@ -402,13 +431,21 @@ void CalcFilmKinematicJacobian(const FilmFields& film, const FilmUnknowns& x,
         dr_dv->row(k).head<4>() += A * x.theta[k] * dhdot_dv.transpose();
         break;
       case StorageTerm::kBackwardEuler:
-        dr_dx->row(k) += A * x.theta[k] / st.dt * dh_dx.transpose();
+        dr_dx->row(k).head<4>() += A * x.theta[k] / st.dt * dh_dx.transpose();
         break;
       case StorageTerm::kDae:
-        dr_dx->row(k) += A * DaeStorageSlope(x, st, k) * (*st.u_dot)[k] * dh_dx.transpose();
+        dr_dx->row(k).head<4>() +=
+            A * DaeStorageSlope(x, st, k) * (*st.u_dot)[k] * dh_dx.transpose();
         dr_dv->row(k).head<4>() += A * x.theta[k] * dhdot_dv.transpose();
         break;
     }
+  }
+  const JournalFeed& feed = film.feed();
+  for (int e = 0; e < feed.size(); ++e) {
+    const int k = feed.unknown[e];
+    if (bearing.is_supply(k)) continue;
+    (*dr_dx)(k, L::kJournalAngle) +=
+        feed.conductance_slope[e] * (x.psi[k] - feed.supply_psi[e]);
   }
 }
 

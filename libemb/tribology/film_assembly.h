@@ -13,9 +13,11 @@
 ///   kBackwardEuler  A (theta_k h_k - m_k^prev) / dt     (m = theta h, the film content)
 ///   kDae            A (h_k s_k u_dot_k + theta_k dh_k/dt), s_k = DaeStorageSlope; its
 ///                   u-derivative adds A h_k s'_k u_dot_k (DaeStorageCurvature) on the diagonal
-/// plus, for kReynolds, the complementarity slack sigma_k min(u_k, 0). A supply node's row is
+/// plus, for kReynolds, the complementarity slack sigma_k min(u_k, 0), and minus the journal
+/// holes' feed G_k (Psi_s - Psi_k) (supply_features.h). A supply node's row is
 /// r_k = u_k - u_supply. Summed over all non-supply nodes the fluxes telescope: sum r =
-/// storage + side flow - supply flow, exactly (the discrete mass balance).
+/// storage + side flow - supply flow, exactly (the discrete mass balance; the supply flow
+/// counts the journal holes' feed).
 
 #include <vector>
 
@@ -54,7 +56,7 @@ inline double DaeStorageCurvature(const FilmUnknowns& x, const StorageInputs& st
 /// Flow totals of one residual evaluation [m^3/s].
 struct FilmBalance {
   double side_flow{0.0};     ///< out through both edges (>= 0 leaves the bearing)
-  double supply_flow{0.0};   ///< out of the supply nodes into the film (and edges)
+  double supply_flow{0.0};   ///< out of the supply nodes and the journal holes into the film
   double storage_rate{0.0};  ///< sum of the storage terms of the non-supply nodes
   double content{0.0};       ///< sum A theta h over the non-supply nodes [m^3]
 };
@@ -93,10 +95,10 @@ void AddFilmJacobianRowSums(const FilmFields& film, const FilmUnknowns& x,
 void AddAdjointKinematicTerms(const FilmFields& film, const FilmUnknowns& x,
                               const StorageInputs& storage, const Eigen::MatrixXd& lambda,
                               std::vector<double>* scratch,
-                              Eigen::Matrix<double, 6, 4>* d_position,
+                              Eigen::Matrix<double, 6, KinematicsLayout::kNumPositions>* d_position,
                               Eigen::Matrix<double, 6, 6>* d_velocity);
 
-/// dr/dx (n x 4) and dr/dv (n x 6) at fixed unknowns (KinematicsLayout columns).
+/// dr/dx (n x 5) and dr/dv (n x 6) at fixed unknowns (KinematicsLayout columns).
 void CalcFilmKinematicJacobian(const FilmFields& film, const FilmUnknowns& x,
                                const StorageInputs& storage,
                                Eigen::MatrixXd* dr_dx, Eigen::MatrixXd* dr_dv);

@@ -48,7 +48,7 @@ namespace emb::tribology {
 struct FilmDaeJacobian {
   Eigen::SparseMatrix<double> dr_du;  ///< n x n (fixed pattern; values refilled)
   Eigen::VectorXd dr_du_dot;          ///< n, the diagonal of dr/du_dot
-  Eigen::MatrixXd dr_dx;              ///< n x 4 (KinematicsLayout positions)
+  Eigen::MatrixXd dr_dx;              ///< n x 5 (KinematicsLayout positions)
   Eigen::MatrixXd dr_dv;              ///< n x 6 (KinematicsLayout velocities)
   LoadPartials loads;                 ///< loads' partials: d/du (6 x n), d/dx, d/dv
 };

@@ -113,6 +113,10 @@ bool FilmFields::Set(const JournalKinematics& kin, std::string* message) {
       g_z_[f] = kz * hf * hf * hf;
     }
   }
+  if (bearing_->has_journal_holes())
+    CalcJournalFeed(g, bearing_->parameters().journal_oil_holes,
+                    bearing_->journal_hole_conductance(), bearing_->journal_supply_psi(),
+                    kin.journal_angle, &feed_);
   return true;
 }
 

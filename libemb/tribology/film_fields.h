@@ -22,6 +22,9 @@ struct JournalKinematics {
   Eigen::Vector2d tilt_rate{0.0, 0.0};          ///< dgamma/dt [rad/s]
   double journal_speed{0.0};                    ///< omega_j about z_S, relative to S [rad/s]
   double shell_speed{0.0};                      ///< omega_s about z_S, relative to S [rad/s]
+  /// psi: the journal's rotation about z_S relative to S, the angle of its x axis from x_S
+  /// (where its oil holes are: supply_features.h) [rad].
+  double journal_angle{0.0};
   /// Optional additive film dh over all nodes (BearingGrid::Node) and its rate; the hook
   /// for elastic shells [m], [m/s]. Null: none.
   const Eigen::VectorXd* film_offset{nullptr};
@@ -30,8 +33,10 @@ struct JournalKinematics {
 
 /// Column layout of Jacobians with respect to the kinematics.
 struct KinematicsLayout {
-  static constexpr int kNumPositions = 4;  ///< columns of d/dx: e_x, e_y, gamma_x, gamma_y
-  static constexpr int kEx = 0, kEy = 1, kTiltX = 2, kTiltY = 3;
+  /// Columns of d/dx: e_x, e_y, gamma_x, gamma_y, psi (the film thickness depends on the
+  /// first four, the journal holes' feed on psi).
+  static constexpr int kNumPositions = 5;
+  static constexpr int kEx = 0, kEy = 1, kTiltX = 2, kTiltY = 3, kJournalAngle = 4;
   static constexpr int kNumVelocities = 6;  ///< d/dv: e_dot (2), gamma_dot (2), omega_j, omega_s
   static constexpr int kEdotX = 0, kEdotY = 1, kTiltDotX = 2, kTiltDotY = 3, kOmegaJournal = 4,
                        kOmegaShell = 5;
@@ -71,6 +76,8 @@ class FilmFields {
   static Eigen::Vector4d FilmGradient(double c, double s, double z) {
     return Eigen::Vector4d(-c, -s, -z * c, -z * s);
   }
+  /// The journal holes' feed at this journal angle (empty without holes).
+  const JournalFeed& feed() const { return feed_; }
   /// The minimum of h over all nodes and where (node index).
   double min_film() const { return min_film_; }
   int min_film_node() const { return min_film_node_; }
@@ -84,6 +91,7 @@ class FilmFields {
   double floor_{0.0};
   std::vector<double> h_node_, h_unknown_, hdot_unknown_, h_face_c_, g_c_, h_face_z_, g_z_;
   std::vector<char> floored_unknown_, floored_c_, floored_z_;
+  JournalFeed feed_;
   double min_film_{0.0};
   int min_film_node_{0};
 };

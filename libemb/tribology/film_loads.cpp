@@ -133,8 +133,8 @@ void CalcBearingLoads(const FilmFields& film, const FilmUnknowns& x, const FilmB
           d->d_unknowns(LL::kShellTorque, k) -= R * R * dw * w * x.dtheta_du[k] * mu0 / hf;
           if (h >= floor) {
             const Eigen::Vector4d dTc = -R * R * dw * w * x.theta[k] * mu0 / (hf * hf) * dh_dx;
-            d->d_position.row(LL::kJournalTorque) += dTc.transpose();
-            d->d_position.row(LL::kShellTorque) -= dTc.transpose();
+            d->d_position.row(LL::kJournalTorque).head<4>() += dTc.transpose();
+            d->d_position.row(LL::kShellTorque).head<4>() -= dTc.transpose();
           }
         }
       }
@@ -148,10 +148,10 @@ void CalcBearingLoads(const FilmFields& film, const FilmUnknowns& x, const FilmB
       contact_load += w * pc;
       if (d) {
         const Eigen::Matrix<double, 4, 1> dpc_dx = dpc_dh * dh_dx;
-        d->d_position.row(LL::kFx) -= w * c * dpc_dx.transpose();
-        d->d_position.row(LL::kFy) -= w * s * dpc_dx.transpose();
-        d->d_position.row(LL::kMx) += w * z * s * dpc_dx.transpose();
-        d->d_position.row(LL::kMy) -= w * z * c * dpc_dx.transpose();
+        d->d_position.row(LL::kFx).head<4>() -= w * c * dpc_dx.transpose();
+        d->d_position.row(LL::kFy).head<4>() -= w * s * dpc_dx.transpose();
+        d->d_position.row(LL::kMx).head<4>() += w * z * s * dpc_dx.transpose();
+        d->d_position.row(LL::kMy).head<4>() -= w * z * c * dpc_dx.transpose();
         dcontact_load_dx += w * dpc_dx;
       }
     }
@@ -166,8 +166,10 @@ void CalcBearingLoads(const FilmFields& film, const FilmUnknowns& x, const FilmB
     friction = -fb * R * contact_load * t;
     dcontact_dv = -fb * R * contact_load * (1.0 - t * t) * R / kSlidingRegularisation;
     if (d) {
-      d->d_position.row(LL::kJournalTorque) += (-fb * R * t) * dcontact_load_dx.transpose();
-      d->d_position.row(LL::kShellTorque) -= (-fb * R * t) * dcontact_load_dx.transpose();
+      d->d_position.row(LL::kJournalTorque).head<4>() +=
+          (-fb * R * t) * dcontact_load_dx.transpose();
+      d->d_position.row(LL::kShellTorque).head<4>() -=
+          (-fb * R * t) * dcontact_load_dx.transpose();
     }
   }
   L.journal_torque = pressure_torque + Tc + friction;

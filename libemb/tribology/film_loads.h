@@ -60,10 +60,11 @@ struct BearingLoads {
 };
 
 /// Partial derivatives of the stacked loads at fixed unknowns: d/du (6 x n, with the Newton
-/// variable's weights dPsi/du, dtheta/du), d/dx (6 x 4) and d/dv (6 x 6) (KinematicsLayout).
+/// variable's weights dPsi/du, dtheta/du), d/dx (6 x 5) and d/dv (6 x 6) (KinematicsLayout;
+/// at fixed unknowns the loads do not depend on the journal angle).
 struct LoadPartials {
   Eigen::Matrix<double, 6, Eigen::Dynamic> d_unknowns;
-  Eigen::Matrix<double, 6, 4> d_position;
+  Eigen::Matrix<double, 6, KinematicsLayout::kNumPositions> d_position;
   Eigen::Matrix<double, 6, 6> d_velocity;
 };
 

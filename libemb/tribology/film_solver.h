@@ -62,7 +62,7 @@ struct FilmSolveInfo {
 /// Total derivatives of the stacked loads (LoadLayout rows) with respect to the journal
 /// kinematics (KinematicsLayout columns).
 struct LoadJacobian {
-  Eigen::Matrix<double, 6, 4> d_position;
+  Eigen::Matrix<double, 6, KinematicsLayout::kNumPositions> d_position;
   Eigen::Matrix<double, 6, 6> d_velocity;
 };
 

@@ -1,6 +1,7 @@
 #include "libemb/tribology/reynolds_bearing.h"
 
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 #include "libemb/common/error.h"
@@ -62,13 +63,29 @@ ReynoldsBearing::ReynoldsBearing(std::string name, const ReynoldsBearingParamete
                who_ << ": expected a positive film_floor, got " << p.film_floor);
   EMB_THROW_IF(p.max_iterations < 1,
                who_ << ": expected max_iterations >= 1, got " << p.max_iterations);
-  for (double ps : supply_.pressure) {
+  auto reduced = [&](double ps, const std::string& key) {
     const double psi = lubricant_.ReducedPressure(ps);
     EMB_THROW_IF(!(psi < lubricant_.reduced_pressure_limit()),
-                 who_ << ": a supply pressure of " << ps
-                      << " Pa is beyond the pressure-viscosity law's range");
-    supply_u_.push_back(psi / p.pressure_scale);
+                 who_ << ": " << key << ": expected a supply pressure within the "
+                      << "pressure-viscosity law's range, got " << ps << " Pa");
+    return psi;
+  };
+  // Features are numbered holes first, then grooves (supply_features.h).
+  for (size_t f = 0; f < supply_.pressure.size(); ++f) {
+    const size_t holes = p.oil_holes.size();
+    const std::string key = f < holes ? "oil_holes[" + std::to_string(f) + "]"
+                                      : "grooves[" + std::to_string(f - holes) + "]";
+    supply_u_.push_back(reduced(supply_.pressure[f], key + ".supply_pressure") /
+                        p.pressure_scale);
   }
+  CheckJournalOilHoles(grid_, p.journal_oil_holes, who_);
+  EMB_THROW_IF(!(std::isfinite(p.journal_feed_ratio) && p.journal_feed_ratio > 0.0),
+               who_ << ": expected a positive journal_feed_ratio, got " << p.journal_feed_ratio);
+  for (size_t h = 0; h < p.journal_oil_holes.size(); ++h)
+    journal_psi_.push_back(reduced(p.journal_oil_holes[h].supply_pressure,
+                                   "journal_oil_holes[" + std::to_string(h) + "].supply_pressure"));
+  journal_conductance_ = p.journal_feed_ratio * std::numbers::pi * std::pow(p.clearance, 3) /
+                         (6.0 * lubricant_.ambient_viscosity());
   if (p.asperity_contact) contact_.emplace(*p.asperity_contact, who_);
 }
 

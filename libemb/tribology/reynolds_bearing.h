@@ -43,6 +43,12 @@ struct ReynoldsBearingParameters {
   LubricantParameters lubricant;
   std::vector<OilHole> oil_holes;
   std::vector<Groove> grooves;
+  /// Oil holes in the journal, turning with it (supply_features.h: they feed through a
+  /// conductance).
+  std::vector<JournalOilHole> journal_oil_holes;
+  /// kappa: a journal hole's feed conductance over pi c^3 / (6 mu_0) (supply_features.h).
+  /// 1e4 puts the loads within 0.1 % of the limit kappa -> infinity (JournalFeed.LoadsConvergeAsTheFeedConductanceGrows).
+  double journal_feed_ratio{1e4};
   CavitationModel cavitation{CavitationModel::kMassConserving};
   ComplementaritySolver complementarity{ComplementaritySolver::kElrodAdamsSwitch};
   /// Greenwood-Tripp asperity contact; without it a film h <= 0 anywhere is a failed
@@ -53,8 +59,8 @@ struct ReynoldsBearingParameters {
   double film_floor{0.1};
   /// gamma_b: static tilt of the bore axis in the shell frame (slopes, T1) [rad].
   Eigen::Vector2d bore_tilt{0.0, 0.0};
-  /// p_ref: pressure of u = 1 (T5) [Pa]; only scales the unknowns (conditioning, DAE error
-  /// weights).
+  /// p_ref: pressure of u = 1 (T5) [Pa]; scales the unknowns (conditioning, DAE error
+  /// weights) and, with switch_width > 0, the smoothed band's pressure p_ref w.
   double pressure_scale{1e6};
   /// K: the lubricant's bulk modulus [Pa], for the film as DAE states only (film_dae.h: the
   /// full film's compressibility; 1.5 GPa, a mineral oil near ambient pressure).
@@ -89,6 +95,10 @@ class ReynoldsBearing {
   const std::optional<AsperityContact>& contact() const { return contact_; }
   /// Unknown u of a supply node at pressure p: Psi(p) / p_ref (>= 0: flooded).
   double SupplyUnknown(int k) const { return supply_u_[supply_.feature[k]]; }
+  bool has_journal_holes() const { return !p_.journal_oil_holes.empty(); }
+  /// kappa g_ref [m^3/(Pa s)] and the journal holes' reduced supply pressures [Pa].
+  double journal_hole_conductance() const { return journal_conductance_; }
+  const std::vector<double>& journal_supply_psi() const { return journal_psi_; }
   bool is_supply(int k) const { return supply_.feature[k] >= 0; }
   int num_unknowns() const { return grid_.num_unknowns(); }
 
@@ -99,6 +109,8 @@ class ReynoldsBearing {
   Lubricant lubricant_;
   SupplyMap supply_;
   std::vector<double> supply_u_;
+  double journal_conductance_{0.0};
+  std::vector<double> journal_psi_;
   std::optional<AsperityContact> contact_;
 };
 

@@ -1,5 +1,6 @@
 #include "libemb/tribology/supply_features.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -30,7 +31,97 @@ double WrapPositive(double a) {
   return a < 0.0 ? a + kTwoPi : a;
 }
 
+// The width of a journal hole's taper beyond its own radius, in node spacings
+// (supply_features.h: some node within rho at every angle).
+constexpr double kTaperSpacings = 1.2;
+
 }  // namespace
+
+void JournalFeed::clear() {
+  unknown.clear();
+  conductance.clear();
+  conductance_slope.clear();
+  supply_psi.clear();
+}
+
+void CheckJournalOilHoles(const BearingGrid& grid, const std::vector<JournalOilHole>& holes,
+                          const std::string& who) {
+  const double half_length = 0.5 * grid.length();
+  for (size_t h = 0; h < holes.size(); ++h) {
+    const JournalOilHole& o = holes[h];
+    const std::string key = "journal_oil_holes[" + std::to_string(h) + "]";
+    EMB_THROW_IF(!std::isfinite(o.angle),
+                 who << ": expected a finite " << key << ".angle, got " << o.angle);
+    EMB_THROW_IF(!std::isfinite(o.axial_position), who << ": expected a finite " << key
+                                                       << ".axial_position, got "
+                                                       << o.axial_position);
+    EMB_THROW_IF(!(std::isfinite(o.diameter) && o.diameter > 0.0),
+                 who << ": expected a positive " << key << ".diameter, got " << o.diameter << " m");
+    EMB_THROW_IF(!(std::isfinite(o.supply_pressure) && o.supply_pressure >= 0.0),
+                 who << ": expected a supply pressure >= 0 Pa (gauge) for " << key
+                     << ".supply_pressure, got " << o.supply_pressure << " Pa");
+    // A hole of the journal's radius or larger wraps around it (the weights' angle would
+    // flip sign across the bearing).
+    EMB_THROW_IF(o.diameter >= grid.radius(),
+                 who << ": expected " << key << ".diameter below the journal's radius "
+                     << grid.radius() << " m, got " << o.diameter << " m");
+    EMB_THROW_IF(std::abs(o.axial_position) + 0.5 * o.diameter > half_length * (1 + kBorderSlack),
+                 who << ": " << key
+                     << " reaches outside the bearing: expected |axial_position| "
+                        "+ diameter/2 <= L/2 = "
+                     << half_length << " m, got " << std::abs(o.axial_position) + 0.5 * o.diameter
+                     << " m");
+  }
+}
+
+void CalcJournalFeed(const BearingGrid& grid, const std::vector<JournalOilHole>& holes,
+                     double hole_conductance, const std::vector<double>& supply_psi, double psi,
+                     JournalFeed* feed) {
+  feed->clear();
+  const double R = grid.radius(), dphi = grid.dphi();
+  const int N = grid.num_circumferential(), m = grid.num_rows();
+  const double spacing = std::max(R * dphi, grid.dz());
+  for (size_t h = 0; h < holes.size(); ++h) {
+    const JournalOilHole& o = holes[h];
+    const double radius = 0.5 * o.diameter, band = kTaperSpacings * spacing;
+    const double rho = radius + band;
+    const double phi_h = WrapPositive(o.angle + psi);
+    // Columns within rho of the centre (the window wraps; at most all N).
+    const int reach = std::min(N / 2, static_cast<int>(std::ceil(rho / (R * dphi))) + 1);
+    const int centre = static_cast<int>(std::lround(phi_h / dphi));
+    const int first = feed->size();
+    double sum = 0.0, sum_slope = 0.0;
+    for (int di = -reach; di <= reach && di < N - reach; ++di) {
+      const int i = ((centre + di) % N + N) % N;
+      const double a = WrapSigned(grid.angle(i) - phi_h), s = R * a;
+      for (int j = 1; j <= m; ++j) {
+        const double dz = grid.axial(j) - o.axial_position;
+        const double d = std::sqrt(s * s + dz * dz);
+        if (d >= rho) continue;
+        // w = 1 inside the hole; (1 - t^2)^2 over the band, t = (d - d/2) / band, with
+        // dw/dpsi = -4 t (1 - t^2) / band dd/dpsi and dd/dpsi = -R^2 a / d (a = phi_i - phi_h).
+        double w = 1.0, w_slope = 0.0;
+        if (d > radius) {
+          const double t = (d - radius) / band, q = 1.0 - t * t;
+          w = q * q;
+          w_slope = 4.0 * t * q / band * (R * R * a / d);
+        }
+        feed->unknown.push_back(grid.Unknown(i, j));
+        feed->conductance.push_back(w);
+        feed->conductance_slope.push_back(w_slope);
+        feed->supply_psi.push_back(supply_psi[h]);
+        sum += w;
+        sum_slope += w_slope;
+      }
+    }
+    // Normalised: G_k = G w_k / S, dG_k = G (w'_k S - w_k S') / S^2.
+    for (int e = first; e < feed->size(); ++e) {
+      const double w = feed->conductance[e], w_slope = feed->conductance_slope[e];
+      feed->conductance[e] = hole_conductance * w / sum;
+      feed->conductance_slope[e] = hole_conductance * (w_slope * sum - w * sum_slope) / (sum * sum);
+    }
+  }
+}
 
 SupplyMap MarkSupplyNodes(const BearingGrid& grid, const std::vector<OilHole>& holes,
                           const std::vector<Groove>& grooves, const std::string& who) {
@@ -47,8 +138,8 @@ SupplyMap MarkSupplyNodes(const BearingGrid& grid, const std::vector<OilHole>& h
   };
   auto pressure = [&](double v, const std::string& key) {
     EMB_THROW_IF(!(std::isfinite(v) && v >= 0.0),
-                 who << ": expected a supply pressure >= 0 Pa (gauge) for " << key << ", got "
-                     << v << " Pa");
+                 who << ": expected a supply pressure >= 0 Pa (gauge) for " << key << ", got " << v
+                     << " Pa");
   };
   // Marks the interior nodes for which `inside(i, j)` holds; returns how many.
   auto mark = [&](int feature, const std::string& key, auto inside) {
@@ -59,8 +150,9 @@ SupplyMap MarkSupplyNodes(const BearingGrid& grid, const std::vector<OilHole>& h
         const int k = grid.Unknown(i, j);
         const int other = map.feature[k];
         EMB_THROW_IF(other >= 0 && map.pressure[other] != map.pressure[feature],
-                     who << ": " << key << " overlaps another supply feature at a different "
-                         "pressure (expected one supply pressure per node, got "
+                     who << ": " << key
+                         << " overlaps another supply feature at a different "
+                            "pressure (expected one supply pressure per node, got "
                          << map.pressure[other] << " Pa and " << map.pressure[feature]
                          << " Pa at phi = " << grid.angle(i) << " rad, z = " << grid.axial(j)
                          << " m)");
@@ -78,9 +170,11 @@ SupplyMap MarkSupplyNodes(const BearingGrid& grid, const std::vector<OilHole>& h
     positive(o.diameter, key + ".diameter", "m");
     pressure(o.supply_pressure, key + ".supply_pressure");
     EMB_THROW_IF(std::abs(o.axial_position) + 0.5 * o.diameter > half_length * (1 + kBorderSlack),
-                 who << ": " << key << " reaches outside the bearing: expected |axial_position| "
-                        "+ diameter/2 <= L/2 = " << half_length << " m, got "
-                     << std::abs(o.axial_position) + 0.5 * o.diameter << " m");
+                 who << ": " << key
+                     << " reaches outside the bearing: expected |axial_position| "
+                        "+ diameter/2 <= L/2 = "
+                     << half_length << " m, got " << std::abs(o.axial_position) + 0.5 * o.diameter
+                     << " m");
     map.pressure.push_back(o.supply_pressure);
     const double r2 = 0.25 * o.diameter * o.diameter * (1.0 + kBorderSlack);
     const int count = mark(static_cast<int>(h), key, [&](int i, int j) {
@@ -91,8 +185,8 @@ SupplyMap MarkSupplyNodes(const BearingGrid& grid, const std::vector<OilHole>& h
     EMB_THROW_IF(count == 0,
                  who << ": the grid is too coarse for " << key << " (diameter " << o.diameter
                      << " m): expected at least one interior node inside it, got none (node "
-                        "spacing R dphi = " << R * grid.dphi() << " m, dz = " << grid.dz()
-                     << " m)");
+                        "spacing R dphi = "
+                     << R * grid.dphi() << " m, dz = " << grid.dz() << " m)");
   }
   for (size_t g = 0; g < grooves.size(); ++g) {
     const Groove& o = grooves[g];
@@ -106,9 +200,11 @@ SupplyMap MarkSupplyNodes(const BearingGrid& grid, const std::vector<OilHole>& h
                      << o.angular_extent);
     pressure(o.supply_pressure, key + ".supply_pressure");
     EMB_THROW_IF(std::abs(o.axial_position) + 0.5 * o.width > half_length * (1 + kBorderSlack),
-                 who << ": " << key << " reaches outside the bearing: expected |axial_position| "
-                        "+ width/2 <= L/2 = " << half_length << " m, got "
-                     << std::abs(o.axial_position) + 0.5 * o.width << " m");
+                 who << ": " << key
+                     << " reaches outside the bearing: expected |axial_position| "
+                        "+ width/2 <= L/2 = "
+                     << half_length << " m, got " << std::abs(o.axial_position) + 0.5 * o.width
+                     << " m");
     const int feature = static_cast<int>(holes.size() + g);
     map.pressure.push_back(o.supply_pressure);
     const double half_width = 0.5 * o.width + kBorderSlack * grid.dz();
@@ -123,8 +219,8 @@ SupplyMap MarkSupplyNodes(const BearingGrid& grid, const std::vector<OilHole>& h
                  who << ": the grid is too coarse for " << key << " (width " << o.width
                      << " m, extent " << o.angular_extent
                      << " rad): expected at least one interior node inside it, got none (node "
-                        "spacing dz = " << grid.dz() << " m, R dphi = " << R * grid.dphi()
-                     << " m)");
+                        "spacing dz = "
+                     << grid.dz() << " m, R dphi = " << R * grid.dphi() << " m)");
   }
   for (int k = 0; k < grid.num_unknowns(); ++k)
     if (map.feature[k] >= 0) map.nodes.push_back(k);

@@ -51,6 +51,13 @@ tribology::ReynoldsBearingParameters Main(CavitationModel model, int n = 24, int
   p.cavitation = model;
   return p;
 }
+
+// Main with a hole in the journal (the journal angle's chain rule enters the forces).
+tribology::ReynoldsBearingParameters FedMain(CavitationModel model, int n = 24, int nz = 6) {
+  tribology::ReynoldsBearingParameters p = Main(model, n, nz);
+  p.journal_oil_holes.push_back({1.0, 1e-3, 5e-3, 3e5});
+  return p;
+}
 constexpr double kOmega = 3000.0 * 2.0 * kPi / 60.0;
 
 using testing::Pose;
@@ -111,9 +118,9 @@ TEST(FilmBearing, KinematicsChainRuleMatchesCentralDifferences) {
     return m;
   };
   auto stack = [](const FilmBearing::Motion& m) {
-    Eigen::Matrix<double, 10, 1> y;
-    y << m.kin.eccentricity, m.kin.tilt, m.kin.eccentricity_rate, m.kin.tilt_rate,
-        m.kin.journal_speed, m.kin.shell_speed;
+    Eigen::Matrix<double, 11, 1> y;
+    y << m.kin.eccentricity, m.kin.tilt, m.kin.journal_angle, m.kin.eccentricity_rate,
+        m.kin.tilt_rate, m.kin.journal_speed, m.kin.shell_speed;
     return y;
   };
   const FilmBearing::Motion m = motion(q, v, true);
@@ -127,14 +134,14 @@ TEST(FilmBearing, KinematicsChainRuleMatchesCentralDifferences) {
     const int col = j < 6 ? pin + j : eye + j - 6;
     Eigen::VectorXd dx = Eigen::VectorXd::Zero(L.nv());
     dx[col] = h;
-    const Eigen::Matrix<double, 10, 1> dq =
+    const Eigen::Matrix<double, 11, 1> dq =
         (stack(motion(ApplyDisplacement(s, q, dx), v, false)) -
          stack(motion(ApplyDisplacement(s, q, -dx), v, false))) / (2 * h);
-    const Eigen::Matrix<double, 10, 1> dv =
+    const Eigen::Matrix<double, 11, 1> dv =
         (stack(motion(q, v + dx, false)) - stack(motion(q, v - dx, false))) / (2 * h);
-    Eigen::Matrix<double, 10, 1> aq, av;
+    Eigen::Matrix<double, 11, 1> aq, av;
     aq << m.position_x.col(j), m.velocity_x.col(j);
-    av << Eigen::Vector4d::Zero(), m.velocity_v.col(j);
+    av << Eigen::Matrix<double, 5, 1>::Zero(), m.velocity_v.col(j);
     // Entries of order 1 (rates by angles: ~300 rad/s); h = 1e-7 gives truncation ~1e-14 x
     // third derivatives and cancellation ~1e-9 absolute.
     constexpr double kChainRuleTolerance = 1e-6;
@@ -147,7 +154,7 @@ TEST(FilmBearing, KinematicsChainRuleMatchesCentralDifferences) {
 
 TEST(FilmBearing, ForceJacobianWithoutStatesMatchesCentralDifferences) {
   for (const Vector2d& e : {Vector2d(9e-6, -12e-6), Vector2d(-15e-6, 4e-6)}) {
-    const System s = PinInEye(Main(CavitationModel::kReynolds), e, Vector2d(3e-4, -2e-4),
+    const System s = PinInEye(FedMain(CavitationModel::kReynolds), e, Vector2d(3e-4, -2e-4),
                               MovingEye(), kOmega, Vector3d(-0.004, 0.006, 0.001));
     ASSERT_EQ(s.num_force_states(), 0);
     const Eigen::VectorXd q = s.InitialPositions(), v = s.InitialVelocities();
@@ -168,7 +175,7 @@ TEST(FilmBearing, ForceJacobianWithoutStatesMatchesCentralDifferences) {
 }
 
 TEST(FilmBearing, IterationMatrixWithFilmStatesMatchesCentralDifferences) {
-  const System s = PinInEye(Main(CavitationModel::kMassConserving, 16, 4), Vector2d(9e-6, -12e-6),
+  const System s = PinInEye(FedMain(CavitationModel::kMassConserving, 16, 4), Vector2d(9e-6, -12e-6),
                             Vector2d(3e-4, -2e-4), MovingEye(), kOmega,
                             Vector3d(-0.004, 0.006, 0.001));
   const int n = 16 * 3;

@@ -15,6 +15,7 @@
 
 #include "libemb/common/error.h"
 #include "libemb/engine/cylinder_pressure.h"
+#include "libemb/engine/film_bearing.h"
 #include "libemb/mbs/analysis/analysis.h"
 #include "libemb/mbs/constraints/dof_analysis.h"
 #include "libemb/mbs/core/rotation.h"
@@ -216,6 +217,64 @@ analysis: {type: dynamic, t_end: 0.12, output_step: 0.01, rtol: 1.0e-7}
       {"bad.yaml", "grid_axial"});
   ExpectError("forces:\n  - {name: main, type: film-baring, i: journal, j: shell}\n",
               {"did you mean 'film-bearing'"});
+}
+
+// The film bearing's lubricant laws, journal holes, bore tilt and pressure scale reach the
+// bearing as given (its lubricant against one built from the same numbers here); the two
+// ways of giving the oil exclude each other, and a temperature in Celsius is refused.
+TEST(EngineSceneKeys, FilmBearingLubricantAndJournalHoles) {
+  const std::string film =
+      "forces:\n  - {name: big_end, type: film-bearing, i: journal, j: shell, radius: 0.024,\n"
+      "     length: 0.02, clearance: 2.5e-5, grid_circumferential: 24, grid_axial: 6,\n"
+      "     pressure_scale: 2.0e6, bore_tilt: [1.0e-4, -2.0e-4], journal_feed_ratio: 5.0e3,\n"
+      "     journal_oil_holes: [{angle: 0.5, axial_position: 0.001, diameter: 0.005,\n"
+      "                          supply_pressure: 4.0e5}],\n";
+  const std::string walther =
+      "     lubricant: {temperature_law: walther, nu_40: 7.0e-5, nu_100: 1.1e-5, density: 850,\n"
+      "                 temperature: 383.15, pressure_law: roelands,\n"
+      "                 pressure_viscosity_coefficient: 1.8e-8}}\n";
+  const Scene sc = ParseScene(std::string(kBase) + film + walther, "film.yaml");
+  const auto* bearing =
+      dynamic_cast<const mbs::FilmBearing*>(sc.system.force_elements().front().get());
+  ASSERT_NE(bearing, nullptr);
+  const tribology::ReynoldsBearingParameters& p = bearing->bearing().parameters();
+  EXPECT_EQ(p.lubricant.temperature_law, tribology::ViscosityTemperatureLaw::kWalther);
+  EXPECT_EQ(p.lubricant.pressure_law, tribology::PressureViscosityLaw::kRoelands);
+  tribology::LubricantParameters oil;
+  oil.temperature_law = tribology::ViscosityTemperatureLaw::kWalther;
+  oil.nu_40 = 7.0e-5;
+  oil.nu_100 = 1.1e-5;
+  oil.density = 850;
+  oil.temperature = 383.15;
+  EXPECT_EQ(bearing->bearing().lubricant().ambient_viscosity(),
+            tribology::Lubricant(oil, "oil").ambient_viscosity());
+  EXPECT_EQ(p.pressure_scale, 2.0e6);
+  EXPECT_EQ(p.bore_tilt, Eigen::Vector2d(1.0e-4, -2.0e-4));
+  EXPECT_EQ(p.journal_feed_ratio, 5.0e3);
+  ASSERT_EQ(p.journal_oil_holes.size(), 1u);
+  EXPECT_EQ(p.journal_oil_holes[0].supply_pressure, 4.0e5);
+  EXPECT_EQ(p.journal_oil_holes[0].axial_position, 0.001);
+  ExpectError(film + "     viscosity: 0.008, lubricant: {viscosity: 0.008}}\n",
+              {"big_end", "either `viscosity`", "got both"});
+  ExpectError(film + "}\n", {"big_end", "either `viscosity`", "got neither"});
+  ExpectError(film +
+                  "     lubricant: {temperature_law: vogel, vogel_a: 6.0e-5, vogel_b: 900,\n"
+                  "                 vogel_c: 140, temperature: 110}}\n",
+              {"temperature", "[200, 600]", "110"});
+  ExpectError(film +
+                  "     lubricant: {temperature_law: vogel, vogel_a: 6.0e-5, vogel_b: 900,\n"
+                  "                 vogel_c: 140, temperature: 380, nu_40: 7.0e-5}}\n",
+              {"nu_40", "belongs to temperature_law walther"});
+  ExpectError(film + "     lubricant: {viscosity: 0.008, temperature: 380}}\n",
+              {"temperature", "belongs to temperature_law vogel or walther"});
+  ExpectError(film + "     lubricant: {viscosity: 0.008, pressure_viscosity_coefficient: 2e-8}}\n",
+              {"pressure_viscosity_coefficient", "needs a pressure_law"});
+  ExpectError(film + "     lubricant: {viscosity: 0.008, pressure_law: baros}}\n",
+              {"pressure_law", "did you mean 'barus'"});
+  ExpectError(
+      "forces:\n  - {name: main, type: film-bearing, i: journal, j: shell, radius: 0.03,\n"
+      "     length: 0.02, clearance: 3.0e-5, viscosity: 0.0086, bore_tilt: [1.0e-4]}\n",
+      {"bore_tilt", "two"});
 }
 
 // The single-cylinder rigid engine (engine_1cyl_rigid.yaml) run to its periodic steady

@@ -52,7 +52,40 @@ inline JournalKinematics Moving() {
   k.tilt_rate = Eigen::Vector2d(-0.1e-3, 0.05e-3) * kMainSpeed;
   k.journal_speed = kMainSpeed;
   k.shell_speed = 0.1 * kMainSpeed;
+  k.journal_angle = 0.3;
   return k;
+}
+
+// The kinematic inputs in the Jacobians' column order: KinematicsLayout's positions, then
+// its velocities.
+constexpr int kNumInputs = KinematicsLayout::kNumPositions + KinematicsLayout::kNumVelocities;
+
+// Central-difference steps for the main bearing's inputs: 1e-6 of each input's scale (c, c/L,
+// their rates at the journal speed, 1e-6 rad of the journal angle, 1e-6 of the speed).
+inline Eigen::Matrix<double, kNumInputs, 1> InputSteps() {
+  const double c = kMainClearance, L = kMainLength, w = kMainSpeed;
+  Eigen::Matrix<double, kNumInputs, 1> s;
+  s << c, c, c / L, c / L, 1.0, c * w, c * w, c / L * w, c / L * w, w, w;
+  return 1e-6 * s;
+}
+
+// Adds d to input `col` (InputSteps' order).
+inline void Nudge(JournalKinematics* k, int col, double d) {
+  using KL = KinematicsLayout;
+  constexpr int v = KL::kNumPositions;
+  switch (col) {
+    case KL::kEx: k->eccentricity.x() += d; break;
+    case KL::kEy: k->eccentricity.y() += d; break;
+    case KL::kTiltX: k->tilt.x() += d; break;
+    case KL::kTiltY: k->tilt.y() += d; break;
+    case KL::kJournalAngle: k->journal_angle += d; break;
+    case v + KL::kEdotX: k->eccentricity_rate.x() += d; break;
+    case v + KL::kEdotY: k->eccentricity_rate.y() += d; break;
+    case v + KL::kTiltDotX: k->tilt_rate.x() += d; break;
+    case v + KL::kTiltDotY: k->tilt_rate.y() += d; break;
+    case v + KL::kOmegaJournal: k->journal_speed += d; break;
+    case v + KL::kOmegaShell: k->shell_speed += d; break;
+  }
 }
 
 // Components of the film force F along e (radial) and along z x e (tangential).

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "libemb/common/error.h"
@@ -28,9 +29,15 @@ constexpr double kBalanceTolerance = 1e-11;
 // the inputs (h^3): truncation ~1e-12, cancellation ~1e-10 of the entries' scale.
 constexpr double kJacobianTolerance = 1e-6;
 
-ReynoldsBearingParameters Supplied() {
+// The journal hole apart from the shell's, or over it (at pi/2 in Moving(): a feed that
+// reaches held nodes, which it must leave alone).
+enum class JournalHole { kApart, kOverTheShellHole };
+
+ReynoldsBearingParameters Supplied(JournalHole where = JournalHole::kApart) {
   ReynoldsBearingParameters p = MainBearing({24, 6}, CavitationModel::kMassConserving);
   p.oil_holes.push_back({0.5 * kPi, 0.0, 5e-3, 3e5});
+  const double angle = where == JournalHole::kApart ? 2.0 : 0.5 * kPi - Moving().journal_angle;
+  p.journal_oil_holes.push_back({angle, 1e-3, 4e-3, 4e5});  // 2.3 rad or pi/2 in Moving()
   p.lubricant.pressure_law = PressureViscosityLaw::kBarus;
   p.lubricant.pressure_viscosity_coefficient = 1.5e-8;
   return p;
@@ -52,8 +59,10 @@ void State(const ReynoldsBearing& b, VectorXd* u, VectorXd* u_dot) {
   }
 }
 
-TEST(FilmDae, QuasiStaticFilmIsAConsistentStart) {
-  const ReynoldsBearing b("main_1", Supplied());
+class FilmDaeHoles : public ::testing::TestWithParam<JournalHole> {};
+
+TEST_P(FilmDaeHoles, QuasiStaticFilmIsAConsistentStart) {
+  const ReynoldsBearing b("main_1", Supplied(GetParam()));
   FilmSolver s(b);
   BearingLoads ls, ld;
   ASSERT_TRUE(s.SolveQuasiStatic(Moving(), &ls).ok());
@@ -65,8 +74,8 @@ TEST(FilmDae, QuasiStaticFilmIsAConsistentStart) {
   EXPECT_LT((ls.Stacked() - ld.Stacked()).norm(), kConsistencyTolerance * ls.Stacked().norm());
 }
 
-TEST(FilmDae, ResidualSumIsTheMassBalance) {
-  const ReynoldsBearing b("main_1", Supplied());
+TEST_P(FilmDaeHoles, ResidualSumIsTheMassBalance) {
+  const ReynoldsBearing b("main_1", Supplied(GetParam()));
   VectorXd u, u_dot, r;
   State(b, &u, &u_dot);
   FilmDae dae(b);
@@ -79,9 +88,9 @@ TEST(FilmDae, ResidualSumIsTheMassBalance) {
   EXPECT_NEAR(sum, l.storage_rate + l.side_flow - l.supply_flow, kBalanceTolerance * scale);
 }
 
-TEST(FilmDae, JacobianBlocksMatchCentralDifferences) {
+TEST_P(FilmDaeHoles, JacobianBlocksMatchCentralDifferences) {
   using KL = KinematicsLayout;
-  const ReynoldsBearing b("main_1", Supplied());
+  const ReynoldsBearing b("main_1", Supplied(GetParam()));
   VectorXd u, u_dot;
   State(b, &u, &u_dot);
   FilmDae dae(b);
@@ -124,31 +133,17 @@ TEST(FilmDae, JacobianBlocksMatchCentralDifferences) {
     dcol[k] = 0.0;
     EXPECT_LT(dcol.cwiseAbs().maxCoeff(), 1e-12 * J.dr_du_dot.cwiseAbs().maxCoeff() + 1e-300);
   }
-  // Kinematics.
-  const double c = kMainClearance, L = kMainLength, w = kMainSpeed;
-  const double steps[10] = {1e-6 * c, 1e-6 * c, 1e-6 * c / L, 1e-6 * c / L, 1e-6 * c * w,
-                            1e-6 * c * w, 1e-6 * c / L * w, 1e-6 * c / L * w, 1e-6 * w, 1e-6 * w};
-  Eigen::MatrixXd dr_dk(n, 10);
+  // Kinematics (the journal hole makes the angle's column non-zero: checked below).
+  const Eigen::Matrix<double, kNumInputs, 1> steps = InputSteps();
+  Eigen::MatrixXd dr_dk(n, kNumInputs);
   dr_dk << J.dr_dx, J.dr_dv;
-  Eigen::Matrix<double, 6, 10> dy_dk;
+  EXPECT_GT(J.dr_dx.col(KL::kJournalAngle).cwiseAbs().maxCoeff(), 0.0);
+  Eigen::Matrix<double, 6, kNumInputs> dy_dk;
   dy_dk << J.loads.d_position, J.loads.d_velocity;
-  for (int col = 0; col < 10; ++col) {
+  for (int col = 0; col < kNumInputs; ++col) {
     JournalKinematics kp = Moving(), km = Moving();
-    for (auto [k, sign] : {std::pair{&kp, 1.0}, {&km, -1.0}}) {
-      const double d = sign * steps[col];
-      switch (col) {
-        case KL::kEx: k->eccentricity.x() += d; break;
-        case KL::kEy: k->eccentricity.y() += d; break;
-        case KL::kTiltX: k->tilt.x() += d; break;
-        case KL::kTiltY: k->tilt.y() += d; break;
-        case 4 + KL::kEdotX: k->eccentricity_rate.x() += d; break;
-        case 4 + KL::kEdotY: k->eccentricity_rate.y() += d; break;
-        case 4 + KL::kTiltDotX: k->tilt_rate.x() += d; break;
-        case 4 + KL::kTiltDotY: k->tilt_rate.y() += d; break;
-        case 4 + KL::kOmegaJournal: k->journal_speed += d; break;
-        case 4 + KL::kOmegaShell: k->shell_speed += d; break;
-      }
-    }
+    Nudge(&kp, col, steps[col]);
+    Nudge(&km, col, -steps[col]);
     eval(u, u_dot, kp, &rp, &yp);
     eval(u, u_dot, km, &rm, &ym);
     const VectorXd col_r = (rp - rm) / (2 * steps[col]);
@@ -163,6 +158,13 @@ TEST(FilmDae, JacobianBlocksMatchCentralDifferences) {
     }
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(JournalHole, FilmDaeHoles,
+                         ::testing::Values(JournalHole::kApart, JournalHole::kOverTheShellHole),
+                         [](const ::testing::TestParamInfo<JournalHole>& i) {
+                           return i.param == JournalHole::kApart ? std::string("Apart")
+                                                                 : std::string("OverTheShellHole");
+                         });
 
 // With the smoothed switch, states inside its band: the storage's slope changes with u there,
 // and dr/du carries that change (A h s'(u) u_dot, here ~10 % of the diagonal: without it the

@@ -32,6 +32,13 @@ ReynoldsBearingParameters Case(CavitationModel model) {
   return p;
 }
 
+// Case with an oil hole in the journal too (at 2.3 rad in Moving(), off the mid-plane).
+ReynoldsBearingParameters CaseWithJournalHole(CavitationModel model) {
+  ReynoldsBearingParameters p = Case(model);
+  p.journal_oil_holes.push_back({2.0, 2e-3, 4e-3, 4e5});
+  return p;
+}
+
 Eigen::Matrix<double, 6, 1> Loads(FilmSolver& s, const JournalKinematics& k) {
   BearingLoads l;
   const FilmSolveInfo info = s.SolveQuasiStatic(k, &l);
@@ -48,34 +55,21 @@ void ExpectJacobianMatchesDifferences(const ReynoldsBearingParameters& p,
   LoadJacobian J;
   const FilmSolveInfo info = s.SolveQuasiStatic(k0, &loads, &J);
   ASSERT_TRUE(info.ok()) << label << ": " << info.message;
-  Eigen::Matrix<double, 6, 10> analytic, fd;
+  Eigen::Matrix<double, 6, kNumInputs> analytic, fd;
   analytic << J.d_position, J.d_velocity;
-  const double c = kMainClearance, L = kMainLength, w = kMainSpeed;
-  const double steps[10] = {1e-6 * c,     1e-6 * c,     1e-6 * c / L, 1e-6 * c / L, 1e-6 * c * w,
-                            1e-6 * c * w, 1e-6 * c / L * w, 1e-6 * c / L * w, 1e-6 * w, 1e-6 * w};
-  for (int col = 0; col < 10; ++col) {
+  const Eigen::Matrix<double, kNumInputs, 1> steps = InputSteps();
+  for (int col = 0; col < kNumInputs; ++col) {
     JournalKinematics kp = k0, km = k0;
-    auto nudge = [&](JournalKinematics& k, double d) {
-      switch (col) {
-        case KL::kEx: k.eccentricity.x() += d; break;
-        case KL::kEy: k.eccentricity.y() += d; break;
-        case KL::kTiltX: k.tilt.x() += d; break;
-        case KL::kTiltY: k.tilt.y() += d; break;
-        case 4 + KL::kEdotX: k.eccentricity_rate.x() += d; break;
-        case 4 + KL::kEdotY: k.eccentricity_rate.y() += d; break;
-        case 4 + KL::kTiltDotX: k.tilt_rate.x() += d; break;
-        case 4 + KL::kTiltDotY: k.tilt_rate.y() += d; break;
-        case 4 + KL::kOmegaJournal: k.journal_speed += d; break;
-        case 4 + KL::kOmegaShell: k.shell_speed += d; break;
-      }
-    };
-    nudge(kp, steps[col]);
-    nudge(km, -steps[col]);
+    Nudge(&kp, col, steps[col]);
+    Nudge(&km, col, -steps[col]);
     fd.col(col) = (Loads(s, kp) - Loads(s, km)) / (2.0 * steps[col]);
   }
+  if (!p.journal_oil_holes.empty())
+    EXPECT_GT(analytic.col(KL::kJournalAngle).cwiseAbs().maxCoeff(), 0.0) << label;
   for (int row = 0; row < 6; ++row) {
-    // Scale: the row's largest entry, per group of columns with one unit (x, v, omega).
-    for (auto [first, count] : {std::pair{0, 2}, {2, 2}, {4, 2}, {6, 2}, {8, 2}}) {
+    // Scale: the row's largest entry, per group of columns with one unit (e, gamma, psi, e',
+    // gamma', omega).
+    for (auto [first, count] : {std::pair{0, 2}, {2, 2}, {4, 1}, {5, 2}, {7, 2}, {9, 2}}) {
       const double scale = std::max(analytic.row(row).segment(first, count).cwiseAbs().maxCoeff(),
                                     fd.row(row).segment(first, count).cwiseAbs().maxCoeff());
       for (int col = first; col < first + count; ++col)
@@ -88,11 +82,16 @@ void ExpectJacobianMatchesDifferences(const ReynoldsBearingParameters& p,
 TEST(FilmSolver, LoadJacobianMatchesCentralDifferences) {
   for (CavitationModel m : {CavitationModel::kMassConserving, CavitationModel::kReynolds,
                             CavitationModel::kHalfSommerfeld, CavitationModel::kFullSommerfeld})
-    ExpectJacobianMatchesDifferences(Case(m), Moving(), "model " + std::to_string(int(m)));
+    ExpectJacobianMatchesDifferences(CaseWithJournalHole(m), Moving(),
+                                     "model " + std::to_string(int(m)));
+  // The journal hole over the shell's (pi/2 in Moving()): its feed must leave held nodes be.
+  ReynoldsBearingParameters over = Case(CavitationModel::kMassConserving);
+  over.journal_oil_holes.push_back({0.5 * kPi - Moving().journal_angle, 0.0, 4e-3, 4e5});
+  ExpectJacobianMatchesDifferences(over, Moving(), "journal hole over the shell hole");
 }
 
 TEST(FilmSolver, LoadJacobianWithPiezoviscosityAndContact) {
-  ReynoldsBearingParameters barus = Case(CavitationModel::kMassConserving);
+  ReynoldsBearingParameters barus = CaseWithJournalHole(CavitationModel::kMassConserving);
   barus.lubricant.pressure_law = PressureViscosityLaw::kBarus;
   barus.lubricant.pressure_viscosity_coefficient = 1.5e-8;
   // Peak pressure ~30 MPa: alpha p ~ 0.5 (with rigid surfaces Barus has no solution once the
@@ -104,7 +103,7 @@ TEST(FilmSolver, LoadJacobianWithPiezoviscosityAndContact) {
   roelands.lubricant.pressure_law = PressureViscosityLaw::kRoelands;
   ExpectJacobianMatchesDifferences(roelands, heavy, "Roelands");
   // Asperity contact: h_min = c - 0.985 c = 0.45 um = 1.5 sigma at the loaded edge.
-  ReynoldsBearingParameters rough = Case(CavitationModel::kMassConserving);
+  ReynoldsBearingParameters rough = CaseWithJournalHole(CavitationModel::kMassConserving);
   rough.asperity_contact = AsperityContactParameters{};
   rough.asperity_contact->roughness = 0.3e-6;
   rough.asperity_contact->composite_modulus = 2.2e11;

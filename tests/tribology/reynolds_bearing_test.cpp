@@ -108,6 +108,24 @@ TEST(ReynoldsBearing, RefusesBadSupplyFeatures) {
       "overlaps");
 }
 
+TEST(ReynoldsBearing, RefusesBadJournalOilHoles) {
+  const double nan = std::nan("");
+  auto hole = [](double angle, double z, double d, double ps) {
+    return [=](ReynoldsBearingParameters& p) {
+      p.journal_oil_holes.push_back({0.0, 0.0, 5e-3, 3e5});  // a good one first
+      p.journal_oil_holes.push_back({angle, z, d, ps});
+    };
+  };
+  ExpectInputError(hole(nan, 0.0, 5e-3, 3e5), "journal_oil_holes[1].angle");
+  ExpectInputError(hole(0.0, nan, 5e-3, 3e5), "journal_oil_holes[1].axial_position");
+  ExpectInputError(hole(0.0, 0.0, 0.0, 3e5), "journal_oil_holes[1].diameter");
+  ExpectInputError(hole(0.0, 0.0, 5e-3, -1.0), "journal_oil_holes[1].supply_pressure");
+  ExpectInputError(hole(0.0, 0.0, 0.03, 3e5), "journal_oil_holes[1].diameter below");
+  ExpectInputError(hole(0.0, 0.008, 5e-3, 3e5), "journal_oil_holes[1] reaches outside");
+  ExpectInputError([](auto& p) { p.journal_feed_ratio = 0.0; }, "journal_feed_ratio");
+  ExpectInputError([&](auto& p) { p.journal_feed_ratio = nan; }, "journal_feed_ratio");
+}
+
 TEST(ReynoldsBearing, RefusesBadNumericalSettings) {
   ExpectInputError([](auto& p) { p.pressure_scale = 0.0; }, "pressure_scale");
   ExpectInputError([](auto& p) { p.max_iterations = 0; }, "max_iterations");
