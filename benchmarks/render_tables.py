@@ -823,6 +823,28 @@ def reynolds_bearing_ocvirk(res):
                  rows), [doc]
 
 
+def film_engine(res):
+    doc = res("film_engine")
+
+    def pct(r, key):
+        return num(100.0 * r[key], "+.1f") if key in r else "–"
+
+    def get(r, key, f):
+        return f(r[key]) if key in r else "–"
+
+    rows = [[r["route"], r["status"], r["cycles"], thousands(r["steps"]), sig3(r["cpu_s"]), sig3(r.get("cpu_s_per_cycle")),
+             get(r, "peak_load_n", lambda x: sig3(x / 1e3)), pct(r, "peak_load_vs_reference"),
+             get(r, "min_film_m", lambda x: num(x * 1e6, ".2f")), pct(r, "min_film_vs_reference"),
+             get(r, "peak_pressure_pa", lambda x: sig3(x / 1e6)),
+             get(r, "mean_friction_power_w", sig3), pct(r, "mean_friction_power_vs_reference"),
+             get(r, "mean_cavitated_fraction", lambda x: num(x, ".2f"))]
+            for r in doc["data"]["runs"]]
+    return table(["route", "status", "cycles", "IDA steps", "CPU [s]",
+                  "CPU per cycle [s]", "peak load [kN]", "vs reference %", "h_min [µm]",
+                  "vs reference %", "p_max [MPa]", "friction [W]", "vs reference %",
+                  "cavitated"], rows), [doc]
+
+
 def validation_status(res):
     """The README's status of validation: one row per yardstick, the worst agreement its
     benchmark measured, the results file and the page that has the whole table."""
@@ -905,7 +927,7 @@ TABLES = {f.__name__: f for f in [
     inline4_beam, inline4_profile, inline4_profile_before, mbs_work_precision, mbs_multiplier_rule,
     mbs_chains, mbs_residual, driveline_clonk, driveline_clonk_bands, steady_state, sweep_inline4, runup_vs_sweep,
     order_cuts_inline4, validation_status, reynolds_bearing_grids, reynolds_bearing_reference,
-    reynolds_bearing_solvers, reynolds_bearing_ocvirk]}
+    reynolds_bearing_solvers, reynolds_bearing_ocvirk, film_engine]}
 
 
 def render_table(name, res):

@@ -96,18 +96,25 @@ def rel_rms(a, b):
     return float(np.sqrt(np.sum((a - b) ** 2) / np.sum(b ** 2)))
 
 
-def run_route(emb, work, name, scene, channels, start, factor):
-    yaml = os.path.join(work, name + ".yaml")
-    variant(scene, channels, start, factor, yaml)
-    h5 = os.path.join(work, name + ".h5")
+def timed_run(emb, yaml, h5, name, script):
+    """`emb run YAML -o H5 --json`: its summary, CPU seconds (children's rusage) and wall
+    seconds; exits naming `script` and the route if emb failed other than numerically."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     r = subprocess.run([emb, "run", yaml, "-q", "--json", "-o", h5], capture_output=True, text=True)
     wall = time.perf_counter() - t0
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if r.returncode not in (0, 3):
-        sys.exit(f"steady_state.py: {name}: emb run failed ({r.returncode}):\n{r.stderr}")
-    summary = json.loads(r.stdout)["summary"]
+        sys.exit(f"{script}: {name}: emb run failed ({r.returncode}):\n{r.stderr}")
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return json.loads(r.stdout)["summary"], cpu, wall
+
+
+def run_route(emb, work, name, scene, channels, start, factor):
+    yaml = os.path.join(work, name + ".yaml")
+    variant(scene, channels, start, factor, yaml)
+    h5 = os.path.join(work, name + ".h5")
+    summary, cpu, wall = timed_run(emb, yaml, h5, name, "steady_state.py")
     with h5py.File(h5, "r") as f:
         per = cycles_of(f, channels)
         converged = bool(int(f.attrs["steady_state_converged"]))
@@ -131,8 +138,7 @@ def run_route(emb, work, name, scene, channels, start, factor):
            "channels": channels, "tolerance": TOLERANCE, "converged": converged,
            "cycles": cycles,
            "change": summary.get("steady_state_change"), "steps": summary["steps"],
-           "cpu_s": (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime),
-           "wall_s": wall, "seconds_run": summary["seconds_run"],
+           "cpu_s": cpu, "wall_s": wall, "seconds_run": summary["seconds_run"],
            "cycle1_error": err[0], "cycle1_worst_channel": worst[0],
            "cycle2_error": err[1], "cycle2_worst_channel": worst[1],
            "start_note": summary.get("elastic_start", ""),

@@ -233,7 +233,7 @@ std::vector<ElementOutput> FilmBearing::DoOutputs() const {
   return {{"h_min", "m"},           {"h_min_angle", "rad"},       {"p_max", "Pa"},
           {"p_max_angle", "rad"},   {"friction_power", "W"},      {"side_flow", "m^3/s"},
           {"supply_flow", "m^3/s"}, {"eccentricity_ratio", "-"}, {"cavitated_fraction", "-"},
-          {"contact_force", "N"}};
+          {"contact_force", "N"},   {"eccentricity_x", "m"},      {"eccentricity_y", "m"}};
 }
 
 bool FilmBearing::DoCalcOutputs(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> out) const {
@@ -243,7 +243,7 @@ bool FilmBearing::DoCalcOutputs(const ForceContext& ctx, Eigen::Ref<Eigen::Vecto
   out << l.min_film, l.min_film_angle, l.max_pressure, l.max_pressure_angle, l.power_loss,
       l.side_flow, l.supply_flow,
       ev.motion.kin.eccentricity.norm() / bearing_.parameters().clearance, l.cavitated_fraction,
-      l.contact_force.norm();
+      l.contact_force.norm(), ev.motion.kin.eccentricity.x(), ev.motion.kin.eccentricity.y();
   return true;
 }
 

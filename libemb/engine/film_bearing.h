@@ -43,8 +43,9 @@
 /// Outputs (channels "<name>.<output>", ForceElement::outputs): h_min [m] and its angle
 /// h_min_angle [rad] (phi in the shell's axes), p_max [Pa] and p_max_angle [rad],
 /// friction_power [W] (the power the film takes from the relative motion), side_flow and
-/// supply_flow [m^3/s], eccentricity_ratio [-] (|e| / c), cavitated_fraction [-] and
-/// contact_force [N] (the asperities' share, with a contact model).
+/// supply_flow [m^3/s], eccentricity_ratio [-] (|e| / c), cavitated_fraction [-],
+/// contact_force [N] (the asperities' share, with a contact model) and eccentricity_x,
+/// eccentricity_y [m] (e in the shell's axes: the journal's orbit).
 ///
 /// Failures are the run's, not exceptions (ForceContext::Fail): a journal that reaches the
 /// shell without an asperity-contact model, a pressure beyond the viscosity law, a film that

@@ -225,6 +225,18 @@ void JournalBearing::DoAddForceJacobian(const ForceContext& ctx, ForceJacobianSi
   ScatterWrenchPairJacobian(I, J, dI, dJ, F, T, dF_x, dT_x, dF_v, dT_v, sink);
 }
 
+std::vector<ElementOutput> JournalBearing::DoOutputs() const {
+  return {{"h_min", "m"}, {"eccentricity_ratio", "-"}, {"friction_power", "W"}};
+}
+
+bool JournalBearing::DoCalcOutputs(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> out) const {
+  const RelativeMotion rel = CalcRelativeMotion(MarkerPair(ctx, i_, j_));
+  if (!Inside(ctx, rel)) return false;
+  const double e = rel.x.head<2>().norm();
+  out << p_.clearance - e, e / p_.clearance, DoCalcDissipatedPower(ctx);
+  return true;
+}
+
 double JournalBearing::DoCalcDissipatedPower(const ForceContext& ctx) const {
   const RelativeMotion rel = CalcRelativeMotion(MarkerPair(ctx, i_, j_));
   if (!Inside(ctx, rel)) return 0.0;

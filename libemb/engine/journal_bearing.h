@@ -84,6 +84,11 @@ class JournalBearing final : public ForceElement {
   std::vector<int> DoMarkers() const override { return {i_, j_}; }
   bool DoCalcLoad(const ForceContext& ctx, Eigen::Matrix<double, 6, 1>* load) const override;
   bool DoReportsLoad() const override { return true; }
+  /// Outputs (channels "<name>.<output>"), as the film bearing's of the same names:
+  /// h_min = c - |e| [m], eccentricity_ratio = |e| / c [-], friction_power [W] (the
+  /// dissipated power).
+  std::vector<ElementOutput> DoOutputs() const override;
+  bool DoCalcOutputs(const ForceContext& ctx, Eigen::Ref<Eigen::VectorXd> out) const override;
 
  private:
   /// The film load of the relative motion of I in J (relative_motion.h): e = x.head<2>,

@@ -37,6 +37,33 @@ constexpr double kTaperSpacings = 1.2;
 
 }  // namespace
 
+namespace {
+
+// The checks every circular hole gets (a shell's or a journal's): finite centre, positive
+// diameter, supply pressure >= 0, inside the bearing's length.
+template <class Hole>
+void CheckHole(const BearingGrid& grid, const Hole& o, const std::string& key,
+               const std::string& who) {
+  const double half_length = 0.5 * grid.length();
+  EMB_THROW_IF(!std::isfinite(o.angle),
+               who << ": expected a finite " << key << ".angle, got " << o.angle);
+  EMB_THROW_IF(!std::isfinite(o.axial_position),
+               who << ": expected a finite " << key << ".axial_position, got " << o.axial_position);
+  EMB_THROW_IF(!(std::isfinite(o.diameter) && o.diameter > 0.0),
+               who << ": expected a positive " << key << ".diameter, got " << o.diameter << " m");
+  EMB_THROW_IF(!(std::isfinite(o.supply_pressure) && o.supply_pressure >= 0.0),
+               who << ": expected a supply pressure >= 0 Pa (gauge) for " << key
+                   << ".supply_pressure, got " << o.supply_pressure << " Pa");
+  EMB_THROW_IF(std::abs(o.axial_position) + 0.5 * o.diameter > half_length * (1 + kBorderSlack),
+               who << ": " << key
+                   << " reaches outside the bearing: expected |axial_position| "
+                      "+ diameter/2 <= L/2 = "
+                   << half_length << " m, got " << std::abs(o.axial_position) + 0.5 * o.diameter
+                   << " m");
+}
+
+}  // namespace
+
 void JournalFeed::clear() {
   unknown.clear();
   conductance.clear();
@@ -46,31 +73,14 @@ void JournalFeed::clear() {
 
 void CheckJournalOilHoles(const BearingGrid& grid, const std::vector<JournalOilHole>& holes,
                           const std::string& who) {
-  const double half_length = 0.5 * grid.length();
   for (size_t h = 0; h < holes.size(); ++h) {
-    const JournalOilHole& o = holes[h];
     const std::string key = "journal_oil_holes[" + std::to_string(h) + "]";
-    EMB_THROW_IF(!std::isfinite(o.angle),
-                 who << ": expected a finite " << key << ".angle, got " << o.angle);
-    EMB_THROW_IF(!std::isfinite(o.axial_position), who << ": expected a finite " << key
-                                                       << ".axial_position, got "
-                                                       << o.axial_position);
-    EMB_THROW_IF(!(std::isfinite(o.diameter) && o.diameter > 0.0),
-                 who << ": expected a positive " << key << ".diameter, got " << o.diameter << " m");
-    EMB_THROW_IF(!(std::isfinite(o.supply_pressure) && o.supply_pressure >= 0.0),
-                 who << ": expected a supply pressure >= 0 Pa (gauge) for " << key
-                     << ".supply_pressure, got " << o.supply_pressure << " Pa");
+    CheckHole(grid, holes[h], key, who);
     // A hole of the journal's radius or larger wraps around it (the weights' angle would
     // flip sign across the bearing).
-    EMB_THROW_IF(o.diameter >= grid.radius(),
+    EMB_THROW_IF(holes[h].diameter >= grid.radius(),
                  who << ": expected " << key << ".diameter below the journal's radius "
-                     << grid.radius() << " m, got " << o.diameter << " m");
-    EMB_THROW_IF(std::abs(o.axial_position) + 0.5 * o.diameter > half_length * (1 + kBorderSlack),
-                 who << ": " << key
-                     << " reaches outside the bearing: expected |axial_position| "
-                        "+ diameter/2 <= L/2 = "
-                     << half_length << " m, got " << std::abs(o.axial_position) + 0.5 * o.diameter
-                     << " m");
+                     << grid.radius() << " m, got " << holes[h].diameter << " m");
   }
 }
 
@@ -165,16 +175,7 @@ SupplyMap MarkSupplyNodes(const BearingGrid& grid, const std::vector<OilHole>& h
   for (size_t h = 0; h < holes.size(); ++h) {
     const OilHole& o = holes[h];
     const std::string key = "oil_holes[" + std::to_string(h) + "]";
-    finite(o.angle, key + ".angle");
-    finite(o.axial_position, key + ".axial_position");
-    positive(o.diameter, key + ".diameter", "m");
-    pressure(o.supply_pressure, key + ".supply_pressure");
-    EMB_THROW_IF(std::abs(o.axial_position) + 0.5 * o.diameter > half_length * (1 + kBorderSlack),
-                 who << ": " << key
-                     << " reaches outside the bearing: expected |axial_position| "
-                        "+ diameter/2 <= L/2 = "
-                     << half_length << " m, got " << std::abs(o.axial_position) + 0.5 * o.diameter
-                     << " m");
+    CheckHole(grid, o, key, who);
     map.pressure.push_back(o.supply_pressure);
     const double r2 = 0.25 * o.diameter * o.diameter * (1.0 + kBorderSlack);
     const int count = mark(static_cast<int>(h), key, [&](int i, int j) {

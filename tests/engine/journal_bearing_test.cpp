@@ -177,6 +177,13 @@ TEST(JournalBearing, DissipationIsNonNegativeAndMinusThePowerOfTheLoads) {
     // The loads are F in the bearing plane and a couple about z_J, so their power is
     // F . e' + T w whatever the tilt: the dissipation is exactly its negative.
     EXPECT_NEAR(dissipated, -power, 1e-12 * std::max(1.0, std::abs(power))) << trial;
+    // The outputs: h_min = c - |e|, |e| / c and the dissipated power (round-off of the
+    // kinematics: 1e-15 of the positions' scale).
+    Eigen::VectorXd out(3);
+    ASSERT_TRUE(s.force_elements()[0]->CalcOutputs(ctx, out));
+    EXPECT_NEAR(out[0], p.clearance - e.norm(), 1e-14);
+    EXPECT_NEAR(out[1], e.norm() / p.clearance, 1e-12);
+    EXPECT_EQ(out[2], dissipated);
   }
 }
 

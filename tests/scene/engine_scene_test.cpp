@@ -200,6 +200,9 @@ analysis: {type: dynamic, t_end: 0.12, output_step: 0.01, rtol: 1.0e-7}
   // h_min at a grid node: c - |e| to within |e| (1 - cos(dphi/2)), dphi = 15 degrees.
   EXPECT_GE(output("h_min"), c - e.norm() - 1e-15);
   EXPECT_LE(output("h_min"), c - e.norm() * std::cos(std::numbers::pi / 24));
+  // The orbit's coordinates: e in the bore's axes (the bore is the world's at the origin).
+  EXPECT_NEAR(output("eccentricity_x"), e.x(), 1e-15);
+  EXPECT_NEAR(output("eccentricity_y"), e.y(), 1e-15);
   EXPECT_NEAR(output("eccentricity_ratio"), e.norm() / c, 1e-12);
   EXPECT_GT(output("p_max"), 1e6);  // Pa: 981 N on 20 mm x 60 mm
   EXPECT_GT(output("friction_power"), 0.0);

@@ -15,6 +15,8 @@ order-spectrum PNGs (written, valid PNG), and an unknown channel is an error nam
 Campbell plot (tools/plots/campbell_plot.py): the diagram of the Jeffcott disc scene gives a PNG.
 Clonk plots (tools/plots/clonk_plots.py): a lash run with output points on the vibrating tube
 gives its five PNGs and metrics that count the results file's contacts.
+Bearing plots (tools/plots/bearing_plots.py): a rotor in a film bearing gives the orbit and
+film PNGs, the orbit agreeing with the element's eccentricity_ratio channel.
 """
 import json
 import os
@@ -353,9 +355,50 @@ analysis: {type: dynamic, t_end: 0.03, output_step: 1.0e-4, rtol: 1.0e-7}
           "unknown output point channel: non-zero exit naming it (%s)" % r.stderr.strip()[-200:])
 
 
+def check_bearing_plots(work):
+    """bearing_plots.py on a rotor in a film bearing (Swift-Stieber, coarse grid): the orbit and
+    film PNGs; the orbit's largest e/c from eccentricity_x, _y and the scene's clearance equals
+    the element's own eccentricity_ratio channel; an element that is not a film bearing is
+    refused, naming it and the film bearings there are."""
+    scene = os.path.join(work, "rotor.yaml")
+    with open(scene, "w") as f:
+        f.write("bodies:\n  - {name: rotor, mass: 100.0, inertia: [6.0, 6.0, 10.0], "
+                "position: [0, -5.0e-6, 0], angular_velocity: [0, 0, 314.159]}\n"
+                "markers:\n  - {name: bore, body: ground}\n  - {name: journal, body: rotor}\n"
+                "joints:\n  - {name: plane, type: planar, i: journal, j: bore}\n"
+                "forces:\n  - {name: main, type: film-bearing, i: journal, j: bore, radius: 0.03,"
+                " length: 0.02, clearance: 3.0e-5, viscosity: 0.0086, grid_circumferential: 16,"
+                " grid_axial: 4, cavitation: reynolds}\n"
+                "gravity: [0, -9.81, 0]\n"
+                "analysis: {type: dynamic, t_end: 0.02, output_step: 5.0e-4}\n")
+    r = run([EMB, "run", scene, "-q", "-o", "rotor.h5"], work)
+    if r.returncode != 0:
+        sys.exit("emb run (film rotor) failed: " + r.stderr)
+    script = os.path.join(SOURCE, "tools", "plots", "bearing_plots.py")
+    r = run(["/usr/bin/python3", script, "rotor.h5", "--bearing", "main", "--out", "bp",
+             "--json"], work)
+    check(r.returncode == 0, "bearing_plots.py exit code 0: " + r.stderr)
+    if r.returncode == 0:
+        summary = json.loads(r.stdout)
+        for png in summary["written"]:
+            check(is_png(os.path.join(work, png)), "bearing plot %s is a PNG" % png)
+        with h5py.File(os.path.join(work, "rotor.h5"), "r") as f:
+            channels = [c.decode() for c in f["model/force_output_channels"][:]]
+            ratio = f["forces/outputs"][:, channels.index("main.eccentricity_ratio")]
+        check(abs(summary["max_eccentricity_ratio"] - ratio.max()) <= 1e-12,
+              "orbit's largest e/c %.15g equals the eccentricity_ratio channel's %.15g"
+              % (summary["max_eccentricity_ratio"], ratio.max()))
+        check(summary["samples"] == len(ratio), "orbit over every sample")
+    r = run(["/usr/bin/python3", script, "rotor.h5", "--bearing", "plane", "--out", "bp2"], work)
+    check(r.returncode != 0 and "'plane'" in r.stderr and "main" in r.stderr
+          and not os.path.exists(os.path.join(work, "bp2")),
+          "an element that is not a film bearing is refused, naming it: " + r.stderr)
+
+
 def main():
     work = tempfile.mkdtemp(prefix="emb_animate_")
     check_readme_example(work)
+    check_bearing_plots(work)
     check_sensor_and_force_channels(work)
     geo = os.path.join(SOURCE, "meshes", "tube.geo")
     coarse = ["--set", "n_wall=1", "--set", "n_circ=8", "--set", "h=0.1", "--set", "L=0.6",

@@ -32,6 +32,16 @@ ReynoldsBearingParameters Supplied() {
   return p;
 }
 
+// A journal orbiting at 0.35 of its speed with a radius pulsing between 0.45 and 0.85 c: the
+// cavitated zone travels around the shell and changes size.
+constexpr double kWhirlSpeed = 0.35 * kMainSpeed;
+JournalKinematics Whirling(double t) {
+  const double eps = 0.65 + 0.2 * std::sin(2.0 * kWhirlSpeed * t);
+  return Rotating(eps * kMainClearance *
+                      Vector2d(std::cos(kWhirlSpeed * t), std::sin(kWhirlSpeed * t)),
+                  kMainSpeed);
+}
+
 struct Events {
   int ruptures{0}, reformations{0};
   double worst_balance{0.0};
@@ -69,18 +79,8 @@ Events Stepping(const ReynoldsBearing& b, const std::function<JournalKinematics(
 
 TEST(FilmSolverTransient, WhirlingJournalConservesMassPerStep) {
   const ReynoldsBearing b("big_end_1", Supplied());
-  // A journal orbiting at 0.35 of its speed with a radius pulsing between 0.45 and 0.85 c:
-  // the cavitated zone travels around the shell and changes size.
-  const double Omega = 0.35 * kMainSpeed;
-  auto kin = [&](double t) {
-    const double eps = 0.65 + 0.2 * std::sin(2.0 * Omega * t);
-    JournalKinematics k = Rotating(eps * kMainClearance * Vector2d(std::cos(Omega * t),
-                                                                   std::sin(Omega * t)),
-                                   kMainSpeed);
-    return k;
-  };
-  const double period = 2.0 * kPi / Omega;
-  const Events ev = Stepping(b, kin, period / 120.0, 240);
+  const double period = 2.0 * kPi / kWhirlSpeed;
+  const Events ev = Stepping(b, Whirling, period / 120.0, 240);
   EXPECT_LT(ev.worst_balance, kMassBalanceTolerance);
   EXPECT_GT(ev.ruptures, 0);
   EXPECT_GT(ev.reformations, 0);
@@ -108,16 +108,12 @@ TEST(FilmSolverTransient, RotatingJournalHoleConservesMassPerStep) {
   ReynoldsBearingParameters p = MainBearing({48, 8}, CavitationModel::kMassConserving);
   p.journal_oil_holes.push_back({0.0, 0.0, 4e-3, 3e5});
   const ReynoldsBearing b("big_end_1", p);
-  const double Omega = 0.35 * kMainSpeed;
-  auto kin = [&](double t) {
-    const double eps = 0.65 + 0.2 * std::sin(2.0 * Omega * t);
-    JournalKinematics k = Rotating(eps * kMainClearance * Vector2d(std::cos(Omega * t),
-                                                                   std::sin(Omega * t)),
-                                   kMainSpeed);
+  const double period = 2.0 * kPi / kWhirlSpeed;
+  auto kin = [](double t) {
+    JournalKinematics k = Whirling(t);
     k.journal_angle = kMainSpeed * t;
     return k;
   };
-  const double period = 2.0 * kPi / Omega;
   const Events ev = Stepping(b, kin, period / 240.0, 480);
   EXPECT_LT(ev.worst_balance, kMassBalanceTolerance);
   EXPECT_GT(ev.ruptures, 0);

@@ -120,7 +120,12 @@ TEST(ReynoldsBearing, RefusesBadJournalOilHoles) {
   ExpectInputError(hole(0.0, nan, 5e-3, 3e5), "journal_oil_holes[1].axial_position");
   ExpectInputError(hole(0.0, 0.0, 0.0, 3e5), "journal_oil_holes[1].diameter");
   ExpectInputError(hole(0.0, 0.0, 5e-3, -1.0), "journal_oil_holes[1].supply_pressure");
-  ExpectInputError(hole(0.0, 0.0, 0.03, 3e5), "journal_oil_holes[1].diameter below");
+  ExpectInputError(  // a long bearing (L 80 mm > R 30 mm), where such a hole fits axially
+      [&](auto& p) {
+        p.length = 0.08;
+        hole(0.0, 0.0, 0.035, 3e5)(p);
+      },
+      "journal_oil_holes[1].diameter below");
   ExpectInputError(hole(0.0, 0.008, 5e-3, 3e5), "journal_oil_holes[1] reaches outside");
   ExpectInputError([](auto& p) { p.journal_feed_ratio = 0.0; }, "journal_feed_ratio");
   ExpectInputError([&](auto& p) { p.journal_feed_ratio = nan; }, "journal_feed_ratio");

@@ -71,6 +71,10 @@ def channel(f, name):
     probes = names(f, "model/output_point_channels") if "model/output_point_channels" in f else []
     if name in probes:  # output points, chord sensors
         return f["output_points"][:, probes.index(name)]
+    outputs = (names(f, "model/force_output_channels")
+               if "model/force_output_channels" in f else [])
+    if name in outputs:  # force elements' outputs: <element>.<output> (h_min, p_max, ...)
+        return f["forces/outputs"][:, outputs.index(name)]
     sensors = names(f, "model/sensors") if "model/sensors" in f else []
     if owner in sensors:  # <sensor>.dx .. .rz
         k = sensors.index(owner)
