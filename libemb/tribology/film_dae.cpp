@@ -29,7 +29,7 @@ FilmSolveInfo FilmDae::Prepare(const Eigen::VectorXd& u, const Eigen::VectorXd& 
   }
   if (!SetUnknownsFromUniversal(*bearing_, film_, u, &x_)) {
     info.status = FilmStatus::kBeyondViscosityLaw;
-    info.message = bearing_->who() + ": the film pressure exceeds the pressure-viscosity law's range";
+    info.message = bearing_->BeyondViscosityLawMessage();
     return info;
   }
   storage_.u_dot = &u_dot;

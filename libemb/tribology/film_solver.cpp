@@ -106,9 +106,7 @@ FilmSolveInfo FilmSolver::NewtonSwitch(const StorageInputs& st, FilmSolveInfo in
       b.parameters().cavitation == CavitationModel::kMassConserving ? b.parameters().switch_width : 0.0;
   for (int it = 0; it < b.parameters().max_iterations; ++it) {
     if (!SetUnknownsFromUniversal(b, film_, u_, &x_))
-      return Fail(FilmStatus::kBeyondViscosityLaw,
-                  b.who() + ": the film pressure exceeds the pressure-viscosity law's range "
-                            "(reduced pressure at its limit)", info);
+      return Fail(FilmStatus::kBeyondViscosityLaw, b.BeyondViscosityLawMessage(), info);
     CalcFilmResidual(film_, x_, u_, st, &r_, &balance_);
     ++info.iterations;
     ++info.factorizations;
@@ -153,9 +151,7 @@ FilmSolveInfo FilmSolver::NewtonFischerBurmeister(const StorageInputs& st, FilmS
   bool converged = false;
   for (int it = 0; it < b.parameters().max_iterations; ++it) {
     if (!SetUnknownsFromPairs(b, film_, fb_a_, fb_b_, &x_))
-      return Fail(FilmStatus::kBeyondViscosityLaw,
-                  b.who() + ": the film pressure exceeds the pressure-viscosity law's range",
-                  info);
+      return Fail(FilmStatus::kBeyondViscosityLaw, b.BeyondViscosityLawMessage(), info);
     u_new_ = fb_a_ - fb_b_;  // supply rows: r = u - u_s
     CalcFilmResidual(film_, x_, u_new_, st, &r_, &balance_);
     double worst = r_.cwiseAbs().maxCoeff() / scale;

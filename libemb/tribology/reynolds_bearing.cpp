@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <utility>
 
 #include "libemb/common/error.h"
@@ -35,6 +36,15 @@ const ReynoldsBearingParameters& Checked(const ReynoldsBearingParameters& p,
 }
 
 }  // namespace
+
+std::string ReynoldsBearing::BeyondViscosityLawMessage() const {
+  std::ostringstream o;
+  o << who_ << ": the film pressure exceeds the pressure-viscosity law's range (the reduced "
+    << "pressure reached its limit " << lubricant_.reduced_pressure_limit()
+    << " Pa; with rigid surfaces a piezoviscous film has no solution beyond it: an isoviscous "
+       "oil, without pressure_law, carries such loads)";
+  return o.str();
+}
 
 ReynoldsBearing::ReynoldsBearing(std::string name, const ReynoldsBearingParameters& p)
     : name_(std::move(name)),

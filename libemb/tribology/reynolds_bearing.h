@@ -93,6 +93,9 @@ class ReynoldsBearing {
   const Lubricant& lubricant() const { return lubricant_; }
   const SupplyMap& supply() const { return supply_; }
   const std::optional<AsperityContact>& contact() const { return contact_; }
+  /// The message of a film whose reduced pressure reached the pressure-viscosity law's limit
+  /// (FilmStatus::kBeyondViscosityLaw): names the bearing and the limit, and says what helps.
+  std::string BeyondViscosityLawMessage() const;
   /// Unknown u of a supply node at pressure p: Psi(p) / p_ref (>= 0: flooded).
   double SupplyUnknown(int k) const { return supply_u_[supply_.feature[k]]; }
   bool has_journal_holes() const { return !p_.journal_oil_holes.empty(); }

@@ -286,6 +286,9 @@ TEST(FilmSolver, UnboundedPiezoviscousPressureIsANamedOutcome) {
       s.SolveQuasiStatic(Rotating(Vector2d(0.0, -0.97) * kMainClearance, kMainSpeed), &l);
   EXPECT_EQ(info.status, FilmStatus::kBeyondViscosityLaw);
   EXPECT_NE(info.message.find("bearing 'big_end_2'"), std::string::npos) << info.message;
+  // The limit 1/alpha = 5e7 Pa, and what carries such a load.
+  EXPECT_NE(info.message.find("limit 5e+07 Pa"), std::string::npos) << info.message;
+  EXPECT_NE(info.message.find("without pressure_law"), std::string::npos) << info.message;
 }
 
 TEST(FilmSolver, JournalThroughItsClearanceIsANamedOutcome) {
