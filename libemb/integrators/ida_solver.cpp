@@ -278,6 +278,11 @@ void IdaSolver::Reinitialize(double t0, const Eigen::VectorXd& y0, const Eigen::
   yp_ = yp0;
 }
 
+bool IdaSolver::StopRequested(IntegratorReport* report) const {
+  report->stopped = options_.stop_requested && options_.stop_requested();
+  return report->stopped;
+}
+
 IntegratorReport IdaSolver::AdvanceTo(double t_out) {
   Impl& m = *impl_;
   IntegratorReport report;
@@ -301,6 +306,7 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
         flag = IDA_TOO_MUCH_WORK;
         break;
       }
+      if (StopRequested(&report)) break;
       flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_ONE_STEP);
       if (flag >= 0) RecordStepLimiter();
       if (flag == IDA_ROOT_RETURN) break;
@@ -320,6 +326,7 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
         flag = IDA_TOO_MUCH_WORK;
         break;
       }
+      if (StopRequested(&report)) break;
       flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_ONE_STEP);
       if (flag < 0) break;
       RecordStepLimiter();

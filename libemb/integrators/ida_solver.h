@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -72,6 +73,11 @@ struct IdaOptions {
   /// KLU cost the same, from 72 (3 rods; the 74-78-unknown slider-crank and engine (c))
   /// KLU is as fast or faster, and the gap grows ~n^2.
   int sparse_min_size{50};
+  /// Asked before every internal step of AdvanceTo; true ends the call there, before t_out,
+  /// with IntegratorReport::stopped (y() and yp() the values at the time reached). A run
+  /// stuck in tiny steps between two output times then still stops when asked to (a
+  /// user's interrupt). Null: never asked.
+  std::function<bool()> stop_requested;
 };
 
 /// Integrates a DaeProblem from consistent initial values (t0, y0, y'0).
@@ -115,6 +121,8 @@ class IdaSolver final : public DaeIntegrator {
  private:
   // Counts the component with the largest weighted local error of the step just taken.
   void RecordStepLimiter();
+  // Asks options_.stop_requested (if set); true (and report->stopped) ends AdvanceTo.
+  bool StopRequested(IntegratorReport* report) const;
 
   // Holds the SUNDIALS objects and the private static C trampolines (defined in the .cpp so
   // that no SUNDIALS header leaks out of this module).

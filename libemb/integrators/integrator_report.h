@@ -49,6 +49,9 @@ struct IntegratorReport {
   /// values at the root (IDA: interpolated, on the far side of the sign change).
   bool root_found{false};
   std::vector<int> root_directions;
+  /// AdvanceTo ended before t_out because it was asked to stop (IdaOptions::
+  /// stop_requested); the status is kSuccess and t the time reached.
+  bool stopped{false};
   bool ok() const { return status == IntegratorStatus::kSuccess; }
 };
 

@@ -290,6 +290,37 @@ TEST(IdaSolver, NeverStepsBeyondTheStopTime) {
   }
 }
 
+TEST(IdaSolver, AStopRequestEndsAdvanceToBetweenSteps) {
+  // Asked before every step: after 5 steps the request says stop. AdvanceTo returns there,
+  // before t_out, successfully and marked stopped, with the values at the time reached on
+  // the closed form; without the request the next call goes on to t_out. Both ways of
+  // reaching an output time.
+  for (bool stop_at_outputs : {false, true}) {
+    const DecayDae dae(true);
+    IdaOptions o;
+    o.rtol = 1e-8;
+    o.atol = 1e-10;
+    o.stop_at_outputs = stop_at_outputs;
+    int asked = 0;
+    bool stop = true;
+    o.stop_requested = [&] { return stop && ++asked > 5; };
+    IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-kRate, 0.0), o);
+    const IntegratorReport r = ida.AdvanceTo(1.0);
+    EXPECT_TRUE(r.ok()) << r.message;
+    EXPECT_TRUE(r.stopped);
+    EXPECT_EQ(ida.stats().steps, 5);
+    EXPECT_GT(ida.t(), 0.0);
+    EXPECT_LT(ida.t(), 1.0);
+    EXPECT_EQ(r.t, ida.t());
+    // The values at the time reached: the solution there to the run's tolerance.
+    EXPECT_NEAR(ida.y()[0], std::exp(-kRate * ida.t()), 1e-6);
+    stop = false;
+    const IntegratorReport rest = ida.AdvanceTo(1.0);
+    EXPECT_TRUE(rest.ok() && !rest.stopped) << rest.message;
+    EXPECT_DOUBLE_EQ(ida.t(), 1.0);
+  }
+}
+
 // y0' = -y0 (slow) and y1' = cos(w t) (y1 = sin(w t) / w, fast): the fast one sets the steps.
 class SlowAndFast final : public DaeProblem {
  public:

@@ -123,8 +123,9 @@ struct RunCommand {
     mbs::ThrowIfNotReady(run);
     const double t_prepare = sw.seconds();
     // From the results file's creation to its close, the first SIGINT/SIGTERM stops the run
-    // at the next sample (interrupt.h), so the file always ends with its status; a signal that
-    // comes after the last sample ends the process once the files are complete.
+    // at the next sample or, between samples, before IDA's next step (interrupt.h), so the
+    // file always ends with its status; a signal that comes after the last sample ends the
+    // process once the files are complete.
     std::optional<GracefulStop> graceful(std::in_place);
     std::optional<results::ResultsWriter> writer;
     std::optional<results::CsvWriter> csv_writer;
@@ -160,7 +161,13 @@ struct RunCommand {
                                            (h5.empty() ? "" : "; the results up to it are in " +
                                                                   h5 + " (status 'interrupted')"));
             },
-            progress, [&] { return at_steady_state; });
+            // A signal also stops IDA between two samples (its steps may be tiny).
+            progress, [&] { return at_steady_state || StopSignal() != 0; });
+        if (const int sig = StopSignal(); sig && r.stopped_between_samples)
+          throw Interrupted(sig, std::string("interrupted by ") + SignalName(sig) + " at t = " +
+                                     std::to_string(r.t_reached) + " s, between two samples" +
+                                     (h5.empty() ? "" : "; the results up to the last one are in " +
+                                                            h5 + " (status 'interrupted')"));
       } catch (const std::exception& e) {
         // Whatever stopped the run, the file says so (if it still can be written).
         const bool interrupted = dynamic_cast<const Interrupted*>(&e) != nullptr;

@@ -18,8 +18,8 @@
 /// kWorkerGraceSeconds, then SIGKILL), and the process dies by the signal (the shell sees
 /// 130 or 143). Where a command can stop cleanly — `emb run` between two samples — it asks
 /// for a graceful stop: the first signal only sets a flag (StopSignal()), the run ends at the
-/// next sample, marks its results "interrupted" and then ends by the signal; a second signal
-/// ends the process at once.
+/// next sample or before IDA's next step, whichever comes first, marks its results
+/// "interrupted" and then ends by the signal; a second signal ends the process at once.
 
 #include <sys/types.h>
 

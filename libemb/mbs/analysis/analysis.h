@@ -236,8 +236,10 @@ struct Sample {
   double velocity_residual{0.0};  ///< max |C v + Phi_t|
 };
 using SampleSink = std::function<void(const Sample&)>;
-/// Asked after every sample of a dynamic analysis: true ends the run there, successfully
-/// (RunResult::stopped), e.g. once a periodic steady state is reached.
+/// Asked after every sample of a dynamic analysis, and with IDA before every internal step:
+/// true ends the run, successfully (RunResult::stopped): after a sample at that sample (e.g.
+/// once a periodic steady state is reached), between samples at the time IDA reached, with
+/// no further sample (a caller's interrupt while the steps are tiny).
 using StopFn = std::function<bool()>;
 
 enum class RunStatus { kSuccess, kIntegratorFailure, kNewtonFailure, kNotKinematic };
@@ -283,6 +285,8 @@ struct RunResult {
   int newton_iterations{0};  ///< kinematic/static: total
   StaticReport static_report;  ///< static/quasi-static: the last (or failed) solve
   bool stopped{false};  ///< dynamic analysis: ended before t_end by the caller's StopFn
+  /// ... and between two samples (t_reached past the last sample's time).
+  bool stopped_between_samples{false};
   /// Dynamic analysis: the events located (contact onset, separation, force peaks) and the
   /// contacts of impact elements (event_handling.h).
   EventLog events;

@@ -216,6 +216,7 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     options.initial_step = settings.initial_step_fraction *
                            std::min(settings.output_step, settings.t_end - settings.t_start);
   options.stop_time = settings.t_end;
+  options.stop_requested = stop;  // also between samples (IdaOptions::stop_requested)
   options.newton_convergence_factor = settings.newton_convergence_factor;
   options.newton_refreshes = settings.newton_refreshes >= 0 ? settings.newton_refreshes
                                                             : (HasUntestedStates(sys) ? 1 : 0);
@@ -243,6 +244,12 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
       if (HandleEvents(sys, dae, ida.t(), ida.y(), ida.yp(), rep.root_directions, &r.events))
         RestartAfterEvent(sys, dae, &ida, &r.events);
       rep = ida.AdvanceTo(times[k]);
+    }
+    if (rep.ok() && rep.stopped) {  // asked to stop before this output time: no sample
+      r.t_reached = ida.t();
+      r.ida = rep;
+      r.stopped = r.stopped_between_samples = true;
+      break;
     }
     const Eigen::VectorXd& yk = ida.y();
     const Eigen::VectorXd& ypk = ida.yp();
