@@ -624,6 +624,7 @@ FUNCTION_BAD.update({
     "expression_constants_list": ('{expression: "t", constants: [1, 2]}', ["constants"]),
     "expression_constant_bad_name": ('{expression: "t", constants: {"2a": 1}}', ["name"]),
     "expression_constant_pi": ('{expression: "t", constants: {pi: 3}}', ["taken"]),
+    "expression_constant_shadows_function": ('{expression: "t", constants: {sqrt: 3}}', ["constant 'sqrt'", "function sqrt()"]),
     "expression_scale_zero": ('{expression: "t", scale: 0}', ["scale"]),
     "expression_scale_nan": ('{expression: "t", scale: .nan}', ["scale"]),
     "constants_without_expression": ("{rpm: 60, constants: {a: 1}}", ["only with an expression"]),

@@ -48,6 +48,11 @@ ExpressionFunction::ExpressionFunction(const std::string& text,
       EMB_THROW_IF(name == "t" || name == "x" || name == "pi",
                    "expression constant '" << name << "': the name is taken (t and x are the "
                                               "argument, pi is defined)");
+      // muParser takes a constant named like one of its functions, and "sin" then no longer
+      // reads as the reader meant.
+      EMB_THROW_IF(p.GetFunDef().count(name) != 0,
+                   "expression constant '" << name << "': the name is taken by muParser's "
+                                              "function " << name << "(); expected another name");
       EMB_THROW_IF(!std::isfinite(value),
                    "expression constant '" << name << "': expected a finite value, got "
                                            << value);

@@ -146,6 +146,8 @@ TEST(ExpressionFunction, MalformedTextIsRefused) {
   ExpectRefused(std::string(5000, '1'), "at most");
   ExpectRefused("a*t", "finite", {{"a", std::nan("")}});
   ExpectRefused("t", "taken", {{"pi", 3.0}});
+  ExpectRefused("sin*t", "function sin()", {{"sin", 3.0}});  // shadows a built-in function
+  ExpectRefused("t", "function max()", {{"max", 3.0}});
   ExpectRefused("t", "name", {{"2a", 3.0}});
   ExpectRefused("t", "scale", {}, 0.0);
   ExpectRefused("t", "scale", {}, std::nan(""));
