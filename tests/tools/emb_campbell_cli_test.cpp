@@ -163,6 +163,9 @@ TEST_F(EmbCampbellCli, BadInputIsNamed) {
   ExpectFailure(tvd + "--loss-factor 0", 1, {"--loss-factor", "> 0"});
   ExpectFailure(tvd + "--linearise floquet", 1, {"--linearise", "floquet"});
   ExpectFailure(tvd + "--angles 0", 1, {"--angles"});
+  // Modes are 1-based: 0 is not "the default" (issue 36: it was taken as that silently).
+  ExpectFailure(tvd + "--mode 0", 1, {"--mode", ">= 1", "got 0"});
+  ExpectFailure(tvd + "--mode -2", 1, {"--mode", "got -2"});
   // A TVD with a negative inertia, or on a marker that does not exist, in a scene.
   std::ifstream in(kScene);
   std::stringstream text;

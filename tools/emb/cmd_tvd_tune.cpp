@@ -41,7 +41,8 @@ struct TvdTuneCommand {
   bool loss_factor_given{false};  // otherwise Den Hartog's
   std::string linearise{"cycle-average"};
   int num_angles{mbs::OperatingPointOptions{}.num_angles};
-  int mode{0};
+  int mode{0};  // 0: the lowest torsion mode (--mode not given)
+  bool mode_given{false};
   bool trust_geo{false};
   OutputOptions out;
 
@@ -58,6 +59,11 @@ struct TvdTuneCommand {
                  "--linearise: expected 'cycle-average' or 'frozen', got '" << linearise << "'");
     EMB_THROW_IF(num_angles < 1 || num_angles > 720,
                  "--angles: expected 1 to 720 angles per revolution, got " << num_angles);
+    // Modes are numbered from 1; leave --mode out for the lowest torsion mode.
+    EMB_THROW_IF(mode_given && mode < 1, "--mode: expected a mode number >= 1 (ascending "
+                                         "frequency, 1-based; leave it out for the lowest "
+                                         "torsion mode), got "
+                                             << mode);
     mbs::OperatingPointOptions lin;
     lin.linearisation = mbs::ParseLinearisation(linearise);
     lin.num_angles = num_angles;
@@ -172,9 +178,10 @@ void RegisterTvdTuneCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--ring-inertia", st->ring_inertia, "Polar inertia of the ring [kg m^2]")
       ->required();
-  cmd->add_option("--mode", st->mode,
-                  "Mode number at that speed (ascending frequency, 1-based; default: the "
-                  "lowest torsion mode)");
+  cmd->add_option_function<int>(
+      "--mode", [st](const int& n) { st->mode = n, st->mode_given = true; },
+      "Mode number at that speed (ascending frequency, 1-based; default: the lowest torsion "
+      "mode)");
   cmd->add_option("--body", st->body,
                   "Rotor body whose motion classifies the modes (default: the scene's one "
                   "flexible body)");
