@@ -136,7 +136,7 @@ constexpr SceneKey kForceKeys[] = {
     {"forces: clutch-damper", "damping", T::kNumber, "N m s/rad", ">= 0", "0", "Viscous damping."},
     {"forces: clutch-damper", "hysteresis_torque", T::kNumber, "N m", ">= 0", "0", "Friction T_h of T_h tanh(θ′/ω_h)."},
     {"forces: clutch-damper", "hysteresis_speed", T::kNumber, "rad/s", "> 0", "0.1", "ω_h."},
-    {"forces: clutch-damper", "free_angle", T::kNumber, "rad", "", "0", "Angle at zero spring torque."},
+    {"forces: clutch-damper", "free_angle", T::kNumber, "rad", "", "0", "Joint angle at zero spring torque, signed (θ = angle − free_angle): a negative value is the unloaded spring on the negative side of the joint's zero, not an error."},
     // force, torque
     {"forces: force, torque", "marker", T::kString, "", "", "required", "Where the load acts."},
     {"forces: force, torque", "direction", T::kVector3, "", "", "required", "Unit vector."},

@@ -142,11 +142,15 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
                           "stiffness_damping", "material"})
     rb.Ignore(key);
   // Initial modal coordinates eta(t0) and rates eta'(t0), one per kept mode (AsDouble refuses
-  // non-finite numbers).
+  // non-finite numbers). A key given with an empty list is refused below: leaving it out
+  // means zeros, an empty list more likely a script that wrote nothing.
   std::vector<double> eta0, eta_dot0;
-  for (auto [key, values] : {std::pair{"modal_coordinates", &eta0},
-                             std::pair{"modal_velocities", &eta_dot0}}) {
-    if (rb.Has(key))
+  bool given[2] = {false, false};
+  for (auto [key, values, was_given] :
+       {std::tuple{"modal_coordinates", &eta0, &given[0]},
+        std::tuple{"modal_velocities", &eta_dot0, &given[1]}}) {
+    *was_given = rb.Has(key);
+    if (*was_given)
       *values = rb.GetDoubles(key);
     else
       rb.Optional(key);
@@ -154,14 +158,15 @@ void ReadBodyFilePart(MapReader& rb, const std::string& file, bool flexible, mbs
   rb.Finish();
   ReducedBody reduced = mbs::ReadPartBodyFile(path, name, expect_mesh_hash);
   mbs::FlexibleBodyModel m = mbs::MakeFlexibleBody(name, reduced, path, options, placement);
-  for (auto [key, values, target] :
-       {std::tuple{"modal_coordinates", &eta0, &m.body.eta0},
-        std::tuple{"modal_velocities", &eta_dot0, &m.body.eta_dot0}}) {
-    if (values->empty()) continue;
+  for (auto [key, values, target, was_given] :
+       {std::tuple{"modal_coordinates", &eta0, &m.body.eta0, given[0]},
+        std::tuple{"modal_velocities", &eta_dot0, &m.body.eta_dot0, given[1]}}) {
+    if (!was_given) continue;
     EMB_THROW_IF(static_cast<int>(values->size()) != m.part.num_modes(),
                  what << " " << key << ": expected " << m.part.num_modes() << " initial modal "
                       << (values == &eta0 ? "coordinates" : "velocities")
-                      << " (one per mode kept), got " << values->size());
+                      << " (one per mode kept), got " << values->size()
+                      << (values->empty() ? " (leave the key out for zeros)" : ""));
     *target = Eigen::Map<const Eigen::VectorXd>(values->data(),
                                                 static_cast<Eigen::Index>(values->size()));
   }

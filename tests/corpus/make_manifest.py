@@ -805,6 +805,8 @@ cms("cms_modal_coordinates_count", extra="modes: 2, modal_coordinates: [1, 2, 3]
 cms("cms_modal_coordinates_nan", extra="modes: 2, modal_coordinates: [.nan, 0]", frags=["modal_coordinates"])
 cms("cms_modal_velocities_count", extra="modes: 2, modal_velocities: [1]", frags=["modal_velocities", "expected 2"])
 cms("cms_modal_velocities_inf", extra="modes: 2, modal_velocities: [0, .inf]", frags=["modal_velocities"])
+cms("cms_modal_velocities_empty", extra="modes: 2, modal_velocities: []", frags=["modal_velocities", "expected 2", "got 0", "leave the key out"])
+cms("cms_modal_coordinates_empty", extra="modes: 2, modal_coordinates: []", frags=["modal_coordinates", "expected 2", "got 0"])
 cms("cms_expect_hash_wrong", extra="expect_mesh_hash: abc", frags=["stale"])
 cms("cms_stiffening_text", extra="geometric_stiffening: maybe", frags=["geometric_stiffening"])
 cms("cms_mass_given", extra="mass: 1", frags=["mass"])
@@ -1042,11 +1044,23 @@ case("results_joint_channel_unknown_coordinate", "results",
 for key, expression, frags, attrs in (
         ("kink", "abs(t - 0.05)", ["expression", "kink"], [("r.h5", "status", "failed")]),
         ("nan_midrun", "sqrt(0.05 - t)", ["expression"], [("r.h5", "status", "failed")]),
+        # Issue 36: not finite at a time of the run: refused naming the motion, the time and
+        # the value (it was reported as a rank-deficient Jacobian or IDA's step budget).
+        ("nan_after", "6.28*t + 0*ln(0.05 - t)", ["motion 'm' at t = ", "is NaN at"],
+         [("r.h5", "status", "failed")]),
+        ("inf_at_start", "1/t", ["motion 'm' at t = 0 s", "'1/t' is +inf"], []),
         ("too_fast_for_scale", "0.1*sin(2*pi*1000*t)", ["expression", "scale"], [])):
     case(f"numerical_expression_{key}", "numerical", ["run", "s.yaml", "-q", "-o", "r.h5"], 1,
          frags, [("write", "s.yaml", replaced(
              "analysis:", 'motions:\n  - {name: m, joint: hinge, function: {expression: "'
              + expression + '"}}\nanalysis:'))], h5_attr=attrs, timeout=20)
+
+case("numerical_expression_load_nan", "numerical", ["run", "s.yaml", "-q", "-o", "r.h5"], 1,
+     ["applied load 'f' at t = 0 s", "'sqrt(t - 0.03)' is NaN"],
+     [("write", "s.yaml", replaced("analysis:", "forces:\n  - {name: f, type: torque, marker: "
+                                   "rod_top, direction: [0, 0, 1], function: {expression: "
+                                   "\"sqrt(t - 0.03)\"}}\nanalysis:"))],
+     h5_attr=[("r.h5", "status", "failed")], timeout=20)
 
 # --- I/O faults ---------------------------------------------------------------------------
 

@@ -184,8 +184,11 @@ TEST(LashElement, TranslationalStopRestitutionAndSqueezeFilmClosedForm) {
 
 TEST(LashElement, ClutchDamperStaticDeflectionInBothStages) {
   // Disc 1 held by the damper to the ground (through its joint angle), loaded by a torque:
-  // theta = T/k1 below the knee, theta_k + (T - k1 theta_k)/k2 beyond.
+  // theta = T/k1 below the knee, theta_k + (T - k1 theta_k)/k2 beyond, about the free angle
+  // a_0 (signed, issue 36: a negative a_0 is the unloaded spring on the other side of the
+  // joint's zero, and the characteristic moves with it).
   const double k1 = 150.0, k2 = 1500.0, knee = 0.05;
+  for (const double a0 : {0.0, -0.3})
   for (double T : {5.0, 60.0}) {
     testing::TwoDiscs d;
     d.omega1 = 0.0;
@@ -200,6 +203,7 @@ TEST(LashElement, ClutchDamperStaticDeflectionInBothStages) {
     c.stiffness_2 = k2;
     c.knee_angle = knee;
     c.hysteresis_torque = 3.0;
+    c.free_angle = a0;
     s.AddForceElement(std::make_shared<ClutchDamper>(
         "clutch", JointCoordinateTerm(s, "shaft1", mbs::JointCoordinate::kRotation, 1.0, "c"), c));
     s.Finalize();
@@ -210,8 +214,8 @@ TEST(LashElement, ClutchDamperStaticDeflectionInBothStages) {
         mbs::RunAnalysis(mbs::PrepareRun(s, st), st, [&](const mbs::Sample& smp) { out = smp; });
     ASSERT_TRUE(r.ok()) << r.message;
     const double theta = 2.0 * std::atan2(out.q[6], out.q[3]);
-    const double expected = T / k1 <= knee ? T / k1 : knee + (T - k1 * knee) / k2;
-    EXPECT_NEAR(theta, expected, 1e-9) << "T " << T;
+    const double expected = a0 + (T / k1 <= knee ? T / k1 : knee + (T - k1 * knee) / k2);
+    EXPECT_NEAR(theta, expected, 1e-9) << "T " << T << ", a0 " << a0;
   }
 }
 

@@ -82,7 +82,8 @@ void CalcConstraints(const System& system, const std::vector<MarkerKinematics>& 
   for (int k = 0; k < m; ++k) {
     const ScalarEquation& eq = system.equations()[k];
     FunctionValue f;
-    if (eq.has_function) f = eq.function.Eval(t);
+    if (eq.has_function)
+      f = eq.function.EvalAtTime(t, 2, "motion '" + system.elements()[eq.element].name + "'");
     for (int term = 0; term < eq.num_terms; ++term) {
       const MarkerKinematics& I = markers[eq.marker_i[term]];
       const MarkerKinematics& J = markers[eq.marker_j[term]];

@@ -12,6 +12,12 @@
 #include "libemb/mbs/core/time_function.h"
 
 namespace emb::mbs {
+namespace {
+
+// A non-finite value as a reader expects it ("-nan" from the stream is noise).
+const char* NonFinite(double v) { return std::isnan(v) ? "NaN" : v > 0.0 ? "+inf" : "-inf"; }
+
+}  // namespace
 
 struct ExpressionFunction::Impl {
   mu::Parser parser;
@@ -87,7 +93,7 @@ FunctionValue ExpressionFunction::Eval(double x, int order) const {
   FunctionValue v;
   v.f = Value(x);
   if (!std::isfinite(v.f))
-    EMB_THROW(NumericalError, "expression '" << text_ << "' is " << v.f << " at " << x);
+    EMB_THROW(NumericalError, "expression '" << text_ << "' is " << NonFinite(v.f) << " at " << x);
   if (order <= 0) return v;
   double a1[kMaxRows][kMaxRows], a2[kMaxRows][kMaxRows];
   double err1 = HUGE_VAL, err2 = HUGE_VAL, change = 0.0;
@@ -95,6 +101,13 @@ FunctionValue ExpressionFunction::Eval(double x, int order) const {
   double h = scale_;
   for (int k = 0; k < kMaxRows && !(done1 && done2); ++k, h /= kShrink) {
     const double fp = Value(x + h), fm = Value(x - h);
+    if (!std::isfinite(fp) || !std::isfinite(fm))
+      EMB_THROW(NumericalError, "expression '" << text_ << "' is " << NonFinite(std::isfinite(fp) ? fm : fp)
+                                               << " at " << (std::isfinite(fp) ? x - h : x + h)
+                                               << ", where the central differences for its "
+                                                  "derivatives at "
+                                               << x << " look (steps up to its scale, "
+                                               << scale_ << ")");
     // The step actually taken: x + h rounds for large |x|.
     const double h_eff = 0.5 * ((x + h) - (x - h));
     if (k == 0) change = std::max(std::abs(fp - v.f), std::abs(fm - v.f));

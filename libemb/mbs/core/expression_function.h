@@ -49,8 +49,9 @@ class ExpressionFunction {
   double Value(double x) const;
   /// f and its derivatives up to `order` (0: f; 1: f, f'; 2: f, f', f'') at x (Ridders
   /// extrapolation, see above; the derivatives not asked for are 0). Cost: at most
-  /// 2 kMaxRows + 1 evaluations. @throws NumericalError if f is not finite at x (an
-  /// iterate outside the function's domain: recoverable in a residual), InputError if a
+  /// 2 kMaxRows + 1 evaluations. @throws NumericalError if f is not finite at x or at a
+  /// point x +- h of the differences (an iterate outside the function's domain: recoverable
+  /// in a residual; TimeFunction::EvalAtTime makes it an InputError for time), InputError if a
   /// derivative asked for cannot be resolved at this scale (error estimate above
   /// kDerivativeTolerance: a kink, a jump or a function too fast for its scale; no smaller
   /// step helps).

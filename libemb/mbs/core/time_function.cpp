@@ -90,6 +90,18 @@ TimeFunction TimeFunction::Expression(const std::string& text,
   return f;
 }
 
+FunctionValue TimeFunction::EvalAtTime(double t, int order, const std::string& owner) const {
+  if (kind_ != Kind::kExpression) return Eval(t, order);
+  try {
+    return expression_->Eval(t, order);
+  } catch (const NumericalError& e) {
+    EMB_THROW(InputError, owner << " at t = " << t << " s: " << e.what()
+                                << "; a function of time must be finite over the whole run "
+                                   "(a division by zero, or a root or logarithm outside its "
+                                   "domain?)");
+  }
+}
+
 double TimeFunction::operator()(double x) const {
   return kind_ == Kind::kExpression ? expression_->Value(x) : Eval(x, 0).f;
 }

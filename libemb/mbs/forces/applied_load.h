@@ -41,9 +41,11 @@ class AppliedLoad final : public ForceElement {
 
   /// The function's argument at this state (time, or the scaled continuous joint angle).
   double CalcArgument(const ForceContext& ctx) const;
-  /// The load function (and `derivatives` derivatives) at this state; an expression that
-  /// cannot be evaluated there is reported through the context (ForceContext::Fail) and
-  /// nothing is returned.
+  /// The load function (and `derivatives` derivatives) at this state; an expression of a
+  /// joint angle that cannot be evaluated there is reported through the context
+  /// (ForceContext::Fail: the iterate may be outside its domain) and nothing is returned.
+  /// @throws InputError for a load of time that is not finite at ctx.t
+  /// (TimeFunction::EvalAtTime).
   std::optional<FunctionValue> EvalMagnitude(const ForceContext& ctx, int derivatives) const;
 
  protected:

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "libemb/common/error.h"
 
@@ -49,6 +50,34 @@ TEST(TimeFunction, BadTablesThrow) {
   EXPECT_THROW(TimeFunction::Table({0.0}, {1.0}, false), InputError);
   EXPECT_THROW(TimeFunction::Table({0.0, 0.0}, {1.0, 2.0}, false), InputError);
   EXPECT_THROW(TimeFunction::Polynomial({}), InputError);
+}
+
+// Issue 36: an expression of time that is not finite reaches no solver; it is refused naming
+// the owner, the expression, the time and the value.
+std::string InputMessage(const TimeFunction& f, double t) {
+  try {
+    f.EvalAtTime(t, 2, "motion 'drive'");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TimeFunction, ExpressionOfTimeNotFiniteIsAnInputError) {
+  const TimeFunction pole = TimeFunction::Expression("1/t");
+  const std::string at_pole = InputMessage(pole, 0.0);
+  EXPECT_NE(at_pole.find("motion 'drive' at t = 0 s"), std::string::npos) << at_pole;
+  EXPECT_NE(at_pole.find("'1/t' is +inf"), std::string::npos) << at_pole;
+  // Evaluated outside a run's time (a joint-angle argument) it stays recoverable.
+  EXPECT_THROW(pole.Eval(0.0), NumericalError);
+  // Finite at t but not at a point of the derivative's differences (t + h past the domain).
+  const TimeFunction edge = TimeFunction::Expression("t + 0*ln(0.05 - t)");
+  const std::string near_edge = InputMessage(edge, 0.0495);
+  EXPECT_NE(near_edge.find("is NaN at 0.0505"), std::string::npos) << near_edge;
+  EXPECT_NE(near_edge.find("derivatives at 0.0495"), std::string::npos) << near_edge;
+  EXPECT_NEAR(edge.EvalAtTime(0.02, 2, "motion 'drive'").df, 1.0, 1e-8);  // finite: no error
+  // Other kinds cannot fail.
+  EXPECT_NEAR(TimeFunction::Constant(2.0).EvalAtTime(0.0, 2, "x").f, 2.0, kRoundOff);
 }
 
 }  // namespace
