@@ -23,6 +23,44 @@ std::string Text(double x) {
   return buf;
 }
 
+// The digest of what a sweep file holds (every attribute and dataset emb reads back), so
+// that a file edited after emb wrote it (another speed, other amplitudes) is refused rather
+// than merged or resumed. Numbers in %.17g (they round-trip exactly), strings with their
+// length (no two contents spell the same).
+std::string ContentDigest(const SweepData& d) {
+  Fnv1a h;
+  auto str = [&h](const std::string& x) {
+    h.Add(std::to_string(x.size()) + ":");
+    h.Add(x);
+  };
+  auto num = [&h](double x) { h.Add(Text(x) + " "); };
+  str(d.scene);
+  str(d.scene_digest);
+  str(d.digest);
+  num(d.shard_index);
+  num(d.shard_count);
+  num(d.settings.samples_per_cycle);
+  for (double n : d.sweep_rpm) num(n);
+  h.Add("|channels");
+  for (const auto& c : d.settings.channels) str(c);
+  h.Add("|orders");
+  for (double o : d.settings.orders) num(o);
+  h.Add("|points");
+  for (std::size_t i = 0; i < d.points.size(); ++i) {
+    const OperatingPoint& p = d.points[i];
+    num(i < d.index.size() ? d.index[i] : -1);
+    for (double x : {p.rpm, static_cast<double>(p.cycles), static_cast<double>(p.steps), p.change,
+                     p.cpu_seconds})
+      num(x);
+    str(Name(p.status));
+    str(p.message);
+    for (double x : p.mean) num(x);
+    for (double x : p.amplitude.reshaped()) num(x);
+    for (double x : p.phase_deg.reshaped()) num(x);
+  }
+  return h.Hex();
+}
+
 }  // namespace
 
 std::string TextDigest(const std::string& text) {
@@ -100,6 +138,7 @@ void WriteSweepFile(const std::string& path, const SweepData& d) {
     h5.SetAttribute("/", "scene", d.scene);
     h5.SetAttribute("/", "scene_digest", d.scene_digest);
     h5.SetAttribute("/", "digest", d.digest);
+    h5.SetAttribute("/", "content_digest", ContentDigest(d));
     h5.SetAttribute("/", "shard_index", static_cast<long long>(d.shard_index));
     h5.SetAttribute("/", "shard_count", static_cast<long long>(d.shard_count));
     h5.SetAttribute("/", "samples_per_cycle", static_cast<long long>(d.settings.samples_per_cycle));
@@ -136,9 +175,13 @@ SweepData ReadSweepFile(const std::string& path) {
                "'" << path << "' is not a sweep file (expected format '" << kSweepFormat
                    << "', from emb sweep)");
   const long long version = h5.ReadIntAttribute("/", "version");
-  EMB_THROW_IF(version != kSweepFormatVersion, "'" << path << "': sweep format version "
-                                                   << version << ", expected "
-                                                   << kSweepFormatVersion);
+  EMB_THROW_IF(version != kSweepFormatVersion,
+               "'" << path << "': sweep format version " << version << ", expected "
+                   << kSweepFormatVersion
+                   << (version < kSweepFormatVersion
+                           ? " (written by an older emb, without a content digest; run the "
+                             "sweep again)"
+                           : " (written by a newer emb)"));
   SweepData d;
   d.scene = h5.ReadStringAttribute("/", "scene");
   d.scene_digest = h5.ReadStringAttribute("/", "scene_digest");
@@ -190,6 +233,13 @@ SweepData ReadSweepFile(const std::string& path) {
     }
     d.points.push_back(std::move(p));
   }
+  const std::string stored = h5.ReadStringAttribute("/", "content_digest");
+  const std::string computed = ContentDigest(d);
+  EMB_THROW_IF(stored != computed,
+               "'" << path << "': its content does not match the digest emb wrote with it "
+                   << "(content_digest " << stored << ", computed " << computed
+                   << "): the file was changed after emb wrote it; expected an unedited sweep "
+                      "file (run the sweep, or this point, again)");
   return d;
 }
 

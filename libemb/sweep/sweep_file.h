@@ -1,10 +1,12 @@
 #pragma once
 /// @file
-/// The results of a speed sweep (HDF5, format "emb-sweep", version 1, SI units; n points,
+/// The results of a speed sweep (HDF5, format "emb-sweep", version 2, SI units; n points,
 /// nc channels, no orders; row-major as h5py shows it), written atomically (temp + rename):
 ///   /                 attrs format, version, emb_version, scene (path), scene_digest (FNV-1a
 ///                     of the scene text), digest (SweepDigest: scene text, the files it
-///                     reads, all speeds, channels, orders, samples per cycle), shard_index,
+///                     reads, all speeds, channels, orders, samples per cycle),
+///                     content_digest (FNV-1a of everything below and above as read back:
+///                     a file edited after emb wrote it is refused), shard_index,
 ///                     shard_count,
 ///                     samples_per_cycle, phase_reference, num_converged,
 ///                     num_not_converged, num_failed, num_run_up_windows
@@ -30,7 +32,7 @@
 namespace emb::sweep {
 
 inline constexpr const char* kSweepFormat = "emb-sweep";
-inline constexpr int kSweepFormatVersion = 1;
+inline constexpr int kSweepFormatVersion = 2;  ///< 2: with content_digest
 
 /// A sweep, or the part of it one shard (or one point file) holds.
 struct SweepData {
@@ -56,8 +58,8 @@ std::string SweepDigest(const std::string& scene_text, const std::vector<std::st
 
 /// Writes `data` to `path` atomically. @throws InputError if it cannot be written.
 void WriteSweepFile(const std::string& path, const SweepData& data);
-/// @throws InputError for a file that is not an emb-sweep file of this version, or whose
-/// datasets disagree in size.
+/// @throws InputError for a file that is not an emb-sweep file of this version, whose
+/// datasets disagree in size, or whose content does not match its content_digest.
 SweepData ReadSweepFile(const std::string& path);
 
 /// Merges shard files of one sweep into the whole sweep (shard 0 of 1, points in sweep order).

@@ -398,6 +398,16 @@ case("cli_sweep_merge_not_a_sweep_file", "cli",
      absent=["out.h5"])
 case("cli_sweep_merge_without_output", "cli", ["sweep", "--merge", "{fix}/pendulum.h5", "-q"], 1,
      ["-o"])
+# Issue 36: a sweep or point file edited after emb wrote it (another speed, other amplitudes)
+# is refused by its content digest, not merged or resumed; one of the older format is named.
+for key, mutation, frags in (
+        ("amplitude", ["scale", "/amplitude", "0", "123.0"], ["changed after emb wrote it"]),
+        ("speed", ["scale", "/rpm", "0", "3100"], ["changed after emb wrote it"]),
+        ("no_digest", ["del_attr", "/", "content_digest"], ["content_digest"]),
+        ("old_version", ["set_attr", "/", "version", "1", "int"], ["version 1", "older emb"])):
+    case(f"cli_sweep_merge_edited_{key}", "cli",
+         ["sweep", "--merge", "s.h5", "-o", "out.h5", "-q"], 1, ["s.h5", *frags],
+         [("h5", "{fix}/sweep.h5", "s.h5", *mutation)], absent=["out.h5"])
 case("cli_runup_unknown_angle", "cli",
      ["runup", "{fix}/disc.h5", "--angle", "crank", "--channels", "disc.omega.x", "-o", "out.h5",
       "-q"], 1, ["crank"], absent=["out.h5"])
@@ -484,12 +494,16 @@ motions:
 analysis: {type: kinematic, t_end: 0.08, output_step: 0.0001}
 """
 FIXTURES = {
-    "files": {"bar.geo": BAR_GEO, "pendulum.yaml": PENDULUM, "disc.yaml": DISC},
+    "files": {"bar.geo": BAR_GEO, "pendulum.yaml": PENDULUM, "disc.yaml": DISC,
+              "one_cylinder.yaml": open(os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                     "..", "sweep", "data",
+                                                     "one_cylinder_direct.yaml")).read()},
     "commands": [["mesh", "bar.geo", "--save-mesh", "bar.msh"],
                  ["reduce", "bar.geo", "-i", "x0", "-i", "x1:rbe3", "-n", "4", "--no-reference",
                   "--no-xdmf", "-o", "body.h5"],
                  ["run", "pendulum.yaml", "-o", "pendulum.h5"],
-                 ["run", "disc.yaml", "-o", "disc.h5"]],
+                 ["run", "disc.yaml", "-o", "disc.h5"],
+                 ["sweep", "one_cylinder.yaml", "--rpm", "3000", "-o", "sweep.h5"]],
 }
 
 
