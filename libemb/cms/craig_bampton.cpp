@@ -489,11 +489,21 @@ ReductionBasis BuildReductionBasis(const Mesh& mesh, const SystemMatrices& sys,
     b.rigid_correction = E.norm() / RI.norm();
     Psi += E * (P.transpose() * P).ldlt().solve(P.transpose());
   }
-  // Residual outside the constraint forces range(Cᵀ), relative to the load scale.
+  // Residual outside the constraint forces range(Cᵀ), relative to the scale of the terms
+  // summed in forming it, ‖ |K| |Ψ_k| ‖ + ‖rhs_k‖ (the size its round-off has). Against
+  // ‖K Ψ_k‖ alone a constraint mode that is a rigid motion (one interface: K Ψ_k = 0 up to
+  // round-off) would show a relative residual of 1 however exact it is.
   {
     Eigen::MatrixXd res = KII * Psi;  // K Ψ, then the residual K Ψ − rhs in place
     Eigen::VectorXd scale(nq);
-    for (int k = 0; k < nq; ++k) scale[k] = res.col(k).norm() + rhs.col(k).norm();
+    Eigen::VectorXd terms(ni);
+    for (int k = 0; k < nq; ++k) {
+      terms.setZero();
+      for (int j = 0; j < KII.outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(KII, j); it; ++it)
+          terms[it.row()] += std::abs(it.value()) * std::abs(Psi(j, k));
+      scale[k] = std::max(terms.norm(), res.col(k).norm()) + rhs.col(k).norm();
+    }
     res -= rhs;
     if (C.rows() > 0) {
       Eigen::LLT<Eigen::MatrixXd> cct(Eigen::MatrixXd(C * C.transpose()));

@@ -503,6 +503,7 @@ Scene ParseScene(const std::string& text, const std::string& source, const Scene
                                              parts.stresses);
   YAML::Node analysis_node = r.Optional("analysis");
   if (analysis_node) ReadAnalysis(analysis_node, source, &scene.analysis, &scene.steady_state);
+  CheckStressOutputTimes(scene.stress_outputs, scene.analysis.t_start, scene.analysis.t_end);
   scene.analysis.installed_bases = parts.installed_bases;
   scene.analysis.truncated_bases = TruncatedBases(parts);
   if (const YAML::Node n = r.Optional("planar"))

@@ -9,6 +9,20 @@
 namespace emb::scene {
 namespace {
 
+// A list given must hold something, once each: an empty list or a repeated entry is a slip
+// (leave the key out for its default).
+template <typename T>
+void CheckListed(const std::vector<T>& list, const std::string& file, const YAML::Node& n,
+                 const std::string& what, const char* absent_means) {
+  EMB_THROW_IF(list.empty(), Where(file, n) << ": " << what << ": expected at least one entry, "
+                                            << "got an empty list (leave the key out for "
+                                            << absent_means << ")");
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      EMB_THROW_IF(list[i] == list[j], Where(file, n) << ": " << what << ": " << list[i]
+                                                      << " is listed twice; expected each once");
+}
+
 std::vector<std::string> Strings(const YAML::Node& n, const std::string& file,
                                  const std::string& what) {
   EMB_THROW_IF(!n.IsSequence(), Where(file, n) << ": " << what << ": expected a list of names");
@@ -17,6 +31,7 @@ std::vector<std::string> Strings(const YAML::Node& n, const std::string& file,
     EMB_THROW_IF(!e.IsScalar(), Where(file, e) << ": " << what << ": expected a name");
     out.push_back(e.Scalar());
   }
+  CheckListed(out, file, n, what, "every group of the body file");
   return out;
 }
 
@@ -24,10 +39,11 @@ std::vector<int> Nodes(const YAML::Node& n, const std::string& file, const std::
   std::vector<int> out;
   for (double x : AsDoubles(n, file, what)) {
     EMB_THROW_IF(!(x >= 0.0 && x == std::floor(x) && x < 2147483647.0),
-                 Where(file, n) << ": " << what << ": expected 0-based mesh node indices, got "
-                                << x);
+                 Where(file, n) << ": " << what << ": expected 0-based mesh node indices (the "
+                                << "body file's node order, not gmsh's node tags), got " << x);
     out.push_back(static_cast<int>(x));
   }
+  CheckListed(out, file, n, what, "no node channels");
   return out;
 }
 
@@ -62,6 +78,19 @@ results::SnCurve ReadSn(MapReader& f, results::StressOutput* out) {
 
 }  // namespace
 
+void CheckStressOutputTimes(const std::vector<results::StressOutput>& outputs, double t_start,
+                            double t_end) {
+  for (const results::StressOutput& o : outputs)
+    for (auto [key, times] : {std::pair{"field_times", &o.field_times},
+                              std::pair{"surface_field_times", &o.surface_field_times}})
+      for (double t : *times)
+        EMB_THROW_IF(t < t_start || t > t_end,
+                     "stress output '" << o.name << "' " << key << ": " << t << " s is "
+                                       << (t < t_start ? "before the run's start" : "after the run's end")
+                                       << "; expected times in [t_start, t_end] = [" << t_start
+                                       << ", " << t_end << "] s");
+}
+
 std::vector<results::StressOutput> ReadStressOutputs(
     const YAML::Node& list, const std::string& file, mbs::System* sys,
     const std::map<std::string, mbs::FlexiblePart>& body_file_parts,
@@ -88,6 +117,7 @@ std::vector<results::StressOutput> ReadStressOutputs(
           for (double t : *times)
             EMB_THROW_IF(!std::isfinite(t),
                          r.what() << " " << key << ": expected finite times [s], got " << t);
+          CheckListed(*times, file, r.node(), r.what() + " " + key, "no fields");
         }
         spec.surface = !out.surface_field_times.empty();
         if (const YAML::Node f = r.Optional("fatigue")) {

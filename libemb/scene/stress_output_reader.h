@@ -42,7 +42,12 @@ struct PartStresses {
 /// file:line naming the entry: unknown body, a rigid part or one without a body file, a body
 /// file without modal stresses (or without the surface that surface_field_times need), an
 /// unknown group, a node in none of the groups, a bad S-N curve, a non-finite field time,
-/// bad keys.
+/// an empty list or a repeated entry of groups, nodes or field times, bad keys.
+/// @throws InputError naming the output and key for a field time outside the run's
+/// [t_start, t_end] (no sample of the run would be written there).
+void CheckStressOutputTimes(const std::vector<results::StressOutput>& outputs, double t_start,
+                            double t_end);
+
 std::vector<results::StressOutput> ReadStressOutputs(
     const YAML::Node& list, const std::string& file, mbs::System* sys,
     const std::map<std::string, mbs::FlexiblePart>& body_file_parts,

@@ -503,7 +503,9 @@ FIXTURES = {
                   "--no-xdmf", "-o", "body.h5"],
                  ["run", "pendulum.yaml", "-o", "pendulum.h5"],
                  ["run", "disc.yaml", "-o", "disc.h5"],
-                 ["sweep", "one_cylinder.yaml", "--rpm", "3000", "-o", "sweep.h5"]],
+                 ["sweep", "one_cylinder.yaml", "--rpm", "3000", "-o", "sweep.h5"],
+                 ["reduce", "bar.geo", "-i", "x0", "-n", "4", "--no-reference", "--no-xdmf",
+                  "--stress-groups", "x1", "-o", "stress_body.h5"]],
 }
 
 
@@ -807,6 +809,26 @@ def cms(name, file="{fix}/body.h5", model="cms", extra="modes: 2", frags=(), set
 
 
 cms("cms_ok_baseline", code=0)
+
+# Issue 36: stress outputs with lists that hold nothing or an entry twice, field times the run
+# never reaches, node numbers that look like gmsh tags (stress nodes are 0-based indices).
+STRESS = """bodies:
+  - {name: bar, model: cms, body_file: {fix}/stress_body.h5, modes: 2}
+stress_outputs:
+  - {name: s, body: bar, EXTRA}
+analysis: {type: dynamic, t_end: 0.01, output_step: 0.001}
+"""
+for key, extra, frags in (
+        ("groups_empty", "groups: []", ["groups", "empty list"]),
+        ("groups_twice", "groups: [x1, x1]", ["groups", "x1 is listed twice"]),
+        ("nodes_empty", "nodes: []", ["nodes", "empty list"]),
+        ("nodes_twice", "nodes: [0, 0]", ["nodes", "listed twice"]),
+        ("nodes_negative", "nodes: [-4]", ["0-based mesh node indices", "not gmsh's node tags"]),
+        ("field_times_empty", "field_times: []", ["field_times", "empty list"]),
+        ("field_times_twice", "field_times: [0.005, 0.005]", ["field_times", "listed twice"]),
+        ("field_times_after_end", "field_times: [0.02]", ["field_times", "after the run's end"]),
+        ("field_times_before_start", "field_times: [-1]", ["field_times", "before the run's start"])):
+    scene(f"stress_output_{key}", STRESS.replace("EXTRA", extra), 1, frags, timeout=30)
 cms("cms_modes_negative", extra="modes: -1", frags=["modes"])
 cms("cms_modes_huge", extra="modes: 1.0e9", frags=["modes"])
 cms("cms_modes_too_many", extra="modes: 50", frags=["modes"])

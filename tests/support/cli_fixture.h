@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "tests/support/temp_dir.h"
 
@@ -51,7 +52,7 @@ class CliTest : public ::testing::Test {
   }
   // Runs `emb ARGS` expecting exit code `code`, every word in stderr, and no output file
   // (out.h5, out.xdmf) left behind.
-  void ExpectFailure(const std::string& args, int code, std::initializer_list<std::string> words) {
+  void ExpectFailure(const std::string& args, int code, const std::vector<std::string>& words) {
     const CliResult r = Run(args);
     EXPECT_EQ(r.exit_code, code) << args << "\n" << r.err;
     for (const auto& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << args << "\n" << r.err;

@@ -8,6 +8,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <tuple>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "libemb/io/hdf5_file.h"
@@ -142,7 +145,24 @@ TEST_F(EmbStressCli, BadInputIsRefusedByName) {
   ExpectFailure("run rising.yaml -o out.h5", 1, {"sn_points[1]", "smaller amplitude"});
   WriteScene("node.yaml", bar, "  - {name: s, body: bar, groups: [z1], nodes: [0]}\n",
              "{constant: 1}", "{type: static}");
-  ExpectFailure("run node.yaml -o out.h5", 1, {"node 0", "none of its groups"});
+  ExpectFailure("run node.yaml -o out.h5", 1, {"node 0 (0-based", "none of its groups"});
+  // Issue 36: lists that hold nothing or an entry twice, and field times the run never
+  // reaches, were accepted without a word.
+  const std::string dynamic = "{type: dynamic, t_end: 0.03, output_step: 2.5e-4}";
+  for (const auto& [name, output, words] : std::vector<std::tuple<std::string, std::string,
+                                                                  std::vector<std::string>>>{
+           {"groups_empty", "groups: []", {"groups", "empty list", "every group"}},
+           {"groups_twice", "groups: [z1, y0, z1]", {"groups", "z1 is listed twice"}},
+           {"nodes_empty", "nodes: []", {"nodes", "empty list"}},
+           {"nodes_twice", "nodes: [3, 3]", {"nodes", "3 is listed twice"}},
+           {"nodes_tag_like", "nodes: [-1]", {"0-based mesh node indices", "not gmsh's node tags"}},
+           {"times_twice", "field_times: [0.01, 0.01]", {"field_times", "listed twice"}},
+           {"times_after", "field_times: [0.01, 0.5]", {"field_times", "0.5 s is after the run's end", "[0, 0.03]"}},
+           {"times_before", "field_times: [-0.01, 0.01]", {"field_times", "-0.01 s is before the run's start"}}}) {
+    WriteScene(name + ".yaml", bar, "  - {name: s, body: bar, " + output + "}\n",
+               "{constant: 1}", dynamic);
+    ExpectFailure("run " + name + ".yaml -o out.h5", 1, words);
+  }
 }
 
 // emb reduce: the stress table and its check, the whole surface (--stress-surface: Tet10 from

@@ -48,8 +48,9 @@ StressProbe::StressProbe(std::string name, int body, std::vector<StressRows> gro
       if (it != n.end()) slot_group = static_cast<int>(g), slot = static_cast<int>(it - n.begin());
     }
     EMB_THROW_IF(slot_group < 0, "stress output '" << this->name() << "': node " << node
-                                                   << " is in none of its groups; expected a "
-                                                      "node of a stress group");
+                                                   << " (0-based mesh index) is in none of its "
+                                                      "groups; expected a node of a stress "
+                                                      "group");
     node_slots_.emplace_back(slot_group, slot);
     const std::string prefix = std::string("n").append(std::to_string(node)).append(".");
     for (const char* c : kComponents) channels_.push_back(prefix + c);
