@@ -83,7 +83,7 @@ void CalcConstraints(const System& system, const std::vector<MarkerKinematics>& 
     const ScalarEquation& eq = system.equations()[k];
     FunctionValue f;
     if (eq.has_function)
-      f = eq.function.EvalAtTime(t, 2, "motion '" + system.elements()[eq.element].name + "'");
+      f = eq.function.EvalAtTime(t, 2, "motion", system.elements()[eq.element].name);
     for (int term = 0; term < eq.num_terms; ++term) {
       const MarkerKinematics& I = markers[eq.marker_i[term]];
       const MarkerKinematics& J = markers[eq.marker_j[term]];

@@ -90,12 +90,13 @@ TimeFunction TimeFunction::Expression(const std::string& text,
   return f;
 }
 
-FunctionValue TimeFunction::EvalAtTime(double t, int order, const std::string& owner) const {
+FunctionValue TimeFunction::EvalAtTime(double t, int order, const char* kind,
+                                       const std::string& name) const {
   if (kind_ != Kind::kExpression) return Eval(t, order);
   try {
     return expression_->Eval(t, order);
   } catch (const NumericalError& e) {
-    EMB_THROW(InputError, owner << " at t = " << t << " s: " << e.what()
+    EMB_THROW(InputError, kind << " '" << name << "' at t = " << t << " s: " << e.what()
                                 << "; a function of time must be finite over the whole run "
                                    "(a division by zero, or a root or logarithm outside its "
                                    "domain?)");

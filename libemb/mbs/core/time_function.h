@@ -56,9 +56,10 @@ class TimeFunction {
   /// Eval at the time t of a run, for a function of time only (a motion, a load of time):
   /// there no iterate of the solver moves the argument, so an expression that is not finite
   /// at t (a division by zero, a root or logarithm outside its domain) is the input's fault.
-  /// @throws InputError naming `owner`, the expression, t and the value, for a non-finite
-  /// value; ExpressionFunction::Eval's InputError for an unresolvable derivative.
-  FunctionValue EvalAtTime(double t, int order, const std::string& owner) const;
+  /// @throws InputError naming the owner ("<kind> '<name>'", e.g. motion 'drive'), the
+  /// expression, t and the value, for a non-finite value; ExpressionFunction::Eval's
+  /// InputError for an unresolvable derivative. Allocates nothing unless it throws.
+  FunctionValue EvalAtTime(double t, int order, const char* kind, const std::string& name) const;
   /// f(x) alone (an expression needs no derivative, so a kink is no error here).
   double operator()(double x) const;
   /// "polynomial[0, 6.28]" etc. for reports.

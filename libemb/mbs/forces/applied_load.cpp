@@ -57,7 +57,7 @@ double AppliedLoad::CalcArgument(const ForceContext& ctx) const {
 std::optional<FunctionValue> AppliedLoad::EvalMagnitude(const ForceContext& ctx,
                                                         int derivatives) const {
   if (!argument_.joint_angle)  // a function of time: not finite is the input's fault
-    return magnitude_.EvalAtTime(ctx.t, derivatives, "applied load '" + name() + "'");
+    return magnitude_.EvalAtTime(ctx.t, derivatives, "applied load", name());
   try {
     return magnitude_.Eval(CalcArgument(ctx), derivatives);
   } catch (const NumericalError& e) {  // an expression outside its domain at this state

@@ -56,7 +56,7 @@ TEST(TimeFunction, BadTablesThrow) {
 // the owner, the expression, the time and the value.
 std::string InputMessage(const TimeFunction& f, double t) {
   try {
-    f.EvalAtTime(t, 2, "motion 'drive'");
+    f.EvalAtTime(t, 2, "motion", "drive");
   } catch (const InputError& e) {
     return e.what();
   }
@@ -75,9 +75,9 @@ TEST(TimeFunction, ExpressionOfTimeNotFiniteIsAnInputError) {
   const std::string near_edge = InputMessage(edge, 0.0495);
   EXPECT_NE(near_edge.find("is NaN at 0.0505"), std::string::npos) << near_edge;
   EXPECT_NE(near_edge.find("derivatives at 0.0495"), std::string::npos) << near_edge;
-  EXPECT_NEAR(edge.EvalAtTime(0.02, 2, "motion 'drive'").df, 1.0, 1e-8);  // finite: no error
+  EXPECT_NEAR(edge.EvalAtTime(0.02, 2, "motion", "drive").df, 1.0, 1e-8);  // finite: no error
   // Other kinds cannot fail.
-  EXPECT_NEAR(TimeFunction::Constant(2.0).EvalAtTime(0.0, 2, "x").f, 2.0, kRoundOff);
+  EXPECT_NEAR(TimeFunction::Constant(2.0).EvalAtTime(0.0, 2, "motion", "x").f, 2.0, kRoundOff);
 }
 
 }  // namespace
