@@ -1,6 +1,7 @@
 #include "libemb/cms/modal_stress.h"
 
 #include <algorithm>
+#include <limits>
 #include <regex>
 #include <sstream>
 
@@ -61,6 +62,16 @@ std::vector<ModalStressGroup> CalcModalStresses(const Mesh& mesh, const Isotropi
     ModalStressGroup g;
     g.name = name;
     g.nodes = SurfaceGroup(mesh, name).nodes;
+    if (!mesh.node_tags.empty()) {
+      for (int n : g.nodes) {
+        const std::size_t tag = mesh.node_tags[static_cast<std::size_t>(n)];
+        EMB_THROW_IF(tag > static_cast<std::size_t>(std::numeric_limits<int>::max()),
+                     "stress group '" << name << "': node tag " << tag
+                                      << " does not fit the body file's 32-bit tags; expected "
+                                         "node tags below 2^31");
+        g.node_tags.push_back(static_cast<int>(tag));
+      }
+    }
     g.stresses = BuildNodalStressOperator(mesh, material, g.nodes) * Phi;
     out.push_back(std::move(g));
   }
@@ -134,6 +145,14 @@ void TransferModalStresses(body_codec::Codec& c, std::vector<ModalStressGroup>& 
     c.Ints(base + "/nodes", g.nodes);
     c.Matrix(base + "/modal", g.stresses);
     c.ExpectShape(base + "/modal", g.stresses, 6 * static_cast<Eigen::Index>(g.nodes.size()), ne);
+    // Optional (files before it have none): present or absent alike in the digest, so a
+    // node_tags dataset removed or added afterwards changes the digest.
+    if (c.writing() ? !g.node_tags.empty() : c.Exists(base + "/node_tags")) {
+      c.Ints(base + "/node_tags", g.node_tags);
+      EMB_THROW_IF(g.node_tags.size() != g.nodes.size(),
+                   "body file: " << base << "/node_tags holds " << g.node_tags.size()
+                                 << " tags for " << g.nodes.size() << " nodes");
+    }
   }
   TransferSurfaceStresses(c, surface, ne);
 }

@@ -50,6 +50,9 @@ struct ModalStressGroup {
   std::string name;
   std::vector<int> nodes;    ///< mesh nodes, ascending
   Eigen::MatrixXd stresses;  ///< 6 m × ne, Σ_g of the file comment [Pa per unit ξ]
+  /// The mesh file's (gmsh's) tags of `nodes`, as scenes name nodes elsewhere; empty in body
+  /// files written before emb stored them.
+  std::vector<int> node_tags;
   int num_nodes() const { return static_cast<int>(nodes.size()); }
 };
 

@@ -47,6 +47,19 @@ std::vector<int> Nodes(const YAML::Node& n, const std::string& file, const std::
   return out;
 }
 
+std::vector<long long> NodeTags(const YAML::Node& n, const std::string& file,
+                                const std::string& what) {
+  std::vector<long long> out;
+  for (double x : AsDoubles(n, file, what)) {
+    EMB_THROW_IF(!(x >= 1.0 && x == std::floor(x) && x < 2147483648.0),
+                 Where(file, n) << ": " << what << ": expected the mesh file's node tags "
+                                << "(integers from 1, as gmsh numbers nodes), got " << x);
+    out.push_back(static_cast<long long>(x));
+  }
+  CheckListed(out, file, n, what, "no node channels");
+  return out;
+}
+
 results::SnCurve ReadSn(MapReader& f, results::StressOutput* out) {
   out->measure = f.GetString("measure", out->measure);
   EMB_THROW_IF(out->measure != "max_principal" && out->measure != "signed_von_mises",
@@ -107,6 +120,8 @@ std::vector<results::StressOutput> ReadStressOutputs(
         if (const YAML::Node g = r.Optional("groups"))
           spec.groups = Strings(g, file, r.what() + " groups");
         if (const YAML::Node n = r.Optional("nodes")) spec.nodes = Nodes(n, file, r.what() + " nodes");
+        if (const YAML::Node n = r.Optional("node_tags"))
+          spec.node_tags = NodeTags(n, file, r.what() + " node_tags");
         for (auto [key, times] : {std::pair{"field_times", &out.field_times},
                                   std::pair{"surface_field_times", &out.surface_field_times}}) {
           if (!r.Has(key)) {

@@ -930,6 +930,12 @@ for key in ("external_link", "tampered_damping_ratio", "huge_K", "Sbar_short", "
     mutation, frags = BODY_MUTATIONS[key]
     cms(f"body_scene_{key}", file="b.h5", frags=frags,
         setup=[("h5", "{fix}/body.h5", "b.h5", *mutation)], category="body")
+# Issue 36: a stress group's node tags removed or changed after the body file was written.
+for key, mutation in (("node_tags_deleted", ["delete", "/stress/x1/node_tags"]),
+                      ("node_tags_changed", ["scale", "/stress/x1/node_tags", "0", "7"])):
+    case(f"body_inspect_stress_{key}", "body", ["inspect", "b.h5", "-q"], 1,
+         ["content digest", "modified after it was written"],
+         [("h5", "{fix}/stress_body.h5", "b.h5", *mutation)], timeout=30)
 case("body_truncated_half", "body", ["inspect", "b.h5", "-q"], 1, [],
      [("truncate", "{fix}/body.h5", "b.h5", "0.5")])
 case("body_truncated_tail", "body", ["inspect", "b.h5", "-q"], 1, [],

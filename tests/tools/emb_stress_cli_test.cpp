@@ -54,8 +54,11 @@ TEST_F(EmbStressCli, StaticHotSpotAndComponentsMatchBeamTheory) {
   const auto bar = Bar(true);
   const int node = TopNode(bar, bar.length / 2);
   ASSERT_GE(node, 0);
+  // The same node also by its mesh file's tag (issue 36: the numbering output points use).
+  const std::size_t tag = bar.MakeMesh().node_tags[static_cast<std::size_t>(node)];
   WriteScene("static.yaml", bar,
-             "  - {name: s, body: bar, groups: [z1], nodes: [" + std::to_string(node) + "]}\n",
+             "  - {name: s, body: bar, groups: [z1], nodes: [" + std::to_string(node) +
+                 "], node_tags: [" + std::to_string(tag) + "]}\n",
              "{constant: 100}", "{type: static}");
   const CliResult r = Run("run -q --json static.yaml -o static.h5");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -66,8 +69,11 @@ TEST_F(EmbStressCli, StaticHotSpotAndComponentsMatchBeamTheory) {
   ASSERT_GE(channels.size(), 10u);
   for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(channels[i], expected[i]);
   EXPECT_EQ(channels[4], "s.n" + std::to_string(node) + ".xx");
+  ASSERT_GE(channels.size(), 16u);
+  EXPECT_EQ(channels[10], "s.tag" + std::to_string(tag) + ".xx");
   const std::vector<double> v = f.ReadDoubles("/output_points");
   const std::size_t width = channels.size(), last = v.size() / width - 1;
+  for (std::size_t c = 0; c < 6; ++c) EXPECT_EQ(v[last * width + 4 + c], v[last * width + 10 + c]);
   const double I = bar.width * std::pow(bar.height, 3) / 12.0;
   const double beam = -100.0 * (bar.length / 2) * bar.height / (2.0 * I);
   EXPECT_NEAR(v[last * width + 4], beam, kBeamTolerance * std::abs(beam));
@@ -156,6 +162,9 @@ TEST_F(EmbStressCli, BadInputIsRefusedByName) {
            {"nodes_empty", "nodes: []", {"nodes", "empty list"}},
            {"nodes_twice", "nodes: [3, 3]", {"nodes", "3 is listed twice"}},
            {"nodes_tag_like", "nodes: [-1]", {"0-based mesh node indices", "not gmsh's node tags"}},
+           {"tags_zero", "node_tags: [0]", {"node_tags", "integers from 1"}},
+           {"tags_twice", "node_tags: [5, 5]", {"node_tags", "listed twice"}},
+           {"tags_outside", "groups: [z1], node_tags: [1]", {"node tag 1", "none of its groups"}},
            {"times_twice", "field_times: [0.01, 0.01]", {"field_times", "listed twice"}},
            {"times_after", "field_times: [0.01, 0.5]", {"field_times", "0.5 s is after the run's end", "[0, 0.03]"}},
            {"times_before", "field_times: [-0.01, 0.01]", {"field_times", "-0.01 s is before the run's start"}}}) {

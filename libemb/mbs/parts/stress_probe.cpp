@@ -28,19 +28,25 @@ Eigen::MatrixXd KeptColumns(const FlexiblePart& part, const Eigen::MatrixXd& fil
 }  // namespace
 
 StressProbe::StressProbe(std::string name, int body, std::vector<StressRows> groups,
-                         std::vector<int> nodes, StressRows surface)
+                         std::vector<int> nodes, StressRows surface,
+                         std::vector<std::string> labels)
     : Probe(std::move(name)),
       body_(body),
       groups_(std::move(groups)),
       nodes_(std::move(nodes)),
+      labels_(std::move(labels)),
       surface_(std::move(surface)) {
+  if (labels_.empty())
+    for (int node : nodes_) labels_.push_back("n" + std::to_string(node));
+  EMB_CHECK(labels_.size() == nodes_.size());
   EMB_CHECK(surface_.rows.rows() == 6 * static_cast<Eigen::Index>(surface_.nodes.size()));
   for (const StressRows& g : groups_) {
     EMB_CHECK(g.rows.rows() == 6 * static_cast<Eigen::Index>(g.nodes.size()));
     for (const char* c : {".von_mises", ".von_mises_node", ".max_principal", ".max_principal_node"})
       channels_.push_back(g.name + c);
   }
-  for (int node : nodes_) {
+  for (std::size_t k = 0; k < nodes_.size(); ++k) {
+    const int node = nodes_[k];
     int slot_group = -1, slot = -1;
     for (std::size_t g = 0; g < groups_.size() && slot_group < 0; ++g) {
       const auto& n = groups_[g].nodes;
@@ -52,7 +58,7 @@ StressProbe::StressProbe(std::string name, int body, std::vector<StressRows> gro
                                                       "groups; expected a node of a stress "
                                                       "group");
     node_slots_.emplace_back(slot_group, slot);
-    const std::string prefix = std::string("n").append(std::to_string(node)).append(".");
+    const std::string prefix = labels_[k] + ".";
     for (const char* c : kComponents) channels_.push_back(prefix + c);
   }
 }
@@ -71,7 +77,7 @@ std::shared_ptr<const Probe> StressProbe::WithElasticBasis(int body,
     surface.rows = surface.rows * T;
   }
   return std::make_shared<StressProbe>(name(), body_, std::move(groups), nodes_,
-                                       std::move(surface));
+                                       std::move(surface), labels_);
 }
 
 Eigen::MatrixXd StressProbe::SurfaceStresses(const Eigen::VectorXd& eta) const {
@@ -141,7 +147,8 @@ std::shared_ptr<StressProbe> MakeStressProbe(const FlexiblePart& part,
                who << ": the body file has no modal stresses on the whole surface, which "
                       "surface_field_times need; reduce it with --stress-surface (emb reduce)");
   const bool surface_only =
-      spec.surface && file_groups.empty() && spec.groups.empty() && spec.nodes.empty();
+      spec.surface && file_groups.empty() && spec.groups.empty() && spec.nodes.empty() &&
+      spec.node_tags.empty();
   EMB_THROW_IF(file_groups.empty() && !surface_only,
                who << ": the body file has no modal stresses" << (has_surface ? " at groups" : "")
                    << "; reduce it with --stress-groups NAME,... (emb reduce)");
@@ -168,8 +175,35 @@ std::shared_ptr<StressProbe> MakeStressProbe(const FlexiblePart& part,
   if (spec.surface)
     surface = {"surface", file_surface->nodes,
                KeptColumns(part, file_surface->stresses, who, "surface")};
-  return std::make_shared<StressProbe>(spec.name, part.body, std::move(rows), spec.nodes,
-                                       std::move(surface));
+  // Nodes by the mesh file's tags: found through the chosen groups' stored tags.
+  std::vector<int> nodes = spec.nodes;
+  std::vector<std::string> labels;
+  for (int n : spec.nodes) labels.push_back("n" + std::to_string(n));
+  for (const long long tag : spec.node_tags) {
+    int node = -1;
+    bool tags_known = false;
+    for (const std::string& name : names) {
+      const auto g = std::find_if(file_groups.begin(), file_groups.end(),
+                                  [&](const ModalStressGroup& x) { return x.name == name; });
+      tags_known = tags_known || !g->node_tags.empty();
+      const auto at = std::find(g->node_tags.begin(), g->node_tags.end(), tag);
+      if (at != g->node_tags.end()) {
+        node = g->nodes[static_cast<std::size_t>(at - g->node_tags.begin())];
+        break;
+      }
+    }
+    EMB_THROW_IF(!tags_known, who << ": node_tags: the body file holds no node tags for its "
+                                     "stress groups (written by an older emb); expected it "
+                                     "reduced again, or the nodes given as 0-based mesh "
+                                     "indices (nodes:)");
+    EMB_THROW_IF(node < 0, "stress output '" << spec.name << "': node tag " << tag
+                                             << " (the mesh file's numbering) is in none of "
+                                                "its groups; expected a node of a stress group");
+    nodes.push_back(node);
+    labels.push_back("tag" + std::to_string(tag));
+  }
+  return std::make_shared<StressProbe>(spec.name, part.body, std::move(rows), std::move(nodes),
+                                       std::move(surface), std::move(labels));
 }
 
 }  // namespace emb::mbs

@@ -17,7 +17,8 @@
 ///   g.von_mises_node       the mesh node (0-based) where it is
 ///   g.max_principal        max over the nodes of the largest principal stress sigma_1 [Pa]
 ///   g.max_principal_node   its node
-/// then per chosen node N: nN.xx, nN.yy, nN.zz, nN.xy, nN.yz, nN.zx [Pa].
+/// then per chosen node N: nN.xx, nN.yy, nN.zz, nN.xy, nN.yz, nN.zx [Pa] (N the 0-based
+/// mesh index), and per node chosen by its mesh file's tag T: tagT.xx ... tagT.zx.
 /// Cost per evaluation O(6 m n) for m nodes and n elastic coordinates, plus closed-form
 /// principal stresses per node (fe/stress_measures.h). The last evaluation is kept
 /// (Evaluate): the stress recorder's per-node histories at a sample reuse the channels' work.
@@ -37,7 +38,8 @@ namespace emb::mbs {
 struct StressProbeSpec {
   std::string name;                 ///< probe name (channel prefix)
   std::vector<std::string> groups;  ///< stress groups of the body file; empty: all of them
-  std::vector<int> nodes;           ///< mesh nodes with full component histories
+  std::vector<int> nodes;           ///< mesh nodes (0-based) with full component histories
+  std::vector<long long> node_tags;  ///< the same by the mesh file's (gmsh's) node tags
   bool surface{false};              ///< also keep the whole-surface rows (field output only)
 };
 
@@ -61,8 +63,9 @@ class StressProbe final : public Probe {
   /// @throws InputError naming the probe if a component node is in none of the groups.
   /// `surface`: the whole-surface rows (name "surface"; no channels: the stress recorder
   /// writes its field at chosen times), empty rows for none.
+  /// `labels`: the channel prefix of each component node ("n<node>" where empty).
   StressProbe(std::string name, int body, std::vector<StressRows> groups, std::vector<int> nodes,
-              StressRows surface = {});
+              StressRows surface = {}, std::vector<std::string> labels = {});
   std::vector<int> bodies() const override { return {body_}; }
   std::shared_ptr<const Probe> WithElasticBasis(int body, const Eigen::MatrixXd& T) const override;
   int body() const { return body_; }
@@ -91,6 +94,7 @@ class StressProbe final : public Probe {
   int body_;
   std::vector<StressRows> groups_;
   std::vector<int> nodes_;                         // component nodes
+  std::vector<std::string> labels_;                // their channel prefixes
   std::vector<std::pair<int, int>> node_slots_;    // (group, index in the group) per node
   StressRows surface_;                             // whole surface (rows empty: none)
 };
