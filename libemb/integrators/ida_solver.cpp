@@ -72,6 +72,18 @@ struct IdaSolver::Impl {
   SUNLinearSolver ls{nullptr};
   SUNNonlinearSolver nls{nullptr};  // ours (refreshing_newton.h), or null: IDA's own
   std::exception_ptr pending;  // an exception thrown inside a callback, re-thrown later
+  N_Vector atol{nullptr};      // the absolute tolerances given to IDA (vector form)
+  double followed_atol{0.0};   // the followed block's tolerance (IdaOptions::follow_relative)
+  double rtol{0.0};            // for ErrorWeights
+
+  // IDA's error weights 1/(rtol |y_i| + atol_i) (as IDASVtolerances makes them) over the
+  // current m.atol; -1 (IDA stops) if one is not positive and finite.
+  static int ErrorWeights(N_Vector y, N_Vector ewt, void* user) {
+    const auto* self = static_cast<const Impl*>(user);
+    auto w = View(ewt);
+    w = (self->rtol * View(y).cwiseAbs() + View(self->atol)).cwiseInverse();
+    return w.allFinite() && (w.array() > 0.0).all() ? 0 : -1;
+  }
   std::string last_message;
   // KLU: the problem's compressed-column iteration matrix (structure fixed at set-up).
   SparseMatrixd sparse;
@@ -81,7 +93,7 @@ struct IdaSolver::Impl {
     if (nls) SUNNonlinSolFree(nls);
     if (ls) SUNLinSolFree(ls);
     if (a) SUNMatDestroy(a);
-    for (N_Vector v : {y, yp, id, scratch, error})
+    for (N_Vector v : {y, yp, id, scratch, error, atol})
       if (v) N_VDestroy(v);
     if (ctx) SUNContext_Free(&ctx);
   }
@@ -187,17 +199,36 @@ IdaSolver::IdaSolver(const DaeProblem& problem, double t0, const Eigen::VectorXd
                    (options.component_atol.size() != n || !(options.component_atol.minCoeff() > 0)),
                "IDA: expected " << n << " positive per-component absolute tolerances, got "
                                 << options.component_atol.size());
-  if (options.component_atol.size() != 0 || options.algebraic_atol > 0.0) {
-    N_Vector atol = CheckPtr(N_VClone(m.id), "N_VClone");
+  EMB_THROW_IF(options.follow_relative < 0.0 ||
+                   (options.follow_relative > 0.0 &&
+                    (options.follow_first < 0 || options.follow_count < 0 ||
+                     options.follow_first + options.follow_count > n)),
+               "IDA: expected follow_relative >= 0 and a followed block inside the "
+                   << n << " unknowns, got " << options.follow_relative << " on ["
+                   << options.follow_first << ", +" << options.follow_count << ")");
+  if (options.component_atol.size() != 0 || options.algebraic_atol > 0.0 ||
+      options.follow_relative > 0.0) {
+    m.atol = CheckPtr(N_VClone(m.id), "N_VClone");
     const Eigen::VectorXd mask = View(m.id);
     if (options.component_atol.size() != 0)
-      View(atol) = options.component_atol;
+      View(m.atol) = options.component_atol;
     else
-      View(atol) = (mask.array() > 0.5)
-                       .select(options.atol, Eigen::VectorXd::Constant(n, options.algebraic_atol));
-    const int flag = IDASVtolerances(m.mem, options.rtol, atol);
-    N_VDestroy(atol);
-    CheckSetup(flag, "IDASVtolerances");
+      View(m.atol) = (mask.array() > 0.5)
+                         .select(options.atol,
+                                 Eigen::VectorXd::Constant(n, options.algebraic_atol > 0.0
+                                                                  ? options.algebraic_atol
+                                                                  : options.atol));
+    if (options.follow_relative > 0.0 && options.follow_count > 0) {
+      const auto atol = View(m.atol);
+      m.followed_atol = atol.segment(options.follow_first, options.follow_count).maxCoeff();
+      // IDASVtolerances cannot be called again once IDA has stepped (SUNDIALS 6 resets its
+      // weight function's data, which only its first IDASolve sets): the same weights
+      // 1/(rtol |y_i| + atol_i) from our function, over m.atol as it is raised.
+      m.rtol = options.rtol;
+      CheckSetup(IDAWFtolerances(m.mem, &Impl::ErrorWeights), "IDAWFtolerances");
+    } else {
+      CheckSetup(IDASVtolerances(m.mem, options.rtol, m.atol), "IDASVtolerances");
+    }
   } else {
     CheckSetup(IDASStolerances(m.mem, options.rtol, options.atol), "IDASStolerances");
   }
@@ -308,7 +339,7 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
       }
       if (StopRequested(&report)) break;
       flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_ONE_STEP);
-      if (flag >= 0) RecordStepLimiter();
+      if (flag >= 0) RecordStepLimiter(), FollowAlgebraicScale();
       if (flag == IDA_ROOT_RETURN) break;
     }
   } else {
@@ -330,6 +361,7 @@ IntegratorReport IdaSolver::AdvanceTo(double t_out) {
       flag = IDASolve(m.mem, t_out, &t_reached, m.y, m.yp, IDA_ONE_STEP);
       if (flag < 0) break;
       RecordStepLimiter();
+      FollowAlgebraicScale();
       if (flag == IDA_ROOT_RETURN) break;
       t_cur = t_reached;
       if (flag == IDA_TSTOP_RETURN) break;  // at stop_time: nothing beyond it
@@ -433,6 +465,19 @@ void IdaSolver::RecordStepLimiter() {
   if (worst >= 0) ++limiter_count_[worst];
 }
 
+void IdaSolver::FollowAlgebraicScale() {
+  Impl& m = *impl_;
+  if (!(options_.follow_relative > 0.0) || options_.follow_count == 0) return;
+  const auto y = View(m.y);
+  const double scale = y.segment(options_.follow_first, options_.follow_count).cwiseAbs().maxCoeff();
+  const double wanted = options_.follow_relative * scale;
+  if (!(wanted > 2.0 * m.followed_atol)) return;  // also for a NaN scale
+  m.followed_atol = wanted;
+  auto all = View(m.atol);  // read by ErrorWeights from the next step on
+  auto atol = all.segment(options_.follow_first, options_.follow_count);
+  atol = atol.cwiseMax(wanted);
+}
+
 std::vector<StepLimiter> IdaSolver::StepLimiters(int max_count) const {
   return TopStepLimiters(limiter_count_, max_count);
 }
@@ -458,6 +503,7 @@ IntegratorStats IdaSolver::stats() const {
   if (IDAGetLastOrder(mem, &q) >= 0) s.last_order = q;
   realtype h = 0.0;
   if (IDAGetLastStep(mem, &h) >= 0) s.last_step = h;
+  s.followed_atol = impl_->followed_atol;
   return s;
 }
 

@@ -34,6 +34,16 @@ struct IdaOptions {
   /// Per-component absolute tolerances (size n, > 0) when not empty; then atol and
   /// algebraic_atol are not used. For unknowns of different units and scales.
   Eigen::VectorXd component_atol;
+  /// An absolute tolerance that follows the run on the block [follow_first, follow_first +
+  /// follow_count) of algebraic unknowns (the multipliers), for a scale the first instant
+  /// does not show (a model released unloaded whose reactions grow by orders): when > 0,
+  /// after every accepted step, once follow_relative x (the largest |y_i| of the block so
+  /// far) exceeds twice the block's tolerance, the block's tolerance is raised to it (never
+  /// lowered; IDASVtolerances). Their round-off (~eps/h times their scale) then never falls
+  /// below the Newton test's demand.
+  double follow_relative{0.0};
+  int follow_first{0};
+  int follow_count{0};
   double initial_step{0.0};    ///< first step [s]; 0 lets IDA choose
   double max_step{0.0};        ///< largest step [s]; 0 = unlimited
   long max_num_steps{500000};  ///< internal steps allowed between two output times
@@ -121,6 +131,9 @@ class IdaSolver final : public DaeIntegrator {
  private:
   // Counts the component with the largest weighted local error of the step just taken.
   void RecordStepLimiter();
+  // Raises the followed block's absolute tolerance after an accepted step
+  // (IdaOptions::follow_relative).
+  void FollowAlgebraicScale();
   // Asks options_.stop_requested (if set); true (and report->stopped) ends AdvanceTo.
   bool StopRequested(IntegratorReport* report) const;
 

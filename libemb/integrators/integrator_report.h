@@ -70,6 +70,9 @@ struct IntegratorStats {
   long root_evals{0};  ///< evaluations of the root (event) functions
   int last_order{0};  ///< BDF order of the last step (IDA); 2 for generalized-alpha
   double last_step{0.0};
+  /// IDA with IdaOptions::follow_relative: the followed block's absolute tolerance at the
+  /// end (0: not followed).
+  double followed_atol{0.0};
 };
 
 /// A component that limited the step size: in `steps` accepted steps it had the largest

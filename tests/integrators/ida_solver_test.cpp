@@ -218,6 +218,46 @@ TEST(IdaSolver, AlgebraicComponentFollows) {
   EXPECT_GT(s.residual_evals, s.steps);
 }
 
+// y0' = 1, 0 = y1 - 1e7 y0: an algebraic unknown (a reaction) that grows from 0 to 1e7.
+class GrowingReaction final : public DaeProblem {
+ protected:
+  int DoSize() const override { return 2; }
+  bool DoCalcResidual(double, const Eigen::Ref<const Eigen::VectorXd>& y,
+                      const Eigen::Ref<const Eigen::VectorXd>& yp,
+                      Eigen::Ref<Eigen::VectorXd> r) const override {
+    r[0] = yp[0] - 1.0;
+    r[1] = y[1] - 1e7 * y[0];
+    return true;
+  }
+  Eigen::VectorXd DoDifferentialMask() const override { return Eigen::Vector2d(1.0, 0.0); }
+};
+
+// Issue 36: the multipliers' absolute tolerance follows their scale through the run (it was
+// fixed by the loads at t0: 1e-4 N for a model released unloaded).
+TEST(IdaSolver, FollowedAlgebraicToleranceGrowsWithTheUnknowns) {
+  const GrowingReaction dae;
+  IdaOptions o;
+  o.algebraic_atol = 1e-4;  // 1e-4 x the scale at t0 (1)
+  o.follow_relative = 1e-4;
+  o.follow_first = 1;
+  o.follow_count = 1;
+  o.stop_time = 1.0;  // no step beyond t = 1 (y1 <= 1e7)
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d::Zero(), Eigen::Vector2d(1.0, 1e7), o);
+  ASSERT_TRUE(ida.AdvanceTo(1.0).ok());
+  // Raised in steps of at least 2: between half and all of 1e-4 x max |y1| = 1e3.
+  EXPECT_GE(ida.stats().followed_atol, 0.5e3);
+  EXPECT_LE(ida.stats().followed_atol, 1e3 * (1.0 + 1e-9));
+  EXPECT_NEAR(ida.y()[1], 1e7, 1e7 * 1e-6);
+  o.follow_relative = 0.0;  // not followed: stays
+  IdaSolver fixed(dae, 0.0, Eigen::Vector2d::Zero(), Eigen::Vector2d(1.0, 1e7), o);
+  ASSERT_TRUE(fixed.AdvanceTo(1.0).ok());
+  EXPECT_EQ(fixed.stats().followed_atol, 0.0);
+  o.follow_relative = 1e-4;
+  o.follow_count = 2;  // the block must lie inside the unknowns
+  EXPECT_THROW(IdaSolver(dae, 0.0, Eigen::Vector2d::Zero(), Eigen::Vector2d(1.0, 1e7), o),
+               InputError);
+}
+
 TEST(IdaSolver, TooMuchWorkIsAStatusWithTimeAndComponent) {
   const DecayDae dae(true);
   IdaOptions o;

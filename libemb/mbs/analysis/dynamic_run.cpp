@@ -201,12 +201,19 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     double force_scale = 1.0;
     if (acc.lambda.size()) force_scale = std::max(force_scale, acc.lambda.cwiseAbs().maxCoeff());
     if (f0.size()) force_scale = std::max(force_scale, f0.cwiseAbs().maxCoeff());
-    options.algebraic_atol =
-        (settings.multiplier_atol_relative > 0.0
-             ? settings.multiplier_atol_relative
-             : std::min(settings.multiplier_atol_max_relative,
-                        settings.multiplier_atol_rtol_factor * options.rtol)) *
-        force_scale;
+    const double relative = settings.multiplier_atol_relative > 0.0
+                                ? settings.multiplier_atol_relative
+                                : std::min(settings.multiplier_atol_max_relative,
+                                           settings.multiplier_atol_rtol_factor * options.rtol);
+    options.algebraic_atol = relative * force_scale;
+    // The rtol rule follows the run: reactions that grow far beyond the loads at t0 (a model
+    // released unloaded) raise the multipliers' tolerance with them (IdaOptions::
+    // follow_relative); a fixed multiplier_atol_relative stays fixed.
+    if (!(settings.multiplier_atol_relative > 0.0)) {
+      options.follow_relative = relative;
+      options.follow_first = G.lambda();
+      options.follow_count = G.m();
+    }
   }
   if ((settings.modal_velocity_atol_by_frequency || settings.velocity_atol > 0.0) &&
       options.component_atol.size() == 0)
@@ -305,6 +312,7 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
         (ida.t() - settings.t_start) / std::max(1e-300, settings.t_end - settings.t_start));
   }
   r.ida_stats = ida.stats();
+  r.multiplier_atol = std::max(r.multiplier_atol, r.ida_stats.followed_atol);
   constexpr int kReportedStepLimiters = 5;
   for (const StepLimiter& l : ida.StepLimiters(kReportedStepLimiters))
     r.step_limiters.emplace_back(
