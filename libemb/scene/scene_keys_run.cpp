@@ -201,7 +201,7 @@ constexpr SceneKey kRunKeys[] = {
     {"analysis", "newton_convergence_factor", T::kNumber, "", "in (0, 1)", "0.03", "IDA's Newton convergence factor (SUNDIALS' own: 0.33)."},
     {"analysis", "multiplier_atol", T::kNumber, "N", ">= 0", "0", "> 0: the multipliers' absolute tolerance [N, N m] instead of the rules below."},
     {"analysis", "multiplier_atol_relative", T::kNumber, "", "in (0, 1)", "—", "A fixed multiplier atol = this × the largest force at t₀ instead of the rtol rule."},
-    {"analysis", "multiplier_atol_rtol_factor", T::kNumber, "", "in (0, 1000000)", "100", "The multipliers' atol = min(1e-4, this × rtol) × the largest force at t₀, raised as the run goes to the same factor × the largest reaction so far (never lowered)."},
+    {"analysis", "multiplier_atol_rtol_factor", T::kNumber, "", "in (0, 1000000)", "100", "The multipliers' atol = min(1e-4, this × rtol) × the largest force at t₀; a guard raises it as the run goes to min(1e-9, that factor) × the largest reaction so far (never lowered)."},
     {"analysis", "modal_velocity_atol_by_frequency", T::kBool, "", "", "true", "Flexible bodies: atol × max(1, ω_j) on the modal velocity of mode j (velocity and displacement weighed alike); `false`: one atol."},
     {"analysis", "max_step", T::kNumber, "s", ">= 0", "0", "Largest step; 0: unlimited."},
     {"analysis", "max_steps", T::kInteger, "", "[1, 1000000000]", "500000", "Steps per output interval."},
