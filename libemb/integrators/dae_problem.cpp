@@ -1,7 +1,9 @@
 #include "libemb/integrators/dae_problem.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "libemb/common/error.h"
 
@@ -12,12 +14,23 @@ bool DaeProblem::CalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>&
                               Eigen::Ref<Eigen::VectorXd> r) const {
   const int n = size();
   EMB_CHECK(y.size() == n && yp.size() == n && r.size() == n);
+  bool ok = false;
   try {
-    return DoCalcResidual(t, y, yp, r);
+    ok = DoCalcResidual(t, y, yp, r);
   } catch (const NumericalError& e) {
     recoverable_failure_ = e.what();
     return false;
   }
+  if (!ok || r.allFinite()) return ok;
+  // A non-finite residual without a message of the implementation: name its first
+  // component, so that an integrator that gives up can say where (built on failure only).
+  Eigen::Index i = 0;
+  while (i < r.size() && std::isfinite(r[i])) ++i;
+  std::ostringstream o;
+  o << "the residual of " << ComponentName(static_cast<int>(i)) << " is "
+    << (std::isnan(r[i]) ? "NaN" : r[i] > 0.0 ? "+inf" : "-inf") << " at t = " << t << " s";
+  recoverable_failure_ = o.str();
+  return false;
 }
 
 bool DaeProblem::CalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,

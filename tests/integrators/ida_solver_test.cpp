@@ -258,6 +258,32 @@ TEST(IdaSolver, FollowedAlgebraicToleranceGrowsWithTheUnknowns) {
                InputError);
 }
 
+// y' = -y, 0 = z - y, but z's residual is NaN from t = 0.5 on: every step fails, and the
+// report names the component whose residual was not finite.
+class NanAfterHalf final : public DaeProblem {
+ protected:
+  int DoSize() const override { return 2; }
+  bool DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y,
+                      const Eigen::Ref<const Eigen::VectorXd>& yp,
+                      Eigen::Ref<Eigen::VectorXd> r) const override {
+    r[0] = yp[0] + y[0];
+    r[1] = t < 0.5 ? y[1] - y[0] : std::numeric_limits<double>::quiet_NaN();
+    return true;
+  }
+  Eigen::VectorXd DoDifferentialMask() const override { return Eigen::Vector2d(1.0, 0.0); }
+};
+
+TEST(IdaSolver, ANonFiniteResidualIsNamedInTheReport) {
+  const NanAfterHalf dae;
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d(1.0, 1.0), Eigen::Vector2d(-1.0, -1.0), IdaOptions{});
+  const IntegratorReport r = ida.AdvanceTo(1.0);
+  ASSERT_FALSE(r.ok());
+  EXPECT_GE(r.t, 0.49);
+  EXPECT_NE(r.failed_evaluation.find("the residual of y[1] is NaN at t = 0.5"),
+            std::string::npos)
+      << r.failed_evaluation;
+}
+
 TEST(IdaSolver, TooMuchWorkIsAStatusWithTimeAndComponent) {
   const DecayDae dae(true);
   IdaOptions o;
