@@ -5,6 +5,7 @@
 /// system, a beam model or a test problem implement this interface.
 
 #include <Eigen/Dense>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,15 @@ class DaeProblem {
   /// The message of the last NumericalError turned into a recoverable failure since
   /// ClearRecoverableFailure() (empty if none): what an integrator that gives up quotes.
   const std::string& last_recoverable_failure() const { return recoverable_failure_; }
+
+  /// The scale that IdaOptions::follow_relative follows, read after every accepted step:
+  /// the problem's own measure of what the followed (algebraic) unknowns balance, from its
+  /// last residual evaluation, or NaN (the default): the followed block's largest |y_i|. A
+  /// measure made of error-tested unknowns cannot run away; the multipliers' own values
+  /// can, because a raised tolerance lets the corrector keep their extrapolated predictor,
+  /// whose growth then raises the tolerance again (issue 36: an inline-4 whose beam crank
+  /// had no damping, at rtol 1e-8: a dyno bearing's tilt multipliers x2 per step to 1e306).
+  double FollowedScale() const { return DoFollowedScale(); }
   void ClearRecoverableFailure() const { recoverable_failure_.clear(); }
 
  protected:
@@ -103,6 +113,7 @@ class DaeProblem {
                               const Eigen::Ref<const Eigen::VectorXd>& yp,
                               Eigen::Ref<Eigen::VectorXd> r) const = 0;
   virtual bool DoHasJacobian() const { return false; }
+  virtual double DoFollowedScale() const { return std::numeric_limits<double>::quiet_NaN(); }
   /// False: a recoverable failure (see CalcJacobian()).
   virtual bool DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                               const Eigen::Ref<const Eigen::VectorXd>& yp,

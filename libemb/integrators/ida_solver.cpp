@@ -469,7 +469,9 @@ void IdaSolver::FollowAlgebraicScale() {
   Impl& m = *impl_;
   if (!(options_.follow_relative > 0.0) || options_.follow_count == 0) return;
   const auto y = View(m.y);
-  const double scale = y.segment(options_.follow_first, options_.follow_count).cwiseAbs().maxCoeff();
+  double scale = problem_.FollowedScale();
+  if (std::isnan(scale))
+    scale = y.segment(options_.follow_first, options_.follow_count).cwiseAbs().maxCoeff();
   const double wanted = options_.follow_relative * scale;
   if (!(wanted > 2.0 * m.followed_atol)) return;  // also for a NaN scale
   m.followed_atol = wanted;

@@ -37,9 +37,10 @@ struct IdaOptions {
   /// An absolute tolerance that follows the run on the block [follow_first, follow_first +
   /// follow_count) of algebraic unknowns (the multipliers), for a scale the first instant
   /// does not show (a model released unloaded whose reactions grow by orders): when > 0,
-  /// after every accepted step, once follow_relative x (the largest |y_i| of the block so
-  /// far) exceeds twice the block's tolerance, the block's tolerance is raised to it (never
-  /// lowered; IDASVtolerances). Their round-off (~eps/h times their scale) then never falls
+  /// after every accepted step, once follow_relative x (the largest scale so far: the
+  /// problem's DaeProblem::FollowedScale(), or the largest |y_i| of the block if it has none)
+  /// exceeds twice the block's tolerance, the block's tolerance is raised to it (never
+  /// lowered). Their round-off (~eps/h times their scale) then never falls
   /// below the Newton test's demand.
   double follow_relative{0.0};
   int follow_first{0};

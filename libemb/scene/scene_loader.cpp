@@ -369,6 +369,7 @@ void ReadAnalysis(const YAML::Node& node, const std::string& file, mbs::Analysis
   s->newton_convergence_factor = r.GetDouble(
       "newton_convergence_factor", s->newton_convergence_factor, R::Open(0.0, 1.0));
   s->newton_refreshes = r.GetInt("newton_refreshes", s->newton_refreshes, -1, 10);
+  s->ida.max_order = r.GetInt("max_order", s->ida.max_order, 1, 5);
   s->multiplier_atol = r.GetDouble("multiplier_atol", s->multiplier_atol, R::NonNegative("N"));
   if (r.Has("multiplier_atol_relative"))
     s->multiplier_atol_relative = r.GetDouble("multiplier_atol_relative", R::Open(0.0, 1.0));

@@ -189,11 +189,13 @@ TEST(Lash, ZeroDampingConservesEnergyOverManyImpacts) {
   // The speed error grows with each restart (a new history at order 1; measured 1.3e-7 per
   // impact at rtol 1e-9 ~130 rtol: 1.3e-6 after the 10th), so the bound grows with the count.
   const auto& contacts = run.result.events.contacts;
-  for (std::size_t i = 0; i < contacts.size(); ++i)
-    if (!std::isnan(contacts[i].t_separation))
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    if (!std::isnan(contacts[i].t_separation)) {
       EXPECT_NEAR(contacts[i].rebound_velocity, d.closing_speed(),
                   3e2 * kRtol * static_cast<double>(i + 1) * d.closing_speed())
           << "impact " << i;
+    }
+  }
 }
 
 TEST(Lash, OnsetTimeDoesNotDependOnTheOutputStep) {

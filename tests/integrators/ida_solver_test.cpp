@@ -218,9 +218,15 @@ TEST(IdaSolver, AlgebraicComponentFollows) {
   EXPECT_GT(s.residual_evals, s.steps);
 }
 
-// y0' = 1, 0 = y1 - 1e7 y0: an algebraic unknown (a reaction) that grows from 0 to 1e7.
+// y0' = 1, 0 = y1 - 1e7 y0: an algebraic unknown (a reaction) that grows from 0 to 1e7;
+// `scale`: the problem's own FollowedScale() (NaN: none).
 class GrowingReaction final : public DaeProblem {
+ public:
+  explicit GrowingReaction(double scale = std::numeric_limits<double>::quiet_NaN())
+      : scale_(scale) {}
+
  protected:
+  double DoFollowedScale() const override { return scale_; }
   int DoSize() const override { return 2; }
   bool DoCalcResidual(double, const Eigen::Ref<const Eigen::VectorXd>& y,
                       const Eigen::Ref<const Eigen::VectorXd>& yp,
@@ -230,18 +236,28 @@ class GrowingReaction final : public DaeProblem {
     return true;
   }
   Eigen::VectorXd DoDifferentialMask() const override { return Eigen::Vector2d(1.0, 0.0); }
+
+ private:
+  double scale_;
 };
+
+// The multiplier y1's tolerance followed from 1e-4 x its scale at t0 (1) on, to t = 1
+// (y1 <= 1e7).
+IdaOptions FollowingOptions() {
+  IdaOptions o;
+  o.algebraic_atol = 1e-4;
+  o.follow_relative = 1e-4;
+  o.follow_first = 1;
+  o.follow_count = 1;
+  o.stop_time = 1.0;
+  return o;
+}
 
 // Issue 36: the multipliers' absolute tolerance follows their scale through the run (it was
 // fixed by the loads at t0: 1e-4 N for a model released unloaded).
 TEST(IdaSolver, FollowedAlgebraicToleranceGrowsWithTheUnknowns) {
   const GrowingReaction dae;
-  IdaOptions o;
-  o.algebraic_atol = 1e-4;  // 1e-4 x the scale at t0 (1)
-  o.follow_relative = 1e-4;
-  o.follow_first = 1;
-  o.follow_count = 1;
-  o.stop_time = 1.0;  // no step beyond t = 1 (y1 <= 1e7)
+  IdaOptions o = FollowingOptions();
   IdaSolver ida(dae, 0.0, Eigen::Vector2d::Zero(), Eigen::Vector2d(1.0, 1e7), o);
   ASSERT_TRUE(ida.AdvanceTo(1.0).ok());
   // Raised in steps of at least 2: between half and all of 1e-4 x max |y1| = 1e3.
@@ -256,6 +272,19 @@ TEST(IdaSolver, FollowedAlgebraicToleranceGrowsWithTheUnknowns) {
   o.follow_count = 2;  // the block must lie inside the unknowns
   EXPECT_THROW(IdaSolver(dae, 0.0, Eigen::Vector2d::Zero(), Eigen::Vector2d(1.0, 1e7), o),
                InputError);
+}
+
+// The same model with a scale of its own for the followed block (DaeProblem::FollowedScale,
+// the GGL DAE's largest generalised force): the tolerance follows that scale, not the
+// unknowns' values, which a raised tolerance can let run away (issue 36).
+TEST(IdaSolver, FollowedToleranceFollowsTheProblemsScaleWhenItHasOne) {
+  const GrowingReaction dae(1e5);
+  const IdaOptions o = FollowingOptions();
+  IdaSolver ida(dae, 0.0, Eigen::Vector2d::Zero(), Eigen::Vector2d(1.0, 1e7), o);
+  ASSERT_TRUE(ida.AdvanceTo(1.0).ok());
+  // 1e-4 x the problem's 1e5, not 1e-4 x max |y1| = 1e3 (the test above): exact, it is one
+  // product.
+  EXPECT_EQ(ida.stats().followed_atol, 1e-4 * 1e5);
 }
 
 // y' = -y, 0 = z - y, but z's residual is NaN from t = 0.5 on: every step fails, and the

@@ -170,7 +170,9 @@ TEST(BodyFilePartScene, KeysReachTheBuilder) {
       EXPECT_LT((b.v_WB - m.body.v_WB).norm(), kRoundOff) << model;
       EXPECT_EQ(b.num_modes(), m.part.num_modes()) << model;
       EXPECT_EQ(b.elastic != nullptr && !b.elastic->geometric_stiffening, o.flexible) << model;
-      if (o.flexible) EXPECT_DOUBLE_EQ(b.eta0[0], 1.0e-4);
+      if (o.flexible) {
+        EXPECT_DOUBLE_EQ(b.eta0[0], 1.0e-4);
+      }
       const mbs::Marker& root = sc.system.marker(sc.system.FindMarker("root"));
       EXPECT_LT((root.p_BM - m.part.MeshToBody(m.part.interface_points[0])).norm(), kRoundOff);
       EXPECT_EQ(root.shape_t.cols(), m.part.num_modes());

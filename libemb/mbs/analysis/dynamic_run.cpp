@@ -206,9 +206,10 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
                                 : std::min(settings.multiplier_atol_max_relative,
                                            settings.multiplier_atol_rtol_factor * options.rtol);
     options.algebraic_atol = relative * force_scale;
-    // A guard that follows the run: reactions that grow far beyond the loads at t0 (a model
-    // released unloaded) raise the multipliers' tolerance to kMultiplierFollowRelative of
-    // the largest so far (or the rule's factor at tight rtol, where it is smaller), so it
+    // A guard that follows the run: loads that grow far beyond those at t0 (a model released
+    // unloaded) raise the multipliers' tolerance to kMultiplierFollowRelative of the largest
+    // generalised force so far (GglDae::DoFollowedScale; or the rule's factor at tight rtol,
+    // where it is smaller), so it
     // never sinks below their round-off (~eps/h of their scale). Not the rule's factor
     // itself: loosening the Newton test that far after t0 cost accuracy (AnalysisSettings::
     // multiplier_atol_rtol_factor). A fixed multiplier_atol_relative stays fixed.

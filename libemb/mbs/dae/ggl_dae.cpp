@@ -1,6 +1,8 @@
 #include "libemb/mbs/dae/ggl_dae.h"
 
+#include <cmath>
 #include <functional>
+#include <sstream>
 #include <vector>
 
 #include "libemb/common/error.h"
@@ -42,9 +44,25 @@ bool GglDae::UpdateKinematics(const Eigen::Ref<const Eigen::VectorXd>& y) const 
   const GglLayout& G = layout_;
   const auto q = y.segment(G.q(), G.nq());
   const auto v = y.segment(G.v(), G.nv());
-  for (int b = 1; b < system_.num_bodies(); ++b)
-    if (!(q.segment<4>(L.quaternion(b)).norm() > 0.0)) return false;  // retry smaller step
-  if (!q.allFinite() || !v.allFinite()) return false;
+  // A trial iterate the residual cannot be evaluated at: the integrator retries with a
+  // smaller step, and if it gives up its report names the unknown (issue 36).
+  for (int b = 1; b < system_.num_bodies(); ++b) {
+    if (q.segment<4>(L.quaternion(b)).norm() > 0.0) continue;
+    std::ostringstream o;
+    o << "the quaternion of body " << system_.body(b).name << " is "
+      << q.segment<4>(L.quaternion(b)).transpose() << " in a trial iterate";
+    ReportRecoverableFailure(o.str());
+    return false;
+  }
+  if (!q.allFinite() || !v.allFinite()) {
+    Eigen::Index i = 0;
+    const auto qv = y.head(G.v() + G.nv());
+    while (std::isfinite(qv[i])) ++i;
+    std::ostringstream o;
+    o << ComponentName(static_cast<int>(i)) << " is " << qv[i] << " in a trial iterate";
+    ReportRecoverableFailure(o.str());
+    return false;
+  }
   CalcBodyKinematics(system_, q, v, &ws_->bodies);
   CalcAllMarkerKinematics(system_, ws_->bodies, &ws_->markers);
   return true;
@@ -109,6 +127,7 @@ bool GglDae::DoCalcResidual(double t, const Eigen::Ref<const Eigen::VectorXd>& y
     ReportRecoverableFailure(W.failure.message);
     return false;
   }
+  W.force_scale = W.f.size() ? W.f.cwiseAbs().maxCoeff() : 0.0;
 
   // Kinematic rows: q' - H v + B^T mu, B^T mu = X_b^T (C^T mu)_b + [0; e_b mu_b].
   W.w.noalias() = c.jacobian.transpose() * mu.head(G.m());

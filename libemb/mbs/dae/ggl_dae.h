@@ -107,6 +107,10 @@ class GglDae final : public DaeProblem {
                       const Eigen::Ref<const Eigen::VectorXd>& yp,
                       Eigen::Ref<Eigen::VectorXd> r) const override;
   bool DoHasJacobian() const override { return true; }
+  /// The multipliers' tolerance follows the loads they balance: the largest generalised
+  /// force (applied, gravity, gyroscopic, elastic) of the last residual evaluation
+  /// [N, N m], made of error-tested positions and velocities (DaeProblem::FollowedScale).
+  double DoFollowedScale() const override { return ws_->force_scale; }
   bool DoCalcJacobian(double t, double cj, const Eigen::Ref<const Eigen::VectorXd>& y,
                       const Eigen::Ref<const Eigen::VectorXd>& yp,
                       Eigen::Ref<Eigen::MatrixXd> jacobian) const override;

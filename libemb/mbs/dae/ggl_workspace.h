@@ -32,6 +32,8 @@ struct GglWorkspace {
   ConstraintEval constraints;            ///< Phi, C, ... at that state
   std::vector<FlexibleTerms> flexible;   ///< per body (used for flexible bodies only)
   Eigen::VectorXd f;                     ///< generalised forces (nv)
+  /// max |f| of the last residual evaluation (GglDae::DoFollowedScale) [N, N m]
+  double force_scale{0.0};
   Eigen::VectorXd w;                     ///< C^T mu (nv)
   Eigen::VectorXd reaction;              ///< C^T lambda (nv)
   Eigen::VectorXd accel;                 ///< one body's [v'_WB, omega'_B, eta''] (head 6 + ne)

@@ -6,9 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <memory>
+#include <string>
 
 #include "libemb/mbs/analysis/analysis.h"
+#include "libemb/mbs/core/dynamics.h"
+#include "libemb/mbs/core/kinematics.h"
 #include "libemb/mbs/forces/spring_damper.h"
 #include "tests/support/test_models.h"
 #include "tests/support/dae_differences.h"
@@ -45,6 +49,33 @@ TEST(GglDae, ConsistentInitialValuesHaveZeroResidual) {
   }
 }
 
+// A trial iterate the residual cannot be evaluated at (a vanishing quaternion, a non-finite
+// position or velocity) is a recoverable failure whose message names the unknown, so that an
+// integrator that gives up on it can say why (issue 36: a run stopped with steps of 4e-12 s
+// and no word of the cause).
+TEST(GglDae, AnUnevaluableIterateIsNamedInTheFailure) {
+  const System sys = testing::SliderCrank({});
+  const GglDae dae(sys);
+  const Consistent c = MakeConsistent(sys, dae);
+  Eigen::VectorXd r(dae.size());
+  const int quaternion = sys.layout().quaternion(1);  // body 1's quaternion
+  Eigen::VectorXd y = c.y;
+  y.segment<4>(quaternion).setZero();
+  dae.ClearRecoverableFailure();
+  EXPECT_FALSE(dae.CalcResidual(0.0, y, c.yp, r));
+  EXPECT_NE(dae.last_recoverable_failure().find("quaternion of body " + sys.body(1).name),
+            std::string::npos)
+      << dae.last_recoverable_failure();
+  y = c.y;
+  const int velocity = sys.layout().nq() + sys.layout().velocity(1);
+  y[velocity] = std::numeric_limits<double>::quiet_NaN();
+  dae.ClearRecoverableFailure();
+  EXPECT_FALSE(dae.CalcResidual(0.0, y, c.yp, r));
+  EXPECT_NE(dae.last_recoverable_failure().find(dae.ComponentName(velocity) + " is nan"),
+            std::string::npos)
+      << dae.last_recoverable_failure();
+}
+
 // The iteration matrix is analytic, force elements included; the reference here is
 // central differences with h = 1e-6: truncation ~1e-12, cancellation ~1e-10 of the largest
 // entry (cj M ~ 1e3, bushing stiffness ~3e5 X).
@@ -54,6 +85,23 @@ System SliderCrankWithSpring() {
   testing::SliderCrankData d;
   d.omega = 60.0;
   return testing::SliderCrankWithSpring(d, /*damping=*/3.0, /*g=*/9.81);
+}
+
+// The scale the multipliers' tolerance follows is the largest generalised force of the last
+// residual evaluation (GglDae::DoFollowedScale): the slider-crank with a spring-damper and
+// gravity, checked against the generalised forces evaluated on their own.
+TEST(GglDae, FollowedScaleIsTheLargestGeneralisedForce) {
+  const System sys = SliderCrankWithSpring();
+  const GglDae dae(sys);
+  const Consistent c = MakeConsistent(sys, dae);
+  Eigen::VectorXd r(dae.size());
+  ASSERT_TRUE(dae.CalcResidual(0.0, c.y, c.yp, r));
+  const Eigen::VectorXd f = CalcGeneralizedForces(
+      sys, CalcBodyKinematics(sys, c.y.head(sys.layout().nq()),
+                              c.y.segment(sys.layout().nq(), sys.layout().nv())),
+      0.0, &dae.workspace());
+  EXPECT_GT(dae.FollowedScale(), 0.0);
+  EXPECT_NEAR(dae.FollowedScale(), f.cwiseAbs().maxCoeff(), 1e-12 * f.cwiseAbs().maxCoeff());
 }
 
 // 0 slider-crank, 1 double pendulum, 2 slider-crank with a spring-damper, 3 and 4 every

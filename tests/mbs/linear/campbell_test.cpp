@@ -170,9 +170,12 @@ TEST(Campbell, MacTrackingFollowsTheForwardWhirlThroughItsCrossings) {
     const bool is_torsion = std::abs(f0 - kTorsionHz) < 1e-6 * f0;
     for (std::size_t k = 0; k < d.rpm.size(); ++k) {
       ASSERT_TRUE(std::isfinite(t.hz[k])) << "mode " << t.index << " lost at " << d.rpm[k];
-      if (is_forward)
+      if (is_forward) {
         EXPECT_NEAR(t.hz[k] / WhirlHz(d.rpm[k], +1), 1.0, kFrequencyTolerance) << d.rpm[k];
-      if (is_torsion) EXPECT_NEAR(t.hz[k] / kTorsionHz, 1.0, kFrequencyTolerance) << d.rpm[k];
+      }
+      if (is_torsion) {
+        EXPECT_NEAR(t.hz[k] / kTorsionHz, 1.0, kFrequencyTolerance) << d.rpm[k];
+      }
     }
     if (is_forward) {
       ++forward_modes;

@@ -212,7 +212,7 @@ Passage RunPassage(double eps) {
 // 1/E (measured 2.26 mm -> 0.157 mm for 10x E).
 TEST(NearSingularSliderCrank, FlexibleRodStaysOnItsBranchAndConverges) {
   const Passage p = RunPassage(1e-3);
-  const Case &loose = p.loose, &tight = p.tight, &stiff = p.stiff;
+  const Case &tight = p.tight, &stiff = p.stiff;
   const Trajectory &a = p.a, &b = p.b, &s = p.s;
   const double deviation = MaxDeviationFromRigid(tight, b);
   // On its branch, with margin: far less than half the distance to the other branch.
