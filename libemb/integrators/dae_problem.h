@@ -91,6 +91,7 @@ class DaeProblem {
   /// The message of the last NumericalError turned into a recoverable failure since
   /// ClearRecoverableFailure() (empty if none): what an integrator that gives up quotes.
   const std::string& last_recoverable_failure() const { return recoverable_failure_; }
+  void ClearRecoverableFailure() const { recoverable_failure_.clear(); }
 
   /// The scale that IdaOptions::follow_relative follows, read after every accepted step:
   /// the problem's own measure of what the followed (algebraic) unknowns balance, from its
@@ -100,7 +101,6 @@ class DaeProblem {
   /// whose growth then raises the tolerance again (issue 36: an inline-4 whose beam crank
   /// had no damping, at rtol 1e-8: a dyno bearing's tilt multipliers x2 per step to 1e306).
   double FollowedScale() const { return DoFollowedScale(); }
-  void ClearRecoverableFailure() const { recoverable_failure_.clear(); }
 
  protected:
   /// For implementations that learn of a failure without an exception (a force element's

@@ -99,16 +99,16 @@ struct AnalysisSettings {
   /// generalised force so far (GglDae::DoFollowedScale: applied, gravity, gyroscopic and
   /// elastic loads, which the reactions balance) is twice the tolerance, the tolerance is
   /// raised to it (IdaOptions::follow_relative), so a model released unloaded (F_ref = 1 N)
-  /// whose support forces grow to 3e7 N ends near 0.03 N, not 1e-4 N: the multipliers'
-  /// round-off, ~eps/h of their scale, is 2e-10 of it at h = 1 us. The loads, not the
-  /// multipliers themselves: a raised tolerance lets the corrector keep a multiplier's
+  /// whose support forces grow by orders does not keep asking its multipliers for 1e-4 N:
+  /// their round-off, ~eps/h of their scale, is 2e-10 of it at h = 1 us. The loads, not
+  /// the multipliers themselves: a raised tolerance lets the corrector keep a multiplier's
   /// extrapolated predictor, whose growth raised the tolerance again (measured: the
   /// inline-4 with an undamped beam crank at rtol 1e-8, a dyno bearing's tilt multipliers
-  /// x2 per step from 5e7 to 1e306 N m and a failed run; it runs with the loads' scale). The rule's own factor would loosen the Newton test too far
-  /// after t0 (measured: an engine's steady state 4e-4 instead of 1e-4 from its reference, a
-  /// film bearing that touched), 1e-7 still moved a sweep's order phases at rtol 1e-10 by
-  /// 1.4e-3 deg; with 1e-9 every test's result stays. RunResult::multiplier_atol reports
-  /// the last value.
+  /// x2 per step from 5e7 to 1e306 N m and a failed run; with the loads' scale it runs).
+  /// The rule's own factor would loosen the Newton test too far after t0 (measured: an
+  /// engine's steady state 4e-4 instead of 1e-4 from its reference, a film bearing that
+  /// touched), 1e-7 still moved a sweep's order phases at rtol 1e-10 by 1.4e-3 deg; with
+  /// 1e-9 every test's result stays. RunResult::multiplier_atol reports the last value.
   /// Measured with benchmarks/mbs_work_precision.cpp (fixed 1e-4 F_ref against 100 rtol
   /// F_ref; step counts and max errors, the report of issue 14): at rtol 1e-7, 1e-8, 1e-9
   /// engine (c) took 15, 12 and 31 % fewer steps with errors 0.98, 1.1 and 0.53 times the

@@ -209,10 +209,10 @@ RunResult RunDynamic(const PreparedRun& run, const AnalysisSettings& settings,
     // A guard that follows the run: loads that grow far beyond those at t0 (a model released
     // unloaded) raise the multipliers' tolerance to kMultiplierFollowRelative of the largest
     // generalised force so far (GglDae::DoFollowedScale; or the rule's factor at tight rtol,
-    // where it is smaller), so it
-    // never sinks below their round-off (~eps/h of their scale). Not the rule's factor
-    // itself: loosening the Newton test that far after t0 cost accuracy (AnalysisSettings::
-    // multiplier_atol_rtol_factor). A fixed multiplier_atol_relative stays fixed.
+    // where it is smaller), so it never sinks below their round-off (~eps/h of their
+    // scale). Not the rule's factor itself: loosening the Newton test that far after t0 cost
+    // accuracy (AnalysisSettings::multiplier_atol_rtol_factor). A fixed
+    // multiplier_atol_relative stays fixed.
     if (!(settings.multiplier_atol_relative > 0.0)) {
       constexpr double kMultiplierFollowRelative = 1e-9;
       options.follow_relative = std::min(relative, kMultiplierFollowRelative);
